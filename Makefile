@@ -1,0 +1,70 @@
+# Scalable DOGs: `make demo` and `make test` install what is missing (Debian 12 packages), build
+# (CMake + Ninja, RelWithDebInfo) and run. `make fuzz` runs the libFuzzer targets (clang).
+BUILD    ?= build
+FUZZ_BUILD ?= build-fuzz
+JOBS     ?= 2
+FUZZ_SECONDS ?= 60
+XVFB     = xvfb-run -a -s "-screen 0 1920x1080x24"
+SDOG     = $(BUILD)/app/sdog
+DEMO_PATTERN = datasets/four_corner_arcs.svg
+DEMO_RES = 41x41
+
+DEPS = cmake ninja-build g++ libeigen3-dev libcgal-dev libceres-dev libsuitesparse-dev \
+       libopenblas-dev libtbb-dev libvtk9-dev libvtk9-qt-dev qtbase5-dev libgtest-dev \
+       libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth
+FUZZ_DEPS = clang libclang-rt-14-dev
+
+.PHONY: all deps fuzz-deps configure build demo test fuzz previews clean
+
+all: build
+
+# Installs missing packages: apt-get as root, sudo otherwise, else prints the command and stops.
+define install_packages
+	@missing=""; for p in $(1); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  if [ "$$(id -u)" = 0 ]; then apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing; \
+	  elif sudo -n true 2>/dev/null; then sudo apt-get update -q && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing; \
+	  else echo "missing Debian packages; install them with:"; echo "  sudo apt-get install$$missing"; exit 1; fi; \
+	fi
+endef
+
+deps:
+	$(call install_packages,$(DEPS))
+
+fuzz-deps:
+	$(call install_packages,$(FUZZ_DEPS))
+
+configure: deps
+	@[ -f $(BUILD)/build.ninja ] || cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@rm -rf out/demo.tmp && mkdir -p out
+	$(SDOG) mesh $(DEMO_PATTERN) --res $(DEMO_RES) --out out/demo.tmp
+	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res $(DEMO_RES) --overlay vertex-types --size 1600x800 --out out/demo.tmp/vertex_types.png
+	@rm -rf out/demo && mv out/demo.tmp out/demo
+	@echo ""; echo "Demo results in out/demo/:"; ls -1 out/demo | sed 's/^/  out\/demo\//'; \
+	echo "Open the .vtu/.vtp files in ParaView (File > Open), the picture with any image viewer."
+
+test: build
+	cd $(BUILD) && $(XVFB) ctest --output-on-failure -j $(JOBS)
+
+fuzz: fuzz-deps deps
+	@[ -f $(FUZZ_BUILD)/build.ninja ] || CXX=clang++ CC=clang cmake -S . -B $(FUZZ_BUILD) -G Ninja -DSDOG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	mkdir -p $(FUZZ_BUILD)/corpus/svg && cp -n datasets/*.svg tests/fuzz/seeds/*.svg $(FUZZ_BUILD)/corpus/svg/ 2>/dev/null || true
+	$(FUZZ_BUILD)/tests/fuzz/fuzz_svg_pattern -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	  -dict=tests/fuzz/svg.dict -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/svg
+
+# Regenerates the dataset previews (datasets/README.md) and the README picture.
+previews: build
+	@mkdir -p docs/datasets
+	@for f in datasets/*.svg; do n=$$(basename $$f .svg); \
+	  $(XVFB) $(SDOG) render $$f --size 1200x600 --out docs/datasets/$$n.png || exit 1; done
+	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 21x21 --size 1600x800 --out docs/vertex_types.png
+
+clean:
+	rm -rf $(BUILD) $(FUZZ_BUILD) out

@@ -1,0 +1,57 @@
+#include "app/cli_common.h"
+
+#include <cmath>
+
+#include "geometry/errors.h"
+
+namespace sdog::cli {
+
+void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
+  cmd.add_option("PATTERN", o.pattern, "crease pattern (SVG): black strokes = sheet boundary, "
+                                       "other colours = creases")
+      ->required();
+  cmd.add_option("--res", o.res,
+                 "grid lines XxY such as 31x21 (odd numbers when a coarse mesh is built), or "
+                 "'auto': 41 along the longer side")
+      ->capture_default_str();
+  cmd.add_option("--flatness", o.flatness,
+                 "largest chord deviation when flattening curves, as a fraction of the sheet size")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-9, 1e-2));
+  cmd.add_option("--merge-tol", o.merge_fraction,
+                 "crease ends and crossings closer than this fraction of the sheet size merge")
+      ->capture_default_str();
+  cmd.add_option("--snap-tol", o.snap_fraction,
+                 "free crease ends snap to the boundary or a crease within this fraction of the "
+                 "sheet size; nearby junction coordinates align")
+      ->capture_default_str();
+  cmd.add_flag("--fine-only", o.fine_only,
+               "build only the fine mesh (allows even resolutions; no coarse mesh, no map)");
+}
+
+Resolution resolve_resolution(const std::string& text, const CreasePattern& pattern) {
+  if (text != "auto") return parse_resolution(text);
+  const double w = pattern.sheet.bbox.width(), h = pattern.sheet.bbox.height();
+  const int longer = 41;
+  const int shorter = std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(w, h) / std::max(w, h))) + 1);
+  return w >= h ? Resolution{longer, shorter} : Resolution{shorter, longer};
+}
+
+DogModel build_model(const PatternOptions& o) {
+  MeshOptions mesh_options;
+  mesh_options.cleaning.merge_fraction = o.merge_fraction;
+  mesh_options.cleaning.snap_fraction = o.snap_fraction;
+  mesh_options.build_coarse = !o.fine_only;
+  if (const std::string msg = mesh_options.cleaning.validate(); !msg.empty()) throw UsageError(msg);
+  if (o.res != "auto") check_resolution(parse_resolution(o.res), mesh_options.build_coarse);
+  SvgReadOptions svg;
+  svg.flatness = o.flatness;
+  const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
+  return build_dog_model(pattern, resolve_resolution(o.res, pattern), mesh_options);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace sdog::cli

@@ -1,0 +1,32 @@
+#pragma once
+// Shared pieces of the sdog subcommands: pattern/resolution options and the model they build.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "geometry/dog_model.h"
+
+namespace sdog::cli {
+
+/// Options every command that meshes a pattern takes.
+struct PatternOptions {
+  std::string pattern;
+  std::string res = "auto";
+  double flatness = 1e-5;
+  double merge_fraction = 0.01;
+  double snap_fraction = 0.02;
+  bool fine_only = false;
+};
+
+/// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand.
+void add_pattern_options(CLI::App& cmd, PatternOptions& o);
+
+/// "auto": 41 lines along the longer side of the sheet, the other side in proportion (odd).
+Resolution resolve_resolution(const std::string& text, const CreasePattern& pattern);
+
+/// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
+DogModel build_model(const PatternOptions& o);
+
+/// Seconds since `start` (steady clock).
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+}  // namespace sdog::cli

@@ -1,0 +1,14 @@
+#pragma once
+// The sdog subcommands. Each registers its options on the app and, when chosen, stores its body in
+// `run` (called after parsing; library exceptions propagate to main, which maps them to exit codes).
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace sdog::cli {
+
+using Runner = std::function<void()>;
+
+void register_mesh_command(CLI::App& app, Runner& run);
+void register_render_command(CLI::App& app, Runner& run);
+
+}  // namespace sdog::cli

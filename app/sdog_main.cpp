@@ -1,0 +1,43 @@
+// sdog: command-line front end of Scalable DOGs. Exit codes: 0 success, 1 bad input or output
+// (the message names the file and what to fix), 2 usage error, 3 internal error.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "app/commands.h"
+#include "geometry/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Scalable DOGs: crease patterns (SVG) to discrete orthogonal geodesic nets (DOGs), their "
+      "coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options."};
+  app.require_subcommand(1);
+  sdog::cli::Runner run;
+  sdog::cli::register_mesh_command(app, run);
+  sdog::cli::register_render_command(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "sdog: " << e.what() << " (run `sdog --help` for usage)\n";
+    return 2;
+  }
+  try {
+    run();
+    return 0;
+  } catch (const sdog::UsageError& e) {
+    std::cerr << "sdog: " << e.what() << "\n";
+    return 2;
+  } catch (const sdog::InputError& e) {
+    std::cerr << "sdog: " << e.what() << "\n";
+    return 1;
+  } catch (const sdog::OutputError& e) {
+    std::cerr << "sdog: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "sdog: internal error: " << e.what() << " (please report this with the input)\n";
+    return 3;
+  }
+}

@@ -1,0 +1,60 @@
+#include "geometry/atomic_output.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "geometry/errors.h"
+
+namespace sdog {
+
+namespace fs = std::filesystem;
+
+OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) throw OutputError(dir_ + ": cannot create the output directory (" + ec.message() + ")");
+  if (!fs::is_directory(dir_)) throw OutputError(dir_ + ": exists and is not a directory");
+  if (::access(dir_.c_str(), W_OK) != 0)
+    throw OutputError(dir_ + ": the output directory is not writable (" + std::strerror(errno) + ")");
+}
+
+OutputSet::~OutputSet() {
+  if (committed_) return;
+  for (const auto& f : files_) {
+    std::error_code ec;
+    fs::remove(f.first, ec);
+  }
+}
+
+std::string OutputSet::temporary(const std::string& name) {
+  const std::string final_path = (fs::path(dir_) / name).string();
+  const std::string tmp = (fs::path(dir_) / ("." + name + "." + std::to_string(::getpid()) + ".tmp")).string();
+  files_.push_back({tmp, final_path});
+  return tmp;
+}
+
+void OutputSet::write_text(const std::string& name, const std::string& text) {
+  const std::string tmp = temporary(name);
+  std::ofstream out(tmp, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw OutputError(tmp + ": cannot write (" + std::strerror(errno) + ")");
+}
+
+std::vector<std::string> OutputSet::commit() {
+  std::vector<std::string> written;
+  for (const auto& [tmp, final_path] : files_) {
+    std::error_code ec;
+    fs::rename(tmp, final_path, ec);
+    if (ec) throw OutputError(final_path + ": cannot move the written file into place (" + ec.message() + ")");
+    written.push_back(final_path);
+  }
+  committed_ = true;
+  return written;
+}
+
+}  // namespace sdog

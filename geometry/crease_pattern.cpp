@@ -1,0 +1,218 @@
+#include "geometry/crease_pattern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "geometry/errors.h"
+#include "geometry/plane_geometry.h"
+#include "geometry/text_format.h"
+
+namespace sdog {
+namespace {
+
+std::string origin_of(const std::string& source, const SvgCurve& c) {
+  std::ostringstream s;
+  s << source;
+  if (c.line > 0) s << ":" << c.line;
+  s << ": <" << c.element;
+  if (!c.id.empty()) s << " id=\"" << c.id << "\"";
+  s << ">";
+  return s.str();
+}
+
+void drop_repeated_points(Polyline2& pts, bool closed) {
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+}
+
+struct OpenCurve {
+  Polyline2 points;
+  std::string origin;
+};
+
+// Chains open boundary curves end to end into closed loops.
+std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol) {
+  std::vector<Polyline2> loops;
+  while (!open.empty()) {
+    OpenCurve current = std::move(open.front());
+    open.erase(open.begin());
+    while ((current.points.front() - current.points.back()).norm() > tol) {
+      bool extended = false;
+      for (size_t k = 0; k < open.size(); ++k) {
+        Polyline2& next = open[k].points;
+        if ((next.front() - current.points.back()).norm() <= tol) {
+        } else if ((next.back() - current.points.back()).norm() <= tol) {
+          std::reverse(next.begin(), next.end());
+        } else {
+          continue;
+        }
+        current.points.insert(current.points.end(), next.begin() + 1, next.end());
+        open.erase(open.begin() + k);
+        extended = true;
+        break;
+      }
+      if (!extended) {
+        throw InputError(current.origin + ": the sheet boundary (black) is not closed: it ends at " +
+                         format_point(current.points.back()) + ", " +
+                         format_number((current.points.front() - current.points.back()).norm()) +
+                         " units from its start " + format_point(current.points.front()) +
+                         "; close the path (Z) or draw the boundary as one closed shape");
+      }
+    }
+    current.points.pop_back();  // the last point repeats the first one (within tolerance)
+    loops.push_back(std::move(current.points));
+  }
+  return loops;
+}
+
+Box2 box_of(const Polyline2& pts) {
+  Box2 b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const auto& p : pts) {
+    b.xmin = std::min(b.xmin, p.x());
+    b.ymin = std::min(b.ymin, p.y());
+    b.xmax = std::max(b.xmax, p.x());
+    b.ymax = std::max(b.ymax, p.y());
+  }
+  return b;
+}
+
+void check_simple(const std::vector<Polyline2>& loops, const std::vector<std::string>& origins) {
+  std::vector<const Polyline2*> ptrs;
+  for (const auto& l : loops) ptrs.push_back(&l);
+  const auto contacts = find_segment_contacts(ptrs, std::vector<bool>(loops.size(), true));
+  if (contacts.empty()) return;
+  const auto& c = contacts.front();
+  const Polyline2& la = loops[c.a];
+  const Eigen::Vector2d where = la[c.sa];
+  if (c.a == c.b)
+    throw InputError(origins[c.a] + ": the sheet boundary crosses itself near " +
+                     format_point(where) + "; a boundary must be a simple closed curve");
+  throw InputError(origins[c.b] + ": this boundary curve touches or crosses another one (" +
+                   origins[c.a] + ") near " + format_point(where) +
+                   "; holes must lie strictly inside the sheet and apart from each other");
+}
+
+}  // namespace
+
+CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {
+  CreasePattern pattern;
+  pattern.source = drawing.source;
+
+  // Tolerances are relative to the sheet size; before the boundary is known use the viewBox (or
+  // the drawing's extent).
+  Box2 extent = drawing.viewbox;
+  if (!drawing.has_viewbox) {
+    Polyline2 all;
+    for (const auto& c : drawing.curves) all.insert(all.end(), c.points.begin(), c.points.end());
+    if (!all.empty()) extent = box_of(all);
+  }
+  const double tol = closed_fraction * std::max(extent.width(), extent.height());
+
+  std::vector<Polyline2> loops;
+  std::vector<std::string> loop_origins;
+  std::vector<OpenCurve> open_boundary;
+  std::vector<const SvgCurve*> crease_curves;
+  for (const auto& c : drawing.curves) {
+    if (c.points.size() < 2) continue;
+    if (!c.is_boundary) {
+      crease_curves.push_back(&c);
+      continue;
+    }
+    Polyline2 pts = c.points;
+    const bool closed = c.closed || (pts.size() > 2 && (pts.front() - pts.back()).norm() <= tol);
+    if (closed) {
+      if (!c.closed) pts.pop_back();
+      drop_repeated_points(pts, true);
+      loops.push_back(std::move(pts));
+      loop_origins.push_back(origin_of(drawing.source, c));
+    } else {
+      open_boundary.push_back({pts, origin_of(drawing.source, c)});
+    }
+  }
+  if (!open_boundary.empty()) {
+    const std::string origin = open_boundary.front().origin;
+    for (auto& loop : chain_into_loops(std::move(open_boundary), tol)) {
+      drop_repeated_points(loop, true);
+      loops.push_back(std::move(loop));
+      loop_origins.push_back(origin);
+    }
+  }
+
+  Sheet& sheet = pattern.sheet;
+  if (loops.empty()) {
+    if (!drawing.has_viewbox)
+      throw InputError(drawing.source +
+                       ": the drawing has neither a viewBox nor a black boundary curve, so the "
+                       "sheet is unknown; add viewBox=\"0 0 W H\" to <svg>");
+    const Box2& b = drawing.viewbox;
+    if (!(b.width() > 0) || !(b.height() > 0))
+      throw InputError(drawing.source + ": the sheet has zero area (viewBox " +
+                       format_number(b.width()) + " x " + format_number(b.height()) +
+                       "); give the viewBox a positive width and height");
+    sheet.outer = {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}};
+    sheet.from_viewbox = true;
+  } else {
+    for (size_t k = 0; k < loops.size(); ++k) {
+      if (loops[k].size() < 3)
+        throw InputError(loop_origins[k] +
+                         ": the sheet boundary has fewer than 3 distinct points (zero area)");
+    }
+    check_simple(loops, loop_origins);
+    size_t outer = 0;
+    for (size_t k = 1; k < loops.size(); ++k)
+      if (std::abs(signed_area(loops[k])) > std::abs(signed_area(loops[outer]))) outer = k;
+    const Box2 b = box_of(loops[outer]);
+    const double area = std::abs(signed_area(loops[outer]));
+    const double L = std::max(b.width(), b.height());
+    if (!(area > 1e-12 * L * L) || !(L > 0))
+      throw InputError(loop_origins[outer] + ": the sheet has zero area (its boundary encloses " +
+                       format_number(area) + " square units)");
+    sheet.outer = loops[outer];
+    if (signed_area(sheet.outer) < 0) std::reverse(sheet.outer.begin(), sheet.outer.end());
+    for (size_t k = 0; k < loops.size(); ++k) {
+      if (k == outer) continue;
+      if (point_in_polygon(loops[k].front(), sheet.outer) != 1)
+        throw InputError(loop_origins[k] + ": this boundary loop lies outside the sheet (" +
+                         loop_origins[outer] + "); holes must lie inside the outer boundary");
+      Polyline2 hole = loops[k];
+      if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
+      sheet.holes.push_back(std::move(hole));
+    }
+  }
+  sheet.bbox = box_of(sheet.outer);
+
+  // Creases: join subpaths of one <path> that continue each other, detect closed curves.
+  const double sheet_tol = closed_fraction * pattern.size();
+  for (size_t k = 0; k < crease_curves.size(); ++k) {
+    const SvgCurve& c = *crease_curves[k];
+    Crease crease;
+    crease.points = c.points;
+    crease.closed = c.closed;
+    crease.dashed = c.dashed;
+    crease.origin = origin_of(drawing.source, c);
+    while (!crease.closed && k + 1 < crease_curves.size()) {
+      const SvgCurve& next = *crease_curves[k + 1];
+      const bool same_element = next.line == c.line && next.element == c.element &&
+                                next.id == c.id && next.subpath > 0 && !next.closed;
+      if (!same_element || (next.points.front() - crease.points.back()).norm() > sheet_tol) break;
+      crease.points.insert(crease.points.end(), next.points.begin() + 1, next.points.end());
+      ++k;
+    }
+    if (!crease.closed && crease.points.size() > 2 &&
+        (crease.points.front() - crease.points.back()).norm() <= sheet_tol) {
+      crease.closed = true;
+      crease.points.pop_back();
+    }
+    drop_repeated_points(crease.points, crease.closed);
+    if (crease.points.size() < 2 || (crease.closed && crease.points.size() < 3)) continue;
+    pattern.creases.push_back(std::move(crease));
+  }
+  return pattern;
+}
+
+CreasePattern read_crease_pattern(const std::string& path, const SvgReadOptions& options) {
+  return crease_pattern_from_svg(read_svg_file(path, options));
+}
+
+}  // namespace sdog

@@ -1,0 +1,49 @@
+#pragma once
+// A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves, in sheet
+// units (SVG user units, y up). Built from an SvgDrawing: black curves are the sheet boundary (none:
+// the viewBox rectangle), every other colour is a crease.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "geometry/svg_reader.h"
+
+namespace sdog {
+
+using Polyline2 = std::vector<Eigen::Vector2d>;
+
+struct Crease {
+  Polyline2 points;     ///< closed creases do not repeat the first point
+  bool closed = false;
+  bool dashed = false;  ///< mountain/valley hint from the drawing (dashed stroke)
+  std::string origin;   ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
+};
+
+struct Sheet {
+  Polyline2 outer;               ///< counter-clockwise, first point not repeated
+  std::vector<Polyline2> holes;  ///< clockwise, first point not repeated
+  Box2 bbox;                     ///< bounding box of the outer boundary
+  bool from_viewbox = false;     ///< no black curve: the sheet is the viewBox rectangle
+};
+
+struct CreasePattern {
+  std::string source;  ///< file name, for messages
+  Sheet sheet;
+  std::vector<Crease> creases;  ///< drawing order
+  /// L = max(width, height) of the sheet: the length all tolerances are relative to.
+  double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
+};
+
+/// Sorts the drawing's curves into sheet boundary and creases. Boundary curves must form closed
+/// loops (open black curves are chained end to end within `closed_fraction * L`); the loop of
+/// largest area is the outer boundary, the others are holes and must lie inside it. Creases drawn
+/// as consecutive subpaths of one <path> that continue each other are joined; a crease whose ends
+/// meet within `closed_fraction * L` is closed. Throws InputError for an open or
+/// self-intersecting boundary, crossing boundary loops, a hole outside the sheet, a zero-area
+/// sheet, or a drawing without viewBox and without boundary.
+CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction = 0.002);
+
+/// read_svg_file + crease_pattern_from_svg.
+CreasePattern read_crease_pattern(const std::string& path, const SvgReadOptions& options = {});
+
+}  // namespace sdog

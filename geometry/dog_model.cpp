@@ -1,0 +1,78 @@
+#include "geometry/dog_model.h"
+
+#include "geometry/errors.h"
+
+namespace sdog {
+namespace {
+
+// Lines of one axis: for an odd count the coarse layout refined, so coarse line j = fine line 2j.
+AxisLayout axis_layout(double lo, double hi, int n, const std::vector<double>& pins) {
+  if (n % 2 == 1) return refine_axis(layout_axis(lo, hi, (n + 1) / 2, pins));
+  return layout_axis(lo, hi, n, pins);
+}
+
+PatchLayout checked_layout(const DogModel& m, const Resolution& res, const AxisLayout& x,
+                           const AxisLayout& y, int stride) {
+  PatchLayout layout = build_patch_layout(m.clean, x, y, stride);
+  if (layout.patch_count != m.expected_patches)
+    throw UsageError(m.pattern.source + ": at resolution " + res.str() + " the grid-snapped pattern has " +
+                     std::to_string(layout.patch_count) + " patches instead of " +
+                     std::to_string(m.expected_patches) +
+                     " (creases come closer than a grid cell); use a higher resolution");
+  return layout;
+}
+
+}  // namespace
+
+DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
+                         const MeshOptions& options) {
+  check_resolution(res, options.build_coarse);
+  DogModel m;
+  m.pattern = pattern;
+  m.clean = clean_pattern(pattern, options.cleaning);
+  m.expected_patches = count_pattern_patches(m.clean);
+  m.fine_res = res;
+
+  const Box2& b = m.clean.sheet.bbox;
+  std::vector<double> px, py;
+  for (const auto& p : m.clean.pins) px.push_back(p.x()), py.push_back(p.y());
+  AxisLayout fx, fy;
+  try {
+    fx = axis_layout(b.xmin, b.xmax, res.nx, px);
+    fy = axis_layout(b.ymin, b.ymax, res.ny, py);
+  } catch (const UsageError& e) {
+    throw UsageError(pattern.source + ": resolution " + res.str() + " is too low for the pattern's " +
+                     std::to_string(m.clean.pins.size()) +
+                     " points that must be grid vertices (junctions, crease ends on slanted "
+                     "boundary edges): " + e.what());
+  }
+  const bool nested = res.nx % 2 == 1 && res.ny % 2 == 1;
+  const PatchLayout fine = checked_layout(m, res, fx, fy, nested ? 2 : 1);
+  const Eigen::Vector2d origin(b.xmin, b.ymin);
+  const double scale = (res.nx - 1) / b.width();
+  m.fine = build_dog_mesh(fine, origin, scale);
+  m.fine_topology = quad_topology(m.fine);
+  for (const auto& ring : fine.boundary) {
+    Polyline2 r;
+    for (const auto& p : ring) r.push_back(m.fine.to_mesh(p));
+    m.fine_boundary.push_back(std::move(r));
+  }
+  if (!options.build_coarse) return m;
+
+  m.has_coarse = true;
+  m.coarse_res = coarse_resolution(res);
+  AxisLayout cx = fx, cy = fy;
+  cx.n = m.coarse_res.nx;
+  cy.n = m.coarse_res.ny;
+  for (auto& a : cx.anchors) a.first /= 2;
+  for (auto& a : cy.anchors) a.first /= 2;
+  PatchLayout coarse = checked_layout(m, m.coarse_res, cx, cy, 1);
+  renumber_patches(coarse, match_coarse_patches(fine, coarse));
+  m.coarse_cover_cells = cover_fine_patches(coarse, fine);
+  m.coarse = build_dog_mesh(coarse, origin, scale);
+  m.coarse_topology = quad_topology(m.coarse);
+  m.map = build_fine_coarse_map(m.fine, m.coarse);
+  return m;
+}
+
+}  // namespace sdog

@@ -1,0 +1,105 @@
+#include "geometry/grid.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+
+#include "geometry/errors.h"
+#include "geometry/text_format.h"
+
+namespace sdog {
+
+Resolution parse_resolution(const std::string& text) {
+  auto bad = [&]() {
+    return UsageError("bad resolution \"" + text +
+                      "\": expected X_LINESxY_LINES such as 31x21 (or one number for a square "
+                      "grid), each between " + std::to_string(kMinResolution) + " and " +
+                      std::to_string(kMaxResolution));
+  };
+  auto parse_int = [&](const std::string& s) {
+    if (s.empty() || s.size() > 6) throw bad();
+    for (char c : s)
+      if (!std::isdigit(static_cast<unsigned char>(c))) throw bad();
+    return std::stoi(s);
+  };
+  const auto x = text.find_first_of("xX");
+  Resolution r;
+  if (x == std::string::npos) {
+    r.nx = r.ny = parse_int(text);
+  } else {
+    r.nx = parse_int(text.substr(0, x));
+    r.ny = parse_int(text.substr(x + 1));
+  }
+  return r;
+}
+
+void check_resolution(const Resolution& res, bool need_coarse) {
+  for (int v : {res.nx, res.ny}) {
+    if (v < kMinResolution)
+      throw UsageError("resolution " + res.str() + " is too low: each direction needs at least " +
+                       std::to_string(kMinResolution) + " grid lines");
+    if (v > kMaxResolution)
+      throw UsageError("resolution " + res.str() + " is too high: at most " +
+                       std::to_string(kMaxResolution) + " grid lines per direction");
+  }
+  if (need_coarse && (res.nx % 2 == 0 || res.ny % 2 == 0))
+    throw UsageError("resolution " + res.str() +
+                     " has an even number of lines; the coarse mesh needs odd numbers (coarse "
+                     "line j is fine line 2j), e.g. " +
+                     Resolution{res.nx | 1, res.ny | 1}.str());
+}
+
+Resolution coarse_resolution(const Resolution& fine) {
+  return {(fine.nx + 1) / 2, (fine.ny + 1) / 2};
+}
+
+AxisLayout layout_axis(double lo, double hi, int n, std::vector<double> pins) {
+  std::set<double> inner;
+  for (double p : pins)
+    if (p > lo && p < hi) inner.insert(p);
+  const int k = static_cast<int>(inner.size());
+  if (k > n - 2)
+    throw UsageError(std::to_string(n) + " grid lines cannot hold " + std::to_string(k) +
+                     " junction coordinates between " + format_number(lo) + " and " +
+                     format_number(hi) + " (each needs its own line); use at least " +
+                     std::to_string(k + 2) + " lines");
+  // Line index of pin j is i_j = s_j + j + 1 with s nondecreasing (so the indices increase): s is
+  // the least-squares nondecreasing fit (pool adjacent violators) of the pins' uniform positions
+  // minus j + 1, rounded and clamped so every pin keeps a line strictly inside.
+  const double h = (hi - lo) / (n - 1);
+  std::vector<double> pin(inner.begin(), inner.end());
+  struct Block {
+    double sum;
+    int count;
+  };
+  std::vector<Block> blocks;
+  for (int j = 0; j < k; ++j) {
+    blocks.push_back({(pin[j] - lo) / h - (j + 1), 1});
+    while (blocks.size() > 1 && blocks[blocks.size() - 2].sum / blocks[blocks.size() - 2].count >
+                                    blocks.back().sum / blocks.back().count) {
+      blocks[blocks.size() - 2].sum += blocks.back().sum;
+      blocks[blocks.size() - 2].count += blocks.back().count;
+      blocks.pop_back();
+    }
+  }
+  AxisLayout layout;
+  layout.n = n;
+  layout.anchors.push_back({0, lo});
+  int j = 0;
+  for (const Block& b : blocks) {
+    const int s = std::clamp(static_cast<int>(std::lround(b.sum / b.count)), 0, n - 2 - k);
+    for (int c = 0; c < b.count; ++c, ++j) layout.anchors.push_back({s + j + 1, pin[j]});
+  }
+  layout.anchors.push_back({n - 1, hi});
+  return layout;
+}
+
+AxisLayout refine_axis(const AxisLayout& coarse) {
+  AxisLayout fine;
+  fine.n = 2 * coarse.n - 1;
+  for (const auto& [i, v] : coarse.anchors) fine.anchors.push_back({2 * i, v});
+  return fine;
+}
+
+}  // namespace sdog

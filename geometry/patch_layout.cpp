@@ -1,0 +1,448 @@
+#include "geometry/patch_layout.h"
+
+#include <CGAL/Arr_batched_point_location.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "geometry/errors.h"
+#include "geometry/text_format.h"
+
+namespace sdog {
+namespace {
+
+using K = CGAL::Epeck;
+using FT = K::FT;
+using Point = K::Point_2;
+using Traits = CGAL::Arr_segment_traits_2<K>;
+using Arrangement = CGAL::Arrangement_2<Traits>;
+using LocateResult = CGAL::Arr_point_location_result<Arrangement>::Type;
+using Poly = std::vector<Point>;
+
+Point exact(const Eigen::Vector2d& p) { return Point(p.x(), p.y()); }
+Eigen::Vector2d approx(const Point& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+}
+
+std::vector<FT> exact_lines(const AxisLayout& a) {
+  std::vector<FT> out(a.n);
+  for (size_t k = 0; k + 1 < a.anchors.size(); ++k) {
+    const int i0 = a.anchors[k].first, i1 = a.anchors[k + 1].first;
+    const FT v0(a.anchors[k].second), v1(a.anchors[k + 1].second);
+    for (int i = i0; i <= i1; ++i) out[i] = v0 + (v1 - v0) * FT(i - i0) / FT(i1 - i0);
+  }
+  for (auto& v : out) v.exact();  // resolve lazily built values once
+  return out;
+}
+
+// Index of the line at exactly v, or -1.
+int line_at(const std::vector<FT>& lines, const FT& v) {
+  auto it = std::lower_bound(lines.begin(), lines.end(), v);
+  return (it != lines.end() && *it == v) ? static_cast<int>(it - lines.begin()) : -1;
+}
+
+// Index i of the interval [lines[i], lines[i+1]) containing v, clamped to the grid.
+int interval_at(const std::vector<FT>& lines, const FT& v) {
+  const int i = static_cast<int>(std::upper_bound(lines.begin(), lines.end(), v) - lines.begin()) - 1;
+  return std::clamp(i, 0, static_cast<int>(lines.size()) - 2);
+}
+
+FT cross(const FT& ax, const FT& ay, const FT& bx, const FT& by) { return ax * by - ay * bx; }
+
+class Grid {
+ public:
+  Grid(const AxisLayout& x, const AxisLayout& y) : X(exact_lines(x)), Y(exact_lines(y)) {}
+  std::vector<FT> X, Y;
+  int nx() const { return static_cast<int>(X.size()); }
+  int ny() const { return static_cast<int>(Y.size()); }
+
+  bool on_line(const Point& p, int stride = 1) const {
+    const int i = line_at(X, p.x()), j = line_at(Y, p.y());
+    return (i >= 0 && i % stride == 0) || (j >= 0 && j % stride == 0);
+  }
+
+  // Appends the crossings of segment a->b with the grid lines (strictly inside the segment, in
+  // order), then b itself if it lies on a line.
+  void append_segment(const Point& a, const Point& b, Poly& out) const {
+    std::vector<std::pair<FT, Point>> hits;
+    auto add_axis = [&](const std::vector<FT>& lines, const FT& a_c, const FT& b_c, bool is_x) {
+      if (a_c == b_c) return;
+      const FT lo = CGAL::min(a_c, b_c), hi = CGAL::max(a_c, b_c);
+      for (auto it = std::upper_bound(lines.begin(), lines.end(), lo);
+           it != lines.end() && *it < hi; ++it) {
+        const FT s = (*it - a_c) / (b_c - a_c);
+        hits.push_back({s, is_x ? Point(*it, a.y() + s * (b.y() - a.y()))
+                                : Point(a.x() + s * (b.x() - a.x()), *it)});
+      }
+    };
+    add_axis(X, a.x(), b.x(), true);
+    add_axis(Y, a.y(), b.y(), false);
+    std::sort(hits.begin(), hits.end(),
+              [](const auto& u, const auto& v) { return u.first < v.first; });
+    for (const auto& h : hits)
+      if (out.empty() || out.back() != h.second) out.push_back(h.second);
+    if (on_line(b) && (out.empty() || out.back() != b)) out.push_back(b);
+  }
+
+  Poly snap_open(const Polyline2& pts) const {
+    Poly out{exact(pts.front())};
+    if (!on_line(out.front()))
+      throw std::logic_error("crease end " + format_point(pts.front()) + " is not on a grid line");
+    for (size_t i = 0; i + 1 < pts.size(); ++i) append_segment(exact(pts[i]), exact(pts[i + 1]), out);
+    return out;
+  }
+
+  // Crossings of a closed curve, starting at its first crossing with a line of index divisible
+  // by `stride`. Empty when the curve crosses no such line.
+  Poly snap_closed(const Polyline2& pts, int stride) const {
+    Poly out;
+    for (size_t i = 0; i < pts.size(); ++i)
+      append_segment(exact(pts[i]), exact(pts[(i + 1) % pts.size()]), out);
+    if (out.size() > 1 && out.front() == out.back()) out.pop_back();
+    auto start = std::find_if(out.begin(), out.end(), [&](const Point& p) { return on_line(p, stride); });
+    if (start == out.end()) return {};
+    std::rotate(out.begin(), start, out.end());
+    return out;
+  }
+
+  Point cell_centre(int i, int j) const {
+    return Point((X[i] + X[i + 1]) / 2, (Y[j] + Y[j + 1]) / 2);
+  }
+
+  GridEdgePoint edge_point(const Point& p) const {
+    const int i = line_at(X, p.x()), j = line_at(Y, p.y());
+    GridEdgePoint e;
+    if (i >= 0 && j >= 0) {
+      e.i0 = e.i1 = i;
+      e.j0 = e.j1 = j;
+      e.t = 1;
+    } else if (i >= 0) {
+      const int r = interval_at(Y, p.y());
+      e.i0 = e.i1 = i;
+      e.j0 = r;
+      e.j1 = r + 1;
+      e.t = CGAL::to_double((Y[r + 1] - p.y()) / (Y[r + 1] - Y[r]));
+    } else if (j >= 0) {
+      const int c = interval_at(X, p.x());
+      e.j0 = e.j1 = j;
+      e.i0 = c;
+      e.i1 = c + 1;
+      e.t = CGAL::to_double((X[c + 1] - p.x()) / (X[c + 1] - X[c]));
+    } else {
+      throw std::logic_error("crease point " + format_point(approx(p)) + " is not on the grid");
+    }
+    return e;
+  }
+};
+
+// Splits a convex polygon by the line through p and q into its left and right parts (points on
+// the line go to both).
+void split_convex(const Poly& poly, const Point& p, const Point& q, Poly& left, Poly& right) {
+  const size_t n = poly.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Point& u = poly[k];
+    const Point& v = poly[(k + 1) % n];
+    const auto ou = CGAL::orientation(p, q, u);
+    const auto ov = CGAL::orientation(p, q, v);
+    if (ou != CGAL::RIGHT_TURN) left.push_back(u);
+    if (ou != CGAL::LEFT_TURN) right.push_back(u);
+    if ((ou == CGAL::LEFT_TURN && ov == CGAL::RIGHT_TURN) ||
+        (ou == CGAL::RIGHT_TURN && ov == CGAL::LEFT_TURN)) {
+      const FT dx = q.x() - p.x(), dy = q.y() - p.y();
+      const FT t = cross(dx, dy, p.x() - u.x(), p.y() - u.y()) /
+                   cross(dx, dy, v.x() - u.x(), v.y() - u.y());
+      const Point x(u.x() + t * (v.x() - u.x()), u.y() + t * (v.y() - u.y()));
+      left.push_back(x);
+      right.push_back(x);
+    }
+  }
+}
+
+bool has_area(const Poly& poly) {
+  if (poly.size() < 3) return false;
+  for (size_t k = 2; k < poly.size(); ++k)
+    if (CGAL::orientation(poly[0], poly[1], poly[k]) != CGAL::COLLINEAR) return true;
+  return false;
+}
+
+Point vertex_average(const Poly& poly) {
+  FT x = 0, y = 0;
+  for (const auto& p : poly) x += p.x(), y += p.y();
+  return Point(x / FT(static_cast<int>(poly.size())), y / FT(static_cast<int>(poly.size())));
+}
+
+// Even-odd test of a point that is not on the polygon.
+bool inside_loop(const Point& p, const Poly& loop) {
+  bool inside = false;
+  for (size_t k = 0, n = loop.size(); k < n; ++k) {
+    const Point& a = loop[k];
+    const Point& b = loop[(k + 1) % n];
+    if ((a.y() > p.y()) != (b.y() > p.y())) {
+      const auto o = CGAL::orientation(a, b, p);
+      if ((b.y() > a.y()) ? o == CGAL::LEFT_TURN : o == CGAL::RIGHT_TURN) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+template <class Handle>
+const void* key_of(const Handle& h) {
+  return static_cast<const void*>(&*h);
+}
+
+std::vector<Arrangement::Face_const_handle> locate_faces(const Arrangement& arr,
+                                                          const std::vector<Point>& queries) {
+  std::vector<std::pair<Point, LocateResult>> results;
+  CGAL::locate(arr, queries.begin(), queries.end(), std::back_inserter(results));
+  std::map<Point, Arrangement::Face_const_handle> by_point;
+  for (const auto& r : results) {
+    const auto* f = boost::get<Arrangement::Face_const_handle>(&r.second);
+    if (!f) throw std::logic_error("a cell sample point lies on a crease or the boundary");
+    by_point.emplace(r.first, *f);
+  }
+  std::vector<Arrangement::Face_const_handle> out;
+  out.reserve(queries.size());
+  for (const auto& q : queries) out.push_back(by_point.at(q));
+  return out;
+}
+
+void insert_polyline(std::vector<Traits::Curve_2>& segs, const Poly& pts, bool closed) {
+  const size_t n = pts.size();
+  for (size_t k = 0; k + 1 < n + (closed ? 1 : 0); ++k) {
+    const Point& a = pts[k];
+    const Point& b = pts[(k + 1) % n];
+    if (a != b) segs.emplace_back(a, b);
+  }
+}
+
+}  // namespace
+
+PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl,
+                               const AxisLayout& yl, int closed_start_stride) {
+  const Grid grid(xl, yl);
+  const int nx = grid.nx(), ny = grid.ny();
+  const int ncx = nx - 1, ncy = ny - 1;
+  PatchLayout layout;
+  for (const auto& v : grid.X) layout.xs.push_back(CGAL::to_double(v));
+  for (const auto& v : grid.Y) layout.ys.push_back(CGAL::to_double(v));
+
+  // Snap boundary loops and creases.
+  std::vector<Poly> loops;
+  std::vector<Polyline2> rings{pattern.sheet.outer};
+  rings.insert(rings.end(), pattern.sheet.holes.begin(), pattern.sheet.holes.end());
+  for (size_t l = 0; l < rings.size(); ++l) {
+    Poly loop = grid.snap_closed(rings[l], 1);
+    if (loop.size() < 3 || !has_area(loop))
+      throw UsageError(pattern.source + ": at resolution " + std::to_string(nx) + "x" + std::to_string(ny) + " " +
+                       (l == 0 ? std::string("the sheet") : "hole " + std::to_string(l)) +
+                       " falls inside a single grid cell; use a higher resolution");
+    loops.push_back(std::move(loop));
+  }
+  std::vector<Poly> creases;
+  for (size_t k = 0; k < pattern.creases.size(); ++k) {
+    const Crease& c = pattern.creases[k];
+    Poly snapped = c.closed ? grid.snap_closed(c.points, closed_start_stride) : grid.snap_open(c.points);
+    if (snapped.size() < 2 || (c.closed && snapped.size() < 3))
+      throw UsageError(c.origin + ": at resolution " + std::to_string(nx) + "x" + std::to_string(ny) + " crease " + std::to_string(k) +
+                       " falls inside a single grid cell; use a higher resolution");
+    creases.push_back(std::move(snapped));
+  }
+
+  // The arrangement of the snapped curves; its bounded faces inside the sheet are the patches.
+  std::vector<Traits::Curve_2> segs;
+  for (const auto& l : loops) insert_polyline(segs, l, true);
+  for (size_t k = 0; k < creases.size(); ++k)
+    insert_polyline(segs, creases[k], pattern.creases[k].closed);
+  Arrangement arr;
+  CGAL::insert(arr, segs.begin(), segs.end());
+
+  // Cut cells and blocked grid edges.
+  std::vector<std::vector<std::pair<Point, Point>>> chords(static_cast<size_t>(ncx) * ncy);
+  std::vector<char> vblocked(static_cast<size_t>(nx) * ncy, 0), hblocked(static_cast<size_t>(ny) * ncx, 0);
+  for (const auto& s : segs) {
+    const Point a = s.source(), b = s.target();
+    if (a.x() == b.x() && line_at(grid.X, a.x()) >= 0) {
+      const int i = line_at(grid.X, a.x());
+      const FT lo = CGAL::min(a.y(), b.y()), hi = CGAL::max(a.y(), b.y());
+      for (int j = interval_at(grid.Y, lo); j < ncy && grid.Y[j] < hi; ++j)
+        vblocked[static_cast<size_t>(i) * ncy + j] = 1;
+    } else if (a.y() == b.y() && line_at(grid.Y, a.y()) >= 0) {
+      const int j = line_at(grid.Y, a.y());
+      const FT lo = CGAL::min(a.x(), b.x()), hi = CGAL::max(a.x(), b.x());
+      for (int i = interval_at(grid.X, lo); i < ncx && grid.X[i] < hi; ++i)
+        hblocked[static_cast<size_t>(j) * ncx + i] = 1;
+    } else {
+      const Point mid((a.x() + b.x()) / 2, (a.y() + b.y()) / 2);
+      const int i = interval_at(grid.X, mid.x()), j = interval_at(grid.Y, mid.y());
+      chords[static_cast<size_t>(j) * ncx + i].push_back({a, b});
+    }
+  }
+
+  // Query points: one per piece of a cut cell, one per connected region of uncut cells.
+  std::vector<Point> queries;
+  std::vector<int> query_of_component;
+  std::vector<int> component(static_cast<size_t>(ncx) * ncy, -1);
+  std::vector<std::vector<int>> piece_queries(static_cast<size_t>(ncx) * ncy);
+  std::vector<int> stack;
+  for (int j = 0; j < ncy; ++j) {
+    for (int i = 0; i < ncx; ++i) {
+      const int cell = j * ncx + i;
+      if (!chords[cell].empty()) {
+        std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
+                                  Point(grid.X[i + 1], grid.Y[j + 1]), Point(grid.X[i], grid.Y[j + 1])}};
+        for (const auto& [p, q] : chords[cell]) {
+          std::vector<Poly> next;
+          for (const auto& piece : pieces) {
+            Poly left, right;
+            split_convex(piece, p, q, left, right);
+            if (has_area(left)) next.push_back(std::move(left));
+            if (has_area(right)) next.push_back(std::move(right));
+          }
+          pieces = std::move(next);
+        }
+        std::vector<Point> samples;
+        for (const auto& piece : pieces) samples.push_back(vertex_average(piece));
+        std::sort(samples.begin(), samples.end(), [](const Point& u, const Point& v) {
+          return u.y() < v.y() || (u.y() == v.y() && u.x() < v.x());
+        });
+        for (const auto& s : samples) {
+          piece_queries[cell].push_back(static_cast<int>(queries.size()));
+          queries.push_back(s);
+        }
+        continue;
+      }
+      if (component[cell] >= 0) continue;
+      // Flood fill the uncut cells reachable without crossing a snapped curve.
+      const int id = static_cast<int>(query_of_component.size());
+      query_of_component.push_back(static_cast<int>(queries.size()));
+      queries.push_back(grid.cell_centre(i, j));
+      component[cell] = id;
+      stack.assign(1, cell);
+      while (!stack.empty()) {
+        const int c = stack.back();
+        stack.pop_back();
+        const int ci = c % ncx, cj = c / ncx;
+        auto visit = [&](int ni, int nj, bool blocked) {
+          if (ni < 0 || nj < 0 || ni >= ncx || nj >= ncy || blocked) return;
+          const int nc = nj * ncx + ni;
+          if (component[nc] >= 0 || !chords[nc].empty()) return;
+          component[nc] = id;
+          stack.push_back(nc);
+        };
+        visit(ci - 1, cj, vblocked[static_cast<size_t>(ci) * ncy + cj]);
+        visit(ci + 1, cj, vblocked[static_cast<size_t>(ci + 1) * ncy + cj]);
+        visit(ci, cj - 1, hblocked[static_cast<size_t>(cj) * ncx + ci]);
+        visit(ci, cj + 1, hblocked[static_cast<size_t>(cj + 1) * ncx + ci]);
+      }
+    }
+  }
+
+  // Locate the queries; faces inside the sheet become patches in order of first appearance.
+  const auto faces = locate_faces(arr, queries);
+  std::unordered_map<const void*, int> patch_of_face;
+  auto patch_of_query = [&](int q) {
+    const auto& f = faces[q];
+    if (f->is_unbounded()) return -1;
+    auto it = patch_of_face.find(key_of(f));
+    if (it != patch_of_face.end()) return it->second;
+    bool hole = false;
+    for (size_t l = 1; l < loops.size() && !hole; ++l) hole = inside_loop(queries[q], loops[l]);
+    const int id = hole ? -1 : layout.patch_count++;
+    patch_of_face.emplace(key_of(f), id);
+    return id;
+  };
+  layout.cell_offsets.assign(1, 0);
+  std::vector<int> component_patch(query_of_component.size(), -2);
+  for (int cell = 0; cell < ncx * ncy; ++cell) {
+    std::vector<int> owners;
+    if (!chords[cell].empty()) {
+      for (int q : piece_queries[cell]) {
+        const int p = patch_of_query(q);
+        if (p >= 0) owners.push_back(p);
+      }
+    } else {
+      int& p = component_patch[component[cell]];
+      if (p == -2) p = patch_of_query(query_of_component[component[cell]]);
+      if (p >= 0) owners.push_back(p);
+    }
+    std::sort(owners.begin(), owners.end());
+    owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
+    layout.cell_patches.insert(layout.cell_patches.end(), owners.begin(), owners.end());
+    layout.cell_offsets.push_back(static_cast<int>(layout.cell_patches.size()));
+  }
+
+  // Crease points: unique snapped points with the patches around them.
+  std::map<Point, int> point_index;
+  std::vector<Point> unique_points;
+  for (size_t k = 0; k < creases.size(); ++k) {
+    PatchLayout::Curve curve;
+    curve.closed = pattern.creases[k].closed;
+    for (const auto& p : creases[k]) {
+      auto [it, added] = point_index.emplace(p, static_cast<int>(unique_points.size()));
+      if (added) unique_points.push_back(p);
+      curve.points.push_back(it->second);
+    }
+    layout.curves.push_back(std::move(curve));
+  }
+  std::vector<std::pair<Point, LocateResult>> located;
+  CGAL::locate(arr, unique_points.begin(), unique_points.end(), std::back_inserter(located));
+  layout.points.resize(unique_points.size());
+  for (const auto& [p, result] : located) {
+    const auto* v = boost::get<Arrangement::Vertex_const_handle>(&result);
+    if (!v) throw std::logic_error("a snapped crease point is not an arrangement vertex");
+    PatchLayout::CreasePoint& cp = layout.points[point_index.at(p)];
+    cp.position = approx(p);
+    cp.edge = grid.edge_point(p);
+    auto circ = (*v)->incident_halfedges();
+    const auto first = circ;
+    do {
+      auto it = patch_of_face.find(key_of(circ->face()));
+      if (it != patch_of_face.end() && it->second >= 0) cp.patches.push_back(it->second);
+    } while (++circ != first);
+    std::sort(cp.patches.begin(), cp.patches.end());
+    cp.patches.erase(std::unique(cp.patches.begin(), cp.patches.end()), cp.patches.end());
+  }
+  for (const auto& l : loops) {
+    Polyline2 ring;
+    for (const auto& p : l) ring.push_back(approx(p));
+    layout.boundary.push_back(std::move(ring));
+  }
+  return layout;
+}
+
+void renumber_patches(PatchLayout& layout, const std::vector<int>& new_id) {
+  for (int c = 0; c < layout.cell_count(); ++c) {
+    auto begin = layout.cell_patches.begin() + layout.cell_offsets[c];
+    auto end = layout.cell_patches.begin() + layout.cell_offsets[c + 1];
+    for (auto it = begin; it != end; ++it) *it = new_id[*it];
+    std::sort(begin, end);
+  }
+  for (auto& p : layout.points) {
+    for (auto& id : p.patches) id = new_id[id];
+    std::sort(p.patches.begin(), p.patches.end());
+  }
+}
+
+int count_pattern_patches(const CleanPattern& pattern) {
+  std::vector<Traits::Curve_2> segs;
+  auto add = [&](const Polyline2& pts, bool closed) {
+    Poly exact_pts;
+    for (const auto& p : pts) exact_pts.push_back(exact(p));
+    insert_polyline(segs, exact_pts, closed);
+  };
+  add(pattern.sheet.outer, true);
+  for (const auto& h : pattern.sheet.holes) add(h, true);
+  for (const auto& c : pattern.creases) add(c.points, c.closed);
+  Arrangement arr;
+  CGAL::insert(arr, segs.begin(), segs.end());
+  // Bounded faces minus the holes (cleaning removed every crease inside a hole).
+  return static_cast<int>(arr.number_of_faces()) - 1 - static_cast<int>(pattern.sheet.holes.size());
+}
+
+}  // namespace sdog

@@ -1,0 +1,17 @@
+#include "geometry/text_format.h"
+
+#include <cstdio>
+
+namespace sdog {
+
+std::string format_number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string format_point(const Eigen::Vector2d& p) {
+  return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ")";
+}
+
+}  // namespace sdog

@@ -1,0 +1,13 @@
+#pragma once
+// Number and point formatting for user-facing messages (short, locale independent).
+#include <Eigen/Core>
+#include <string>
+
+namespace sdog {
+
+/// Shortest round-trip-free formatting with up to 6 significant digits: 12.5, 0.001, 3e+07.
+std::string format_number(double v);
+/// "(x, y)" with format_number.
+std::string format_point(const Eigen::Vector2d& p);
+
+}  // namespace sdog

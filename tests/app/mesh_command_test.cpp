@@ -1,0 +1,76 @@
+// `sdog mesh` as a user runs it: counts, JSON, files, help.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "geometry/dog_model.h"
+#include "tests/app/run_sdog.h"
+
+namespace sdog {
+namespace {
+
+TEST(MeshCommand, JsonMatchesTheLibrary) {
+  const auto r = test::run_sdog("mesh " + test::dataset("crossing_creases.svg") + " --res 21x21 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {21, 21});
+  EXPECT_EQ(j["fine"]["vertices"], m.fine.vertex_count());
+  EXPECT_EQ(j["fine"]["quads"], m.fine.quad_count());
+  EXPECT_EQ(j["fine"]["patches"], 4);
+  EXPECT_EQ(j["fine"]["crease_points"], m.fine.stitching.points.size());
+  EXPECT_EQ(j["fine"]["stitch_pairs"], m.fine.stitching.pairs.size());
+  EXPECT_EQ(j["coarse"]["vertices"], m.coarse.vertex_count());
+  EXPECT_EQ(j["coarse"]["quads"], m.coarse.quad_count());
+  EXPECT_EQ(j["map"]["link"], m.map.link_count);
+  EXPECT_EQ(j["map"]["I"], m.map.i_count);
+  EXPECT_EQ(j["map"]["X"], m.map.x_count);
+  EXPECT_EQ(j["map"]["coarse_only"], m.map.coarse_only_count);
+  EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  const auto& classes = j["fine"]["vertex_classes"];
+  EXPECT_EQ(classes["star"].get<int>() + classes["bnd3"].get<int>() + classes["bnd2"].get<int>() +
+                classes["bnd4"].get<int>(),
+            m.fine.vertex_count());
+}
+
+TEST(MeshCommand, TextSummaryNamesEveryCount) {
+  const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 31x21");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* word : {"sheet", "creases", "fine", "coarse", "crease points", "stitching pairs",
+                           "vertex classes", "link", "coarse-only", "time"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word << " missing in\n" << r.out;
+}
+
+TEST(MeshCommand, OutWritesTheFourVtkFiles) {
+  const std::string dir = test::temp_dir("mesh_out") + "/nested/out";
+  const auto r = test::run_sdog("mesh " + test::dataset("four_corner_arcs.svg") + " --res 21x21 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"fine.vtu", "coarse.vtu", "creases.vtp", "pattern.vtp"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
+    EXPECT_NE(r.out.find(f), std::string::npos) << "the summary should name " << f;
+  }
+  int entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++entries;
+  EXPECT_EQ(entries, 4) << "temporary files left behind";
+}
+
+TEST(MeshCommand, FineOnlyAcceptsEvenResolutions) {
+  const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 30x20 --fine-only --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.contains("coarse"));
+  EXPECT_EQ(j["fine"]["resolution"], "30x20");
+}
+
+TEST(MeshCommand, HelpExplainsEveryOption) {
+  const auto top = test::run_sdog("--help");
+  EXPECT_EQ(top.code, 0);
+  EXPECT_NE(top.out.find("mesh"), std::string::npos);
+  const auto r = test::run_sdog("mesh --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"PATTERN", "--res", "--out", "--json", "--fine-only", "--flatness", "--merge-tol", "--snap-tol"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+}  // namespace
+}  // namespace sdog

@@ -1,0 +1,176 @@
+// Meshes of patterns whose answer is known in closed form, and a property test of cell ownership
+// against an independent rule for straight creases.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <map>
+#include <set>
+
+#include "geometry/dog_model.h"
+#include "tests/geometry/pattern_builders.h"
+
+namespace sdog {
+namespace {
+
+using test::rectangle_pattern;
+
+TEST(DogMesh, PlainSheetIsOneGrid) {
+  const DogModel m = build_dog_model(rectangle_pattern(300, 200), {11, 7});
+  EXPECT_EQ(m.fine.vertex_count(), 77);
+  EXPECT_EQ(m.fine.quad_count(), 60);
+  EXPECT_EQ(m.fine.patch_count(), 1);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::Star), 9 * 5);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd3), 2 * 9 + 2 * 5);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd2), 4);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd4), 0);
+  // Mesh units: the x spacing is 1, the sheet's aspect ratio is kept.
+  EXPECT_DOUBLE_EQ(m.fine.V(1, 0) - m.fine.V(0, 0), 1.0);
+  EXPECT_DOUBLE_EQ(m.fine.V(11, 1) - m.fine.V(0, 1), (200.0 / 6) * (10.0 / 300));
+  EXPECT_EQ(m.coarse.vertex_count(), 6 * 4);
+  EXPECT_EQ(m.map.link_count, 24);
+  EXPECT_EQ(m.map.coarse_only_count, 0);
+  EXPECT_EQ(m.map.x_count, 5 * 3);
+}
+
+TEST(DogMesh, CreaseAlongAGridLineDuplicatesOnlyThatLine) {
+  // Lines at 0, 25, 50, 75, 100; the crease runs along x = 50.
+  const DogModel m = build_dog_model(rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}}), {5, 5});
+  EXPECT_EQ(m.fine.patch_count(), 2);
+  EXPECT_EQ(m.fine.quad_count(), 16);
+  EXPECT_EQ(m.fine.vertex_count(), 30);
+  EXPECT_EQ(m.fine.stitching.points.size(), 5u);
+  for (const auto& p : m.fine.stitching.points) {
+    ASSERT_EQ(p.copies.size(), 2u);
+    EXPECT_EQ(p.copies[0].t, 1.0);
+    EXPECT_EQ(p.copies[0].v1, p.copies[0].v2);
+  }
+  EXPECT_EQ(m.fine.stitching.pairs.size(), 5u);
+}
+
+TEST(DogMesh, DiagonalThroughGridVerticesCutsOnlyTheDiagonalCells) {
+  for (int n : {5, 9, 21}) {
+    const DogModel m = build_dog_model(rectangle_pattern(100, 100, {{{0, 0}, {100, 100}}}), {n, n});
+    // Each half owns the cells below (above) the diagonal and the n-1 cut diagonal cells.
+    EXPECT_EQ(m.fine.quad_count(), (n - 1) * (n - 1) + (n - 1)) << n;
+    EXPECT_EQ(m.fine.vertex_count(), n * (n + 1) + 2 * (n - 1)) << n;
+    EXPECT_EQ(m.fine.stitching.points.size(), static_cast<size_t>(n)) << n;
+    EXPECT_EQ(m.fine.patch_count(), 2);
+  }
+}
+
+TEST(DogMesh, CrossingCreasesMeetAtAPinnedGridVertexOfFourPatches) {
+  // Two straight creases crossing at (37, 61): the junction becomes a grid vertex.
+  const DogModel m = build_dog_model(rectangle_pattern(100, 100, {{{0, 61}, {100, 61}}, {{37, 0}, {37, 100}}}), {11, 11});
+  EXPECT_EQ(m.fine.patch_count(), 4);
+  EXPECT_EQ(m.clean.junctions.size(), 1u);
+  ASSERT_EQ(m.fine.stitching.junctions.size(), 1u);
+  const auto& j = m.fine.stitching.points[m.fine.stitching.junctions[0]];
+  EXPECT_EQ(j.copies.size(), 4u);
+  for (const auto& c : j.copies) EXPECT_EQ(c.v1, c.v2);
+  EXPECT_EQ(j.flat, m.fine.to_mesh({37, 61}));
+  // Coarse meshes keep the junction as a grid vertex too (nested grids).
+  ASSERT_EQ(m.coarse.stitching.junctions.size(), 1u);
+  EXPECT_EQ(m.coarse.stitching.points[m.coarse.stitching.junctions[0]].flat, j.flat);
+}
+
+// Straight creases snap to themselves, so a cell belongs to the patch on one side of the line iff
+// one of its corners lies strictly on that side.
+TEST(DogMesh, StraightCreaseCellOwnershipMatchesTheHalfPlaneRule) {
+  std::mt19937 rng(12345);
+  // Sizes divisible by every cell count used, so grid coordinates are integers and the test's
+  // side computation is exact.
+  const double W = 2520, H = 1680;
+  const int cells[] = {4, 6, 8, 10, 12, 14, 20, 24, 28, 30, 40};
+  for (int trial = 0; trial < 80; ++trial) {
+    const int cx = cells[std::uniform_int_distribution<int>(0, 10)(rng)];
+    const int cy = cells[std::uniform_int_distribution<int>(0, 10)(rng)];
+    const int nx = cx + 1, ny = cy + 1;
+    const double hx = W / cx, hy = H / cy;
+    // End points on two different sides; every other trial on grid vertices.
+    auto boundary_point = [&](int side) -> Eigen::Vector2d {
+      const int lines = (side % 2 == 0) ? cx : cy;
+      const double len = (side % 2 == 0) ? W : H;
+      double t = std::uniform_real_distribution<double>(0.05, 0.95)(rng) * len;
+      if (trial % 2 == 0) t = std::clamp(std::round(t / (len / lines)), 1.0, lines - 1.0) * (len / lines);
+      switch (side) {
+        case 0: return {t, 0};
+        case 1: return {W, t};
+        case 2: return {t, H};
+        default: return {0, t};
+      }
+    };
+    const int s0 = trial % 4, s1 = (s0 + 1 + (trial / 4) % 3) % 4;
+    const Eigen::Vector2d a = boundary_point(s0), b = boundary_point(s1);
+    const DogModel m = build_dog_model(rectangle_pattern(W, H, {{a, b}}), {nx, ny}, {{}, false});
+    ASSERT_EQ(m.fine.patch_count(), 2);
+    const DogMesh& mesh = m.fine;
+    auto side = [&](double x, double y) {
+      const long double s = static_cast<long double>(b.x() - a.x()) * (y - a.y()) -
+                            static_cast<long double>(b.y() - a.y()) * (x - a.x());
+      return s > 0 ? 1 : (s < 0 ? -1 : 0);
+    };
+    // The left patch owns a cell whose corners are all strictly on the left.
+    std::map<std::pair<int, int>, std::set<int>> owners;
+    for (int q = 0; q < mesh.quad_count(); ++q) {
+      const auto g = mesh.grid[mesh.F(q, 0)];
+      owners[{g.x(), g.y()}].insert(mesh.vertex_patch[mesh.F(q, 0)]);
+    }
+    // (Or the right patch one whose corners are all on the right, when the left side is small.)
+    int left_patch = -1;
+    for (const auto& [cell, who] : owners) {
+      int sum = 0;
+      for (int d = 0; d < 4; ++d) sum += side((cell.first + d % 2) * hx, (cell.second + d / 2) * hy);
+      if (sum == 4) left_patch = *who.begin();
+      if (sum == -4 && left_patch < 0) left_patch = 1 - *who.begin();
+    }
+    ASSERT_GE(left_patch, 0);
+    std::set<std::tuple<int, int, int>> owned;
+    for (const auto& [cell, who] : owners)
+      for (int p : who) owned.insert({p == left_patch ? 1 : -1, cell.first, cell.second});
+    for (int i = 0; i < cx; ++i)
+      for (int j = 0; j < cy; ++j) {
+        bool has[2] = {false, false};
+        for (int di = 0; di < 2; ++di)
+          for (int dj = 0; dj < 2; ++dj) {
+            const int s = side((i + di) * hx, (j + dj) * hy);
+            if (s > 0) has[0] = true;
+            if (s < 0) has[1] = true;
+          }
+        EXPECT_EQ(owned.count({1, i, j}) > 0, has[0]) << "trial " << trial << " cell " << i << "," << j;
+        EXPECT_EQ(owned.count({-1, i, j}) > 0, has[1]) << "trial " << trial << " cell " << i << "," << j;
+      }
+  }
+}
+
+TEST(QuadTopology, NeighboursAreInCyclicOrder) {
+  const DogModel m = build_dog_model(rectangle_pattern(100, 100), {5, 5}, {{}, false});
+  const int v = 2 * 5 + 2;  // centre vertex (2, 2)
+  const auto& nb = m.fine_topology.neighbors[v];
+  EXPECT_EQ(m.fine.grid[nb[kXForward]], Eigen::Vector2i(3, 2));
+  EXPECT_EQ(m.fine.grid[nb[kYForward]], Eigen::Vector2i(2, 3));
+  EXPECT_EQ(m.fine.grid[nb[kXBackward]], Eigen::Vector2i(1, 2));
+  EXPECT_EQ(m.fine.grid[nb[kYBackward]], Eigen::Vector2i(2, 1));
+  EXPECT_EQ(m.fine_topology.vertex_class[v], VertexClass::Star);
+  EXPECT_EQ(m.fine_topology.vertex_class[2], VertexClass::Bnd3);
+  EXPECT_EQ(m.fine_topology.neighbors[2][kYBackward], -1);
+  EXPECT_EQ(m.fine_topology.vertex_class[0], VertexClass::Bnd2);
+  EXPECT_EQ(m.fine_topology.edges.size(), 2u * 4 * 5);
+}
+
+TEST(QuadTopology, StaircaseBoundariesHaveBnd4Vertices) {
+  // A curved crease gives staircase patch boundaries: reflex corners are bnd4.
+  const DogModel m = build_dog_model(
+      rectangle_pattern(100, 100, {{{0, 30}, {20, 32}, {40, 38}, {60, 50}, {80, 68}, {92, 85}, {100, 100}}}), {21, 21});
+  EXPECT_GT(m.fine_topology.count(VertexClass::Bnd4), 0);
+  for (int v = 0; v < m.fine.vertex_count(); ++v) {
+    int nb = 0;
+    for (int u : m.fine_topology.neighbors[v]) nb += u >= 0;
+    if (m.fine_topology.vertex_class[v] == VertexClass::Bnd4) {
+      EXPECT_EQ(nb, 4);
+      EXPECT_LT(m.fine_topology.quads_around[v], 4);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sdog

@@ -1,0 +1,58 @@
+#include "ui/vis/model_files.h"
+
+#include "geometry/mesh_arrays.h"
+#include "ui/vis/vtk_meshes.h"
+
+namespace sdog::vis {
+namespace {
+
+Polyline3 lifted(const DogMesh& mesh, const Polyline2& sheet_points, bool closed) {
+  Polyline3 out;
+  for (const auto& p : sheet_points) {
+    const Eigen::Vector2d m = mesh.to_mesh(p);
+    out.emplace_back(m.x(), m.y(), 0.0);
+  }
+  if (closed && !out.empty()) out.push_back(out.front());
+  return out;
+}
+
+}  // namespace
+
+void write_model_files(const DogModel& model, OutputSet& out) {
+  write_vtu(quad_grid(model.fine.V, model.fine.F, fine_mesh_arrays(model)), out.temporary("fine.vtu"));
+  if (model.has_coarse)
+    write_vtu(quad_grid(model.coarse.V, model.coarse.F, coarse_mesh_arrays(model)),
+              out.temporary("coarse.vtu"));
+
+  const CreaseStitching& st = model.fine.stitching;
+  std::vector<Polyline3> creases;
+  NamedArray index{"crease", {}, true}, closed{"closed", {}, true}, dashed{"dashed", {}, true};
+  for (size_t k = 0; k < st.curves.size(); ++k) {
+    Polyline3 line;
+    for (int p : st.curves[k].points) line.emplace_back(st.points[p].flat.x(), st.points[p].flat.y(), 0.0);
+    if (st.curves[k].closed && !line.empty()) line.push_back(line.front());
+    creases.push_back(std::move(line));
+    index.values.push_back(static_cast<double>(k));
+    closed.values.push_back(st.curves[k].closed);
+    dashed.values.push_back(model.clean.creases[k].dashed);
+  }
+  write_vtp(polylines(creases, {index, closed, dashed}), out.temporary("creases.vtp"));
+
+  std::vector<Polyline3> curves;
+  NamedArray kind{"kind", {}, true}, which{"index", {}, true}, dash{"dashed", {}, true};
+  const Sheet& sheet = model.pattern.sheet;
+  curves.push_back(lifted(model.fine, sheet.outer, true));
+  kind.values.push_back(0), which.values.push_back(0), dash.values.push_back(0);
+  for (size_t h = 0; h < sheet.holes.size(); ++h) {
+    curves.push_back(lifted(model.fine, sheet.holes[h], true));
+    kind.values.push_back(0), which.values.push_back(static_cast<double>(h + 1)), dash.values.push_back(0);
+  }
+  for (size_t k = 0; k < model.pattern.creases.size(); ++k) {
+    const Crease& c = model.pattern.creases[k];
+    curves.push_back(lifted(model.fine, c.points, c.closed));
+    kind.values.push_back(1), which.values.push_back(static_cast<double>(k)), dash.values.push_back(c.dashed);
+  }
+  write_vtp(polylines(curves, {kind, which, dash}), out.temporary("pattern.vtp"));
+}
+
+}  // namespace sdog::vis

@@ -1,0 +1,25 @@
+#pragma once
+// Offscreen rendering to PNG. VTK 9.1 on Debian renders through X11 only, so a display is needed:
+// headless machines run the program under xvfb-run.
+#include <vtkRenderWindow.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+namespace sdog::vis {
+
+struct ImageSize {
+  int width = 1600, height = 800;
+};
+
+/// An offscreen render window of the given size; throws OutputError when there is no X display.
+vtkSmartPointer<vtkRenderWindow> offscreen_window(const ImageSize& size);
+
+/// Renders the window and writes it as PNG (RGBA with a transparent background when asked).
+/// Throws OutputError naming the path on failure.
+void save_png(vtkRenderWindow* window, const std::string& path, bool transparent = false);
+
+/// Parses "1600x800"; throws UsageError.
+ImageSize parse_image_size(const std::string& text);
+
+}  // namespace sdog::vis

@@ -1,0 +1,26 @@
+#pragma once
+// Colours shared by every picture (the thesis's conventions for the fine/coarse map).
+#include <array>
+
+#include "geometry/fine_coarse_map.h"
+
+namespace sdog::vis {
+
+using Rgb = std::array<double, 3>;
+
+inline Rgb vertex_type_color(VertexType t) {
+  switch (t) {
+    case VertexType::Link: return {0.17, 0.63, 0.17};       // green
+    case VertexType::I: return {0.45, 0.78, 0.98};          // light blue
+    case VertexType::X: return {0.52, 0.29, 0.72};          // purple
+    case VertexType::CoarseOnly: return {0.86, 0.12, 0.12};  // red
+  }
+  return {0, 0, 0};
+}
+inline constexpr Rgb kCreasePointColor{1.0, 0.45, 0.75};  // pink
+inline constexpr Rgb kCreaseLineColor{0.80, 0.20, 0.50};
+inline constexpr Rgb kSurfaceColor{0.94, 0.94, 0.94};
+inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
+inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};
+
+}  // namespace sdog::vis

@@ -1,0 +1,131 @@
+#include "ui/vis/vtk_meshes.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyLine.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <mutex>
+
+#include "geometry/errors.h"
+
+namespace sdog::vis {
+namespace {
+
+// Keeps VTK's messages for our exceptions instead of printing them.
+class CapturingOutputWindow : public vtkOutputWindow {
+ public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void DisplayText(const char* text) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_ = text ? text : "";
+  }
+  std::string take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::string s;
+    s.swap(last_);
+    return s;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::string last_;
+};
+vtkStandardNewMacro(CapturingOutputWindow);
+
+CapturingOutputWindow* output_window() {
+  static vtkSmartPointer<CapturingOutputWindow> window = [] {
+    auto w = vtkSmartPointer<CapturingOutputWindow>::New();
+    vtkOutputWindow::SetInstance(w);
+    return w;
+  }();
+  return window;
+}
+
+vtkSmartPointer<vtkDataArray> to_vtk(const NamedArray& a) {
+  vtkSmartPointer<vtkDataArray> out;
+  if (a.integral) out = vtkSmartPointer<vtkIntArray>::New();
+  else out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->SetName(a.name.c_str());
+  out->SetNumberOfComponents(1);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(a.values.size()));
+  for (size_t k = 0; k < a.values.size(); ++k) out->SetTuple1(static_cast<vtkIdType>(k), a.values[k]);
+  return out;
+}
+
+std::string one_line(std::string s) {
+  for (auto& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+template <class Writer, class Data>
+void write_xml(Data* data, const std::string& path) {
+  output_window();
+  auto writer = vtkSmartPointer<Writer>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
+    std::string why = one_line(take_vtk_error());
+    throw OutputError(path + ": cannot write the VTK file" + (why.empty() ? "" : " (" + why + ")"));
+  }
+}
+
+}  // namespace
+
+std::string take_vtk_error() { return output_window()->take(); }
+
+vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
+                                               const MeshArrays& arrays) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) points->SetPoint(i, V(i, 0), V(i, 1), V(i, 2));
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  grid->Allocate(F.rows());
+  for (Eigen::Index q = 0; q < F.rows(); ++q) {
+    const vtkIdType ids[4] = {F(q, 0), F(q, 1), F(q, 2), F(q, 3)};
+    grid->InsertNextCell(VTK_QUAD, 4, ids);
+  }
+  for (const auto& a : arrays.point) grid->GetPointData()->AddArray(to_vtk(a));
+  for (const auto& a : arrays.cell) grid->GetCellData()->AddArray(to_vtk(a));
+  return grid;
+}
+
+vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
+                                       const std::vector<NamedArray>& cell_arrays) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& line : lines) {
+    cells->InsertNextCell(static_cast<int>(line.size()));
+    for (const auto& p : line) cells->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetLines(cells);
+  for (const auto& a : cell_arrays) poly->GetCellData()->AddArray(to_vtk(a));
+  return poly;
+}
+
+void write_vtu(vtkUnstructuredGrid* grid, const std::string& path) {
+  write_xml<vtkXMLUnstructuredGridWriter>(grid, path);
+}
+
+void write_vtp(vtkPolyData* poly, const std::string& path) {
+  write_xml<vtkXMLPolyDataWriter>(poly, path);
+}
+
+}  // namespace sdog::vis

@@ -1,0 +1,34 @@
+#pragma once
+// DOG meshes and curves as VTK data sets with named arrays, and VTK XML files.
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "geometry/mesh_arrays.h"
+
+namespace sdog::vis {
+
+using Polyline3 = std::vector<Eigen::Vector3d>;
+
+/// Quad mesh (n x 3 positions, quads) with the given point and cell arrays.
+vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
+                                               const MeshArrays& arrays);
+
+/// Polylines (one cell each; closed ones repeat their first point) with one cell array per entry
+/// of `cell_arrays` (values per polyline).
+vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
+                                       const std::vector<NamedArray>& cell_arrays);
+
+/// VTK XML writers; throw OutputError with the path and VTK's reason on failure.
+void write_vtu(vtkUnstructuredGrid* grid, const std::string& path);
+void write_vtp(vtkPolyData* poly, const std::string& path);
+
+/// Collects VTK's own error messages instead of letting VTK print them; returns and clears the
+/// last one. Installed on first use.
+std::string take_vtk_error();
+
+}  // namespace sdog::vis
