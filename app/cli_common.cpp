@@ -7,8 +7,9 @@
 namespace sdog::cli {
 
 void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
-  cmd.add_option("PATTERN", o.pattern, "crease pattern (SVG): black strokes = sheet boundary, "
-                                       "other colours = creases")
+  cmd.add_option("PATTERN", o.pattern,
+                 "crease pattern (SVG): black strokes = sheet boundary, "
+                 "other colours = creases")
       ->required();
   cmd.add_option("--res", o.res,
                  "grid lines XxY such as 31x21 (odd numbers when a coarse mesh is built), or "
@@ -33,7 +34,8 @@ Resolution resolve_resolution(const std::string& text, const CreasePattern& patt
   if (text != "auto") return parse_resolution(text);
   const double w = pattern.sheet.bbox.width(), h = pattern.sheet.bbox.height();
   const int longer = 41;
-  const int shorter = std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(w, h) / std::max(w, h))) + 1);
+  const int shorter =
+      std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(w, h) / std::max(w, h))) + 1);
   return w >= h ? Resolution{longer, shorter} : Resolution{shorter, longer};
 }
 

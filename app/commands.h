@@ -1,6 +1,7 @@
 #pragma once
 // The sdog subcommands. Each registers its options on the app and, when chosen, stores its body in
-// `run` (called after parsing; library exceptions propagate to main, which maps them to exit codes).
+// `run` (called after parsing; library exceptions propagate to main, which maps them to exit
+// codes).
 #include <CLI/CLI.hpp>
 #include <functional>
 

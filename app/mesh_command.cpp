@@ -37,42 +37,54 @@ nlohmann::json mesh_json(const DogMesh& m, const QuadTopology& t, const Resoluti
           {"vertex_classes", classes_json(t)}};
 }
 
-nlohmann::json summary_json(const DogModel& m, double seconds, const std::vector<std::string>& files) {
+nlohmann::json summary_json(const DogModel& m, double seconds,
+                            const std::vector<std::string>& files) {
   const Box2& b = m.pattern.sheet.bbox;
   int dashed = 0;
   for (const auto& c : m.clean.creases) dashed += c.dashed;
   nlohmann::json j = {
       {"pattern", m.pattern.source},
-      {"sheet", {{"width", b.width()}, {"height", b.height()}, {"holes", m.pattern.sheet.holes.size()},
-                 {"from_viewbox", m.pattern.sheet.from_viewbox}}},
-      {"creases", {{"drawn", m.pattern.creases.size()}, {"cleaned", m.clean.creases.size()},
-                   {"dashed", dashed}, {"junctions", m.clean.junctions.size()}}},
+      {"sheet",
+       {{"width", b.width()},
+        {"height", b.height()},
+        {"holes", m.pattern.sheet.holes.size()},
+        {"from_viewbox", m.pattern.sheet.from_viewbox}}},
+      {"creases",
+       {{"drawn", m.pattern.creases.size()},
+        {"cleaned", m.clean.creases.size()},
+        {"dashed", dashed},
+        {"junctions", m.clean.junctions.size()}}},
       {"cleaning", m.clean.changes},
-      {"mesh_units", {{"scale", m.fine.scale}, {"origin", {m.fine.sheet_origin.x(), m.fine.sheet_origin.y()}}}},
+      {"mesh_units",
+       {{"scale", m.fine.scale}, {"origin", {m.fine.sheet_origin.x(), m.fine.sheet_origin.y()}}}},
       {"fine", mesh_json(m.fine, m.fine_topology, m.fine_res)},
       {"seconds", seconds},
       {"outputs", files}};
   if (m.has_coarse) {
     j["coarse"] = mesh_json(m.coarse, m.coarse_topology, m.coarse_res);
-    j["map"] = {{"link", m.map.link_count}, {"I", m.map.i_count}, {"X", m.map.x_count},
-                {"coarse_only", m.map.coarse_only_count}, {"coarse_cover_cells", m.coarse_cover_cells}};
+    j["map"] = {{"link", m.map.link_count},
+                {"I", m.map.i_count},
+                {"X", m.map.x_count},
+                {"coarse_only", m.map.coarse_only_count},
+                {"coarse_cover_cells", m.coarse_cover_cells}};
   }
   return j;
 }
 
 void print_mesh(std::ostream& os, const char* label, const DogMesh& m, const QuadTopology& t,
                 const Resolution& r) {
-  os << label << r.str() << ": " << m.vertex_count() << " vertices, " << m.quad_count() << " quads, "
-     << m.patch_count() << " patches\n"
+  os << label << r.str() << ": " << m.vertex_count() << " vertices, " << m.quad_count()
+     << " quads, " << m.patch_count() << " patches\n"
      << "              crease points " << m.stitching.points.size() << ", stitching pairs "
-     << m.stitching.pairs.size() << ", junctions of >2 patches " << m.stitching.junctions.size() << "\n"
+     << m.stitching.pairs.size() << ", junctions of >2 patches " << m.stitching.junctions.size()
+     << "\n"
      << "              vertex classes: star " << t.count(VertexClass::Star) << ", bnd3 "
      << t.count(VertexClass::Bnd3) << ", bnd2 " << t.count(VertexClass::Bnd2) << ", bnd4 "
      << t.count(VertexClass::Bnd4) << "\n";
 }
 
-void print_summary(std::ostream& os, const DogModel& m, double seconds, const std::vector<std::string>& files,
-                   bool verbose) {
+void print_summary(std::ostream& os, const DogModel& m, double seconds,
+                   const std::vector<std::string>& files, bool verbose) {
   const Box2& b = m.pattern.sheet.bbox;
   os << "pattern       " << m.pattern.source << "\n"
      << "sheet         " << format_number(b.width()) << " x " << format_number(b.height())
@@ -89,7 +101,8 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds, const st
     os << "map           link " << m.map.link_count << ", I " << m.map.i_count << ", X "
        << m.map.x_count << ", coarse-only " << m.map.coarse_only_count;
     if (m.coarse_cover_cells > 0)
-      os << " (" << m.coarse_cover_cells << " coarse cells added so coarse patches cover fine ones)";
+      os << " (" << m.coarse_cover_cells
+         << " coarse cells added so coarse patches cover fine ones)";
     os << "\n";
   }
   os << "time          " << format_number(seconds) << " s\n";
@@ -101,11 +114,13 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds, const st
 void register_mesh_command(CLI::App& app, Runner& run) {
   auto args = std::make_shared<MeshArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "mesh", "Build the fine DOG, its coarse twin and the map between them; print the counts and "
-              "optionally write VTK files");
+      "mesh",
+      "Build the fine DOG, its coarse twin and the map between them; print the counts and "
+      "optionally write VTK files");
   add_pattern_options(*cmd, args->pattern);
-  cmd->add_option("--out", args->out,
-                  "directory for fine.vtu, coarse.vtu, creases.vtp, pattern.vtp (created if needed)");
+  cmd->add_option(
+      "--out", args->out,
+      "directory for fine.vtu, coarse.vtu, creases.vtp, pattern.vtp (created if needed)");
   cmd->add_flag("--json", args->json, "print the summary as one JSON object");
   cmd->add_flag("-v,--verbose", args->verbose, "also list what pattern cleaning changed");
   cmd->callback([args, &run]() {
@@ -119,8 +134,10 @@ void register_mesh_command(CLI::App& app, Runner& run) {
         vis::write_model_files(model, out);
         files = out.commit();
       }
-      if (args->json) std::cout << summary_json(model, seconds, files).dump(2) << "\n";
-      else print_summary(std::cout, model, seconds, files, args->verbose);
+      if (args->json)
+        std::cout << summary_json(model, seconds, files).dump(2) << "\n";
+      else
+        print_summary(std::cout, model, seconds, files, args->verbose);
     };
   });
 }

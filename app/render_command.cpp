@@ -23,8 +23,9 @@ struct RenderArgs {
 void register_render_command(CLI::App& app, Runner& run) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "render", "Render a picture of the meshed pattern offscreen to PNG (needs an X display: "
-                "use xvfb-run on a headless machine)");
+      "render",
+      "Render a picture of the meshed pattern offscreen to PNG (needs an X display: "
+      "use xvfb-run on a headless machine)");
   add_pattern_options(*cmd, args->pattern);
   cmd->add_option("--overlay", args->overlay,
                   "what to show: vertex-types (fine and coarse meshes, vertices coloured link / I "
@@ -40,7 +41,8 @@ void register_render_command(CLI::App& app, Runner& run) {
       const DogModel model = build_model(args->pattern);
       const std::filesystem::path target(args->out);
       OutputSet out(target.has_parent_path() ? target.parent_path().string() : ".");
-      vis::render_vertex_types(model, out.temporary(target.filename().string()), size, args->transparent);
+      vis::render_vertex_types(model, out.temporary(target.filename().string()), size,
+                               args->transparent);
       for (const auto& f : out.commit()) std::cout << "wrote " << f << "\n";
     };
   });

@@ -19,7 +19,8 @@ OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
   if (ec) throw OutputError(dir_ + ": cannot create the output directory (" + ec.message() + ")");
   if (!fs::is_directory(dir_)) throw OutputError(dir_ + ": exists and is not a directory");
   if (::access(dir_.c_str(), W_OK) != 0)
-    throw OutputError(dir_ + ": the output directory is not writable (" + std::strerror(errno) + ")");
+    throw OutputError(dir_ + ": the output directory is not writable (" + std::strerror(errno) +
+                      ")");
 }
 
 OutputSet::~OutputSet() {
@@ -32,7 +33,8 @@ OutputSet::~OutputSet() {
 
 std::string OutputSet::temporary(const std::string& name) {
   const std::string final_path = (fs::path(dir_) / name).string();
-  const std::string tmp = (fs::path(dir_) / ("." + name + "." + std::to_string(::getpid()) + ".tmp")).string();
+  const std::string tmp =
+      (fs::path(dir_) / ("." + name + "." + std::to_string(::getpid()) + ".tmp")).string();
   files_.push_back({tmp, final_path});
   return tmp;
 }
@@ -50,7 +52,9 @@ std::vector<std::string> OutputSet::commit() {
   for (const auto& [tmp, final_path] : files_) {
     std::error_code ec;
     fs::rename(tmp, final_path, ec);
-    if (ec) throw OutputError(final_path + ": cannot move the written file into place (" + ec.message() + ")");
+    if (ec)
+      throw OutputError(final_path + ": cannot move the written file into place (" + ec.message() +
+                        ")");
     written.push_back(final_path);
   }
   committed_ = true;

@@ -53,7 +53,8 @@ std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol)
         break;
       }
       if (!extended) {
-        throw InputError(current.origin + ": the sheet boundary (black) is not closed: it ends at " +
+        throw InputError(current.origin +
+                         ": the sheet boundary (black) is not closed: it ends at " +
                          format_point(current.points.back()) + ", " +
                          format_number((current.points.front() - current.points.back()).norm()) +
                          " units from its start " + format_point(current.points.front()) +
@@ -91,6 +92,21 @@ void check_simple(const std::vector<Polyline2>& loops, const std::vector<std::st
   throw InputError(origins[c.b] + ": this boundary curve touches or crosses another one (" +
                    origins[c.a] + ") near " + format_point(where) +
                    "; holes must lie strictly inside the sheet and apart from each other");
+}
+
+// Creases may reach past the sheet (they are clipped), but coordinates many sheet sizes away are
+// a drawing mistake, and they would make clipping and crossing searches needlessly expensive.
+void check_not_far(const SvgCurve& c, const CreasePattern& pattern, const std::string& source) {
+  constexpr double kFarFactor = 100;
+  const Box2& b = pattern.sheet.bbox;
+  const double L = pattern.size();
+  for (const auto& p : c.points) {
+    if (p.x() < b.xmin - kFarFactor * L || p.x() > b.xmax + kFarFactor * L ||
+        p.y() < b.ymin - kFarFactor * L || p.y() > b.ymax + kFarFactor * L)
+      throw InputError(origin_of(source, c) + ": the curve reaches " + format_point(p) +
+                       ", more than " + format_number(kFarFactor) +
+                       " sheet sizes away from the sheet; check the drawing's coordinates");
+  }
 }
 
 }  // namespace
@@ -186,6 +202,7 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
   const double sheet_tol = closed_fraction * pattern.size();
   for (size_t k = 0; k < crease_curves.size(); ++k) {
     const SvgCurve& c = *crease_curves[k];
+    check_not_far(c, pattern, drawing.source);
     Crease crease;
     crease.points = c.points;
     crease.closed = c.closed;

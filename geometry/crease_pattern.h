@@ -1,7 +1,7 @@
 #pragma once
 // A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves, in sheet
-// units (SVG user units, y up). Built from an SvgDrawing: black curves are the sheet boundary (none:
-// the viewBox rectangle), every other colour is a crease.
+// units (SVG user units, y up). Built from an SvgDrawing: black curves are the sheet boundary
+// (none: the viewBox rectangle), every other colour is a crease.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -13,7 +13,7 @@ namespace sdog {
 using Polyline2 = std::vector<Eigen::Vector2d>;
 
 struct Crease {
-  Polyline2 points;     ///< closed creases do not repeat the first point
+  Polyline2 points;  ///< closed creases do not repeat the first point
   bool closed = false;
   bool dashed = false;  ///< mountain/valley hint from the drawing (dashed stroke)
   std::string origin;   ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages

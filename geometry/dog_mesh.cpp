@@ -43,7 +43,8 @@ bool owns_edge(const PatchLayout& layout, int p, const GridEdgePoint& e) {
 
 }  // namespace
 
-DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin, double scale) {
+DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
+                       double scale) {
   DogMesh mesh;
   mesh.sheet_origin = sheet_origin;
   mesh.scale = scale;
@@ -77,7 +78,8 @@ DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_o
       mesh.vertex_patch.push_back(p);
     }
     auto index = [&](long long i, long long j) {
-      return base + static_cast<int>(std::lower_bound(keys.begin(), keys.end(), j * nx + i) - keys.begin());
+      return base + static_cast<int>(std::lower_bound(keys.begin(), keys.end(), j * nx + i) -
+                                     keys.begin());
     };
     for (int c : patch_cells[p]) {
       const long long i = c % ncx, j = c / ncx;

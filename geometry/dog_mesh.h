@@ -23,9 +23,9 @@ struct EdgePoint {
 
 struct CreaseStitching {
   struct Point {
-    Eigen::Vector2d flat;            ///< position in the flat mesh (mesh units)
-    std::vector<EdgePoint> copies;   ///< one per patch that owns the edge, in patch order
-    std::vector<int> patches;        ///< the patch of each copy
+    Eigen::Vector2d flat;           ///< position in the flat mesh (mesh units)
+    std::vector<EdgePoint> copies;  ///< one per patch that owns the edge, in patch order
+    std::vector<int> patches;       ///< the patch of each copy
   };
   std::vector<Point> points;  ///< unique crease points (a junction is one point)
 
@@ -66,7 +66,9 @@ struct DogMesh {
   /// Vertex of patch p at grid position (i, j), or -1 (binary search in the patch's range).
   int vertex_at(int patch, int i, int j) const;
   /// Mesh coordinates of a point given in sheet units.
-  Eigen::Vector2d to_mesh(const Eigen::Vector2d& sheet) const { return (sheet - sheet_origin) * scale; }
+  Eigen::Vector2d to_mesh(const Eigen::Vector2d& sheet) const {
+    return (sheet - sheet_origin) * scale;
+  }
   /// Position of an edge point in the current positions X (n x 3).
   static Eigen::Vector3d position(const Eigen::MatrixX3d& X, const EdgePoint& e) {
     return e.t * X.row(e.v1).transpose() + (1 - e.t) * X.row(e.v2).transpose();
@@ -75,6 +77,7 @@ struct DogMesh {
 
 /// Builds the mesh and its stitching from a patch layout (see the unit convention above).
 /// Throws std::logic_error if a crease point ends up with fewer than two copies.
-DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin, double scale);
+DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
+                       double scale);
 
 }  // namespace sdog

@@ -15,9 +15,9 @@ PatchLayout checked_layout(const DogModel& m, const Resolution& res, const AxisL
                            const AxisLayout& y, int stride) {
   PatchLayout layout = build_patch_layout(m.clean, x, y, stride);
   if (layout.patch_count != m.expected_patches)
-    throw UsageError(m.pattern.source + ": at resolution " + res.str() + " the grid-snapped pattern has " +
-                     std::to_string(layout.patch_count) + " patches instead of " +
-                     std::to_string(m.expected_patches) +
+    throw UsageError(m.pattern.source + ": at resolution " + res.str() +
+                     " the grid-snapped pattern has " + std::to_string(layout.patch_count) +
+                     " patches instead of " + std::to_string(m.expected_patches) +
                      " (creases come closer than a grid cell); use a higher resolution");
   return layout;
 }
@@ -41,10 +41,11 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
     fx = axis_layout(b.xmin, b.xmax, res.nx, px);
     fy = axis_layout(b.ymin, b.ymax, res.ny, py);
   } catch (const UsageError& e) {
-    throw UsageError(pattern.source + ": resolution " + res.str() + " is too low for the pattern's " +
-                     std::to_string(m.clean.pins.size()) +
+    throw UsageError(pattern.source + ": resolution " + res.str() +
+                     " is too low for the pattern's " + std::to_string(m.clean.pins.size()) +
                      " points that must be grid vertices (junctions, crease ends on slanted "
-                     "boundary edges): " + e.what());
+                     "boundary edges): " +
+                     e.what());
   }
   const bool nested = res.nx % 2 == 1 && res.ny % 2 == 1;
   const PatchLayout fine = checked_layout(m, res, fx, fy, nested ? 2 : 1);

@@ -11,10 +11,14 @@ namespace sdog {
 
 const char* to_string(VertexType t) {
   switch (t) {
-    case VertexType::Link: return "link";
-    case VertexType::I: return "I";
-    case VertexType::X: return "X";
-    case VertexType::CoarseOnly: return "coarse-only";
+    case VertexType::Link:
+      return "link";
+    case VertexType::I:
+      return "I";
+    case VertexType::X:
+      return "X";
+    case VertexType::CoarseOnly:
+      return "coarse-only";
   }
   return "?";
 }
@@ -68,7 +72,8 @@ int cover_fine_patches(PatchLayout& coarse, const PatchLayout& fine) {
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) {
         const int fcell = (2 * J + b) * fcx + 2 * I + a;
-        owners.insert(owners.end(), fine.owners(fcell), fine.owners(fcell) + fine.owner_count(fcell));
+        owners.insert(owners.end(), fine.owners(fcell),
+                      fine.owners(fcell) + fine.owner_count(fcell));
       }
     std::sort(owners.begin(), owners.end());
     owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
@@ -88,8 +93,9 @@ std::vector<double> arc_lengths(const CreaseStitching& st, const CreaseStitching
   std::vector<double> s{0.0};
   const size_t n = curve.points.size();
   for (size_t k = 0; k + 1 < n + (curve.closed ? 1 : 0); ++k)
-    s.push_back(s.back() + (st.points[curve.points[(k + 1) % n]].flat -
-                            st.points[curve.points[k]].flat).norm());
+    s.push_back(
+        s.back() +
+        (st.points[curve.points[(k + 1) % n]].flat - st.points[curve.points[k]].flat).norm());
   return s;
 }
 
@@ -144,15 +150,16 @@ FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) 
     if (t == VertexType::I) ++map.i_count;
     if (t == VertexType::X) ++map.x_count;
   }
-  map.coarse_only_count =
-      static_cast<int>(std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::CoarseOnly));
+  map.coarse_only_count = static_cast<int>(
+      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::CoarseOnly));
 
   // Crease curves: coarse crease points are fine crease points at the same flat position.
   const auto& fs = fine.stitching;
   const auto& cs = coarse.stitching;
   if (fs.curves.size() != cs.curves.size())
     throw std::logic_error("fine and coarse meshes have different numbers of creases");
-  const double tol = 1e-9 * std::max(fine.xs.back() - fine.xs.front(), fine.ys.back() - fine.ys.front());
+  const double tol =
+      1e-9 * std::max(fine.xs.back() - fine.xs.front(), fine.ys.back() - fine.ys.front());
   for (size_t k = 0; k < fs.curves.size(); ++k) {
     const auto& fc = fs.curves[k];
     const auto& cc = cs.curves[k];
@@ -168,7 +175,8 @@ FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) 
       }
     }
     if (next != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
-      throw std::logic_error("coarse crease " + std::to_string(k) + " is not a subset of the fine one");
+      throw std::logic_error("coarse crease " + std::to_string(k) +
+                             " is not a subset of the fine one");
     const auto s = arc_lengths(fs, fc);
     const int nfp = static_cast<int>(fc.points.size());
     if (fc.closed) coarse_at.push_back(nfp);  // the loop returns to its first point

@@ -19,10 +19,10 @@ enum class VertexType : int { Link = 0, I = 1, X = 2, CoarseOnly = 3 };
 const char* to_string(VertexType t);
 
 struct FineCoarseMap {
-  std::vector<VertexType> fine_type;    ///< Link, I or X
-  std::vector<VertexType> coarse_type;  ///< Link or CoarseOnly
-  std::vector<int> fine_to_coarse;      ///< coarse twin of a link vertex, else -1
-  std::vector<int> coarse_to_fine;      ///< fine twin of a link vertex, else -1
+  std::vector<VertexType> fine_type;                    ///< Link, I or X
+  std::vector<VertexType> coarse_type;                  ///< Link or CoarseOnly
+  std::vector<int> fine_to_coarse;                      ///< coarse twin of a link vertex, else -1
+  std::vector<int> coarse_to_fine;                      ///< fine twin of a link vertex, else -1
   std::vector<std::array<int, 2>> fine_to_coarse_edge;  ///< I vertex: ends of its coarse edge
   std::vector<int> fine_to_coarse_quad;  ///< X vertex: the coarse quad it is the centre of
 
@@ -43,9 +43,9 @@ struct FineCoarseMap {
 /// covers (most shared cells). Throws UsageError when this is not one to one.
 std::vector<int> match_coarse_patches(const PatchLayout& fine, const PatchLayout& coarse);
 
-/// Makes every coarse patch cover its fine patch: a coarse cell also belongs to each patch that owns
-/// one of its four fine cells. (Where a crease dips across a coarse grid line and back within one
-/// coarse cell, the coarse chord runs along the line and the coarse patch would miss cells that
+/// Makes every coarse patch cover its fine patch: a coarse cell also belongs to each patch that
+/// owns one of its four fine cells. (Where a crease dips across a coarse grid line and back within
+/// one coarse cell, the coarse chord runs along the line and the coarse patch would miss cells that
 /// the fine patch has.) Patch ids must already match. Returns the number of (cell, patch) pairs
 /// added.
 int cover_fine_patches(PatchLayout& coarse, const PatchLayout& fine);

@@ -14,8 +14,8 @@ Resolution parse_resolution(const std::string& text) {
   auto bad = [&]() {
     return UsageError("bad resolution \"" + text +
                       "\": expected X_LINESxY_LINES such as 31x21 (or one number for a square "
-                      "grid), each between " + std::to_string(kMinResolution) + " and " +
-                      std::to_string(kMaxResolution));
+                      "grid), each between " +
+                      std::to_string(kMinResolution) + " and " + std::to_string(kMaxResolution));
   };
   auto parse_int = [&](const std::string& s) {
     if (s.empty() || s.size() > 6) throw bad();

@@ -26,8 +26,8 @@ NamedArray quad_patch(const DogMesh& mesh) {
   return a;
 }
 
-MeshArrays arrays(const DogMesh& mesh, const QuadTopology& topo, const std::vector<VertexType>& type,
-                  const std::vector<int>& partner) {
+MeshArrays arrays(const DogMesh& mesh, const QuadTopology& topo,
+                  const std::vector<VertexType>& type, const std::vector<int>& partner) {
   MeshArrays out;
   out.point.push_back(integral_array("vertex_type", type));
   out.point.push_back(integral_array("patch", mesh.vertex_patch));

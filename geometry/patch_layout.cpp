@@ -25,7 +25,9 @@ using Arrangement = CGAL::Arrangement_2<Traits>;
 using LocateResult = CGAL::Arr_point_location_result<Arrangement>::Type;
 using Poly = std::vector<Point>;
 
-Point exact(const Eigen::Vector2d& p) { return Point(p.x(), p.y()); }
+Point exact(const Eigen::Vector2d& p) {
+  return Point(p.x(), p.y());
+}
 Eigen::Vector2d approx(const Point& p) {
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
 }
@@ -49,11 +51,14 @@ int line_at(const std::vector<FT>& lines, const FT& v) {
 
 // Index i of the interval [lines[i], lines[i+1]) containing v, clamped to the grid.
 int interval_at(const std::vector<FT>& lines, const FT& v) {
-  const int i = static_cast<int>(std::upper_bound(lines.begin(), lines.end(), v) - lines.begin()) - 1;
+  const int i =
+      static_cast<int>(std::upper_bound(lines.begin(), lines.end(), v) - lines.begin()) - 1;
   return std::clamp(i, 0, static_cast<int>(lines.size()) - 2);
 }
 
-FT cross(const FT& ax, const FT& ay, const FT& bx, const FT& by) { return ax * by - ay * bx; }
+FT cross(const FT& ax, const FT& ay, const FT& bx, const FT& by) {
+  return ax * by - ay * bx;
+}
 
 class Grid {
  public:
@@ -94,7 +99,8 @@ class Grid {
     Poly out{exact(pts.front())};
     if (!on_line(out.front()))
       throw std::logic_error("crease end " + format_point(pts.front()) + " is not on a grid line");
-    for (size_t i = 0; i + 1 < pts.size(); ++i) append_segment(exact(pts[i]), exact(pts[i + 1]), out);
+    for (size_t i = 0; i + 1 < pts.size(); ++i)
+      append_segment(exact(pts[i]), exact(pts[i + 1]), out);
     return out;
   }
 
@@ -105,7 +111,8 @@ class Grid {
     for (size_t i = 0; i < pts.size(); ++i)
       append_segment(exact(pts[i]), exact(pts[(i + 1) % pts.size()]), out);
     if (out.size() > 1 && out.front() == out.back()) out.pop_back();
-    auto start = std::find_if(out.begin(), out.end(), [&](const Point& p) { return on_line(p, stride); });
+    auto start =
+        std::find_if(out.begin(), out.end(), [&](const Point& p) { return on_line(p, stride); });
     if (start == out.end()) return {};
     std::rotate(out.begin(), start, out.end());
     return out;
@@ -155,8 +162,8 @@ void split_convex(const Poly& poly, const Point& p, const Point& q, Poly& left, 
     if ((ou == CGAL::LEFT_TURN && ov == CGAL::RIGHT_TURN) ||
         (ou == CGAL::RIGHT_TURN && ov == CGAL::LEFT_TURN)) {
       const FT dx = q.x() - p.x(), dy = q.y() - p.y();
-      const FT t = cross(dx, dy, p.x() - u.x(), p.y() - u.y()) /
-                   cross(dx, dy, v.x() - u.x(), v.y() - u.y());
+      const FT t =
+          cross(dx, dy, p.x() - u.x(), p.y() - u.y()) / cross(dx, dy, v.x() - u.x(), v.y() - u.y());
       const Point x(u.x() + t * (v.x() - u.x()), u.y() + t * (v.y() - u.y()));
       left.push_back(x);
       right.push_back(x);
@@ -197,7 +204,7 @@ const void* key_of(const Handle& h) {
 }
 
 std::vector<Arrangement::Face_const_handle> locate_faces(const Arrangement& arr,
-                                                          const std::vector<Point>& queries) {
+                                                         const std::vector<Point>& queries) {
   std::vector<std::pair<Point, LocateResult>> results;
   CGAL::locate(arr, queries.begin(), queries.end(), std::back_inserter(results));
   std::map<Point, Arrangement::Face_const_handle> by_point;
@@ -239,7 +246,8 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
   for (size_t l = 0; l < rings.size(); ++l) {
     Poly loop = grid.snap_closed(rings[l], 1);
     if (loop.size() < 3 || !has_area(loop))
-      throw UsageError(pattern.source + ": at resolution " + std::to_string(nx) + "x" + std::to_string(ny) + " " +
+      throw UsageError(pattern.source + ": at resolution " + std::to_string(nx) + "x" +
+                       std::to_string(ny) + " " +
                        (l == 0 ? std::string("the sheet") : "hole " + std::to_string(l)) +
                        " falls inside a single grid cell; use a higher resolution");
     loops.push_back(std::move(loop));
@@ -247,9 +255,11 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
   std::vector<Poly> creases;
   for (size_t k = 0; k < pattern.creases.size(); ++k) {
     const Crease& c = pattern.creases[k];
-    Poly snapped = c.closed ? grid.snap_closed(c.points, closed_start_stride) : grid.snap_open(c.points);
+    Poly snapped =
+        c.closed ? grid.snap_closed(c.points, closed_start_stride) : grid.snap_open(c.points);
     if (snapped.size() < 2 || (c.closed && snapped.size() < 3))
-      throw UsageError(c.origin + ": at resolution " + std::to_string(nx) + "x" + std::to_string(ny) + " crease " + std::to_string(k) +
+      throw UsageError(c.origin + ": at resolution " + std::to_string(nx) + "x" +
+                       std::to_string(ny) + " crease " + std::to_string(k) +
                        " falls inside a single grid cell; use a higher resolution");
     creases.push_back(std::move(snapped));
   }
@@ -264,7 +274,8 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
 
   // Cut cells and blocked grid edges.
   std::vector<std::vector<std::pair<Point, Point>>> chords(static_cast<size_t>(ncx) * ncy);
-  std::vector<char> vblocked(static_cast<size_t>(nx) * ncy, 0), hblocked(static_cast<size_t>(ny) * ncx, 0);
+  std::vector<char> vblocked(static_cast<size_t>(nx) * ncy, 0),
+      hblocked(static_cast<size_t>(ny) * ncx, 0);
   for (const auto& s : segs) {
     const Point a = s.source(), b = s.target();
     if (a.x() == b.x() && line_at(grid.X, a.x()) >= 0) {
@@ -295,7 +306,8 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
       const int cell = j * ncx + i;
       if (!chords[cell].empty()) {
         std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
-                                  Point(grid.X[i + 1], grid.Y[j + 1]), Point(grid.X[i], grid.Y[j + 1])}};
+                                  Point(grid.X[i + 1], grid.Y[j + 1]),
+                                  Point(grid.X[i], grid.Y[j + 1])}};
         for (const auto& [p, q] : chords[cell]) {
           std::vector<Poly> next;
           for (const auto& piece : pieces) {
@@ -376,6 +388,21 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
     layout.cell_patches.insert(layout.cell_patches.end(), owners.begin(), owners.end());
     layout.cell_offsets.push_back(static_cast<int>(layout.cell_patches.size()));
   }
+
+  // Final patch order: by owned cells, lexicographically (see the header).
+  std::vector<std::vector<int>> cells_of(layout.patch_count);
+  for (int cell = 0; cell < ncx * ncy; ++cell)
+    for (int k = 0; k < layout.owner_count(cell); ++k)
+      cells_of[layout.owners(cell)[k]].push_back(cell);
+  std::vector<int> order(layout.patch_count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return cells_of[a] < cells_of[b]; });
+  std::vector<int> new_id(layout.patch_count);
+  for (int k = 0; k < layout.patch_count; ++k) new_id[order[k]] = k;
+  for (auto& [face, id] : patch_of_face)
+    if (id >= 0) id = new_id[id];
+  renumber_patches(layout, new_id);
 
   // Crease points: unique snapped points with the patches around them.
   std::map<Point, int> point_index;

@@ -9,9 +9,11 @@
 // cuts are flood-filled between blocking edges and located once per component; cut cells are
 // split by their chords into convex pieces, and each piece is located by an interior point.
 //
-// Patch order (deterministic, documented): patches are numbered in the order in which they first
-// appear when the cells are scanned row by row from the bottom-left (cell (i, j) is the j-th row,
-// i-th column), pieces of one cell by their interior point (lowest first, then leftmost).
+// Patch order (deterministic, documented): cells are numbered row by row from the bottom-left
+// (cell (i, j) has number j * (x_res - 1) + i); patches are sorted by the ascending list of the
+// numbers of their cells, compared lexicographically: first by their first cell, patches sharing
+// it by their second cell, and so on. The order depends only on which cells a patch owns, not on
+// the exact position of a crease inside a cell.
 #include <Eigen/Core>
 #include <vector>
 

@@ -68,11 +68,18 @@ std::vector<std::vector<int>> cluster_points(const std::vector<Vec2>& pts, doubl
     return i;
   };
   const double cell = tol > 0 ? tol : 1.0;
-  std::unordered_map<long long, std::vector<int>> buckets;
-  auto key = [&](long long bx, long long by) { return bx * 73856093LL ^ by * 19349663LL; };
+  std::unordered_map<unsigned long long, std::vector<int>> buckets;
+  auto key = [&](long long bx, long long by) {
+    return static_cast<unsigned long long>(bx) * 73856093ULL ^
+           static_cast<unsigned long long>(by) * 19349663ULL;
+  };
+  // Bucket indices are clamped: far-away points share a bucket and are compared directly.
+  auto bucket = [&](double v) {
+    return static_cast<long long>(std::clamp(std::floor(v / cell), -1e12, 1e12));
+  };
   for (int i = 0; i < n; ++i) {
-    const long long bx = static_cast<long long>(std::floor(pts[i].x() / cell));
-    const long long by = static_cast<long long>(std::floor(pts[i].y() / cell));
+    const long long bx = bucket(pts[i].x());
+    const long long by = bucket(pts[i].y());
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
         auto it = buckets.find(key(bx + dx, by + dy));
@@ -366,8 +373,7 @@ class Cleaner {
       if (c.closed) continue;
       if (sheet_side(c.points.front()) != 0) events.push_back({c.points.front(), k, 0.0, true});
       if (sheet_side(c.points.back()) != 0)
-        events.push_back(
-            {c.points.back(), k, static_cast<double>(c.points.size() - 1), true});
+        events.push_back({c.points.back(), k, static_cast<double>(c.points.size() - 1), true});
     }
     std::vector<Vec2> pts;
     for (const auto& e : events) pts.push_back(e.point);
@@ -382,7 +388,8 @@ class Cleaner {
       const auto& p = creases_[k].points;
       const int m = segment_count(p, creases_[k].closed);
       arc[k].assign(1, 0.0);
-      for (int i = 0; i < m; ++i) arc[k].push_back(arc[k].back() + (p[(i + 1) % p.size()] - p[i]).norm());
+      for (int i = 0; i < m; ++i)
+        arc[k].push_back(arc[k].back() + (p[(i + 1) % p.size()] - p[i]).norm());
     }
     auto arc_at = [&](int k, double g) {
       const int i = std::min(static_cast<int>(g), static_cast<int>(arc[k].size()) - 2);
@@ -416,8 +423,7 @@ class Cleaner {
     }
     creases_.erase(std::remove_if(creases_.begin(), creases_.end(),
                                   [](const Crease& c) {
-                                    return c.points.size() < 2 ||
-                                           (c.closed && c.points.size() < 3);
+                                    return c.points.size() < 2 || (c.closed && c.points.size() < 3);
                                   }),
                    creases_.end());
   }
@@ -450,8 +456,8 @@ class Cleaner {
               [](const auto& a, const auto& b) { return a.gmin < b.gmin; });
     for (size_t i = 1; i < reps.size(); ++i)
       if (reps[i].gmin < reps[i - 1].gmax)
-        throw InputError(name(k) + ": crossings near " + format_point(reps[i].junction) +
-                         " and " + format_point(reps[i - 1].junction) +
+        throw InputError(name(k) + ": crossings near " + format_point(reps[i].junction) + " and " +
+                         format_point(reps[i - 1].junction) +
                          " are too close to separate; move the creases apart");
     const int last = static_cast<int>(pts.size()) - 1;
     Polyline2 out;
@@ -552,8 +558,10 @@ class Cleaner {
           if (along <= limit) continue;
           const double cut = (limit - (along - len)) / len;  // fraction of the segment to skip
           if (cut > 0) {
-            if (e == 1) b = b + cut * (a - b);
-            else a = a + cut * (b - a);
+            if (e == 1)
+              b = b + cut * (a - b);
+            else
+              a = a + cut * (b - a);
           }
         }
         double s;
@@ -628,8 +636,10 @@ class Cleaner {
         double sum = 0;
         int movable = 0;
         for (size_t i = s; i < e; ++i) {
-          if (items[i].junction < 0) fixed_values.insert(items[i].value);
-          else sum += items[i].value, ++movable;
+          if (items[i].junction < 0)
+            fixed_values.insert(items[i].value);
+          else
+            sum += items[i].value, ++movable;
         }
         if (movable > 0 && e - s >= 2 && fixed_values.size() <= 1) {
           const double target = fixed_values.empty() ? sum / movable : *fixed_values.begin();
@@ -638,7 +648,8 @@ class Cleaner {
             Vec2& jpt = junctions_[items[i].junction];
             Vec2 moved = jpt;
             moved[axis] = target;
-            if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end()) continue;
+            if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end())
+              continue;
             log(std::string("junction ") + format_point(jpt) + " aligned in " +
                 (axis == 0 ? "x" : "y") + " to " + format_number(target));
             replace_vertex(jpt, moved);

@@ -31,8 +31,8 @@ struct CleaningOptions {
 
 struct CleanPattern {
   std::string source;
-  Sheet sheet;                   ///< crease ends on the boundary are boundary vertices
-  std::vector<Crease> creases;   ///< cleaned creases (a crease cut by a hole becomes several)
+  Sheet sheet;                  ///< crease ends on the boundary are boundary vertices
+  std::vector<Crease> creases;  ///< cleaned creases (a crease cut by a hole becomes several)
   std::vector<Eigen::Vector2d> junctions;  ///< interior points where creases meet or cross
   /// Points that must be grid vertices: junctions, and crease ends on parts of the boundary that
   /// are not on the sheet's bounding box (those lie on a grid line already).

@@ -10,7 +10,9 @@
 namespace sdog {
 namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-K::Point_2 cg(const Eigen::Vector2d& p) { return K::Point_2(p.x(), p.y()); }
+K::Point_2 cg(const Eigen::Vector2d& p) {
+  return K::Point_2(p.x(), p.y());
+}
 }  // namespace
 
 double signed_area(const Polyline2& polygon) {
@@ -84,65 +86,73 @@ std::vector<SegmentContact> find_segment_contacts(const std::vector<const Polyli
     Eigen::Vector2d a, b;
   };
   std::vector<Seg> segs;
-  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  std::vector<double> lengths;
   for (int k = 0; k < static_cast<int>(polylines.size()); ++k) {
     const Polyline2& pts = *polylines[k];
     const int m = segment_count(pts, closed[k]);
     for (int i = 0; i < m; ++i) {
-      Seg s{k, i, pts[i], pts[(i + 1) % pts.size()]};
-      lo = lo.cwiseMin(s.a).cwiseMin(s.b);
-      hi = hi.cwiseMax(s.a).cwiseMax(s.b);
-      segs.push_back(s);
+      segs.push_back({k, i, pts[i], pts[(i + 1) % pts.size()]});
+      lengths.push_back((segs.back().b - segs.back().a).norm());
     }
   }
   std::vector<SegmentContact> out;
   if (segs.size() < 2) return out;
-  // Bucket size: about two buckets per segment along the average extent.
-  const double extent = std::max((hi - lo).maxCoeff(), 1e-300);
-  const int buckets = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(segs.size()))), 1,
-                                 1024);
-  const double cell = extent / buckets;
-  auto bucket_of = [&](double v, double origin) {
-    return std::clamp(static_cast<int>((v - origin) / cell), 0, buckets - 1);
+  // Buckets twice the median segment length (hashed, so empty space costs nothing); bucket
+  // indices are clamped, so absurdly far coordinates share a bucket and are compared directly.
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double median = lengths[lengths.size() / 2];
+  const double cell = std::isfinite(median) && median > 0 ? 2 * median : 1.0;
+  auto bucket_of = [&](double v) {
+    const double b = std::floor(v / cell);
+    return std::isfinite(b) ? static_cast<long long>(std::clamp(b, -1e9, 1e9)) : 0LL;
   };
+  // Segments spanning many buckets (rare: long straight pieces) are tested against all others.
+  constexpr long long kMaxBucketsPerSegment = 256;
   std::unordered_map<long long, std::vector<int>> grid;
+  std::vector<int> large;
   for (int s = 0; s < static_cast<int>(segs.size()); ++s) {
     const auto& g = segs[s];
-    const int x0 = bucket_of(std::min(g.a.x(), g.b.x()), lo.x());
-    const int x1 = bucket_of(std::max(g.a.x(), g.b.x()), lo.x());
-    const int y0 = bucket_of(std::min(g.a.y(), g.b.y()), lo.y());
-    const int y1 = bucket_of(std::max(g.a.y(), g.b.y()), lo.y());
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) grid[static_cast<long long>(y) * buckets + x].push_back(s);
+    const long long x0 = bucket_of(std::min(g.a.x(), g.b.x()));
+    const long long x1 = bucket_of(std::max(g.a.x(), g.b.x()));
+    const long long y0 = bucket_of(std::min(g.a.y(), g.b.y()));
+    const long long y1 = bucket_of(std::max(g.a.y(), g.b.y()));
+    if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxBucketsPerSegment) {
+      large.push_back(s);
+      continue;
+    }
+    for (long long y = y0; y <= y1; ++y)
+      for (long long x = x0; x <= x1; ++x) grid[x * 2000000011LL + y].push_back(s);
   }
   std::set<std::pair<int, int>> seen;
-  for (const auto& [key, list] : grid) {
-    (void)key;
-    for (size_t i = 0; i < list.size(); ++i) {
-      for (size_t j = i + 1; j < list.size(); ++j) {
-        int s1 = list[i], s2 = list[j];
-        if (s1 > s2) std::swap(s1, s2);
-        if (!seen.insert({s1, s2}).second) continue;
-        const Seg& g1 = segs[s1];
-        const Seg& g2 = segs[s2];
-        if (!segments_intersect(g1.a, g1.b, g2.a, g2.b)) continue;
-        if (g1.poly == g2.poly) {
-          const int n = segment_count(*polylines[g1.poly], closed[g1.poly]);
-          const int d = std::abs(g1.index - g2.index);
-          const bool consecutive = d == 1 || (closed[g1.poly] && d == n - 1 && n > 2);
-          if (consecutive) {
-            // They share a vertex; report only a fold-back overlap.
-            const Eigen::Vector2d shared = (g1.b == g2.a) ? g1.b : g1.a;
-            const Eigen::Vector2d p = (g1.b == g2.a) ? g1.a : g1.b;
-            const Eigen::Vector2d q = (g1.b == g2.a) ? g2.b : g2.a;
-            const bool overlap = orientation(p, shared, q) == 0 && (p - shared).dot(q - shared) > 0;
-            if (!overlap) continue;
-          }
-        }
-        out.push_back({g1.poly, g1.index, g2.poly, g2.index});
+  auto test_pair = [&](int s1, int s2) {
+    if (s1 == s2) return;
+    if (s1 > s2) std::swap(s1, s2);
+    if (!seen.insert({s1, s2}).second) return;
+    const Seg& g1 = segs[s1];
+    const Seg& g2 = segs[s2];
+    if (!segments_intersect(g1.a, g1.b, g2.a, g2.b)) return;
+    if (g1.poly == g2.poly) {
+      const int n = segment_count(*polylines[g1.poly], closed[g1.poly]);
+      const int d = std::abs(g1.index - g2.index);
+      const bool consecutive = d == 1 || (closed[g1.poly] && d == n - 1 && n > 2);
+      if (consecutive) {
+        // They share a vertex; report only a fold-back overlap.
+        const Eigen::Vector2d shared = (g1.b == g2.a) ? g1.b : g1.a;
+        const Eigen::Vector2d p = (g1.b == g2.a) ? g1.a : g1.b;
+        const Eigen::Vector2d q = (g1.b == g2.a) ? g2.b : g2.a;
+        const bool overlap = orientation(p, shared, q) == 0 && (p - shared).dot(q - shared) > 0;
+        if (!overlap) return;
       }
     }
+    out.push_back({g1.poly, g1.index, g2.poly, g2.index});
+  };
+  for (const auto& [key, list] : grid) {
+    (void)key;
+    for (size_t i = 0; i < list.size(); ++i)
+      for (size_t j = i + 1; j < list.size(); ++j) test_pair(list[i], list[j]);
   }
+  for (int s : large)
+    for (int t = 0; t < static_cast<int>(segs.size()); ++t) test_pair(s, t);
   std::sort(out.begin(), out.end(), [](const SegmentContact& x, const SegmentContact& y) {
     return std::tie(x.a, x.sa, x.b, x.sb) < std::tie(y.a, y.sa, y.b, y.sb);
   });

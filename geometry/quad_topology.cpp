@@ -7,10 +7,14 @@ namespace sdog {
 
 const char* to_string(VertexClass c) {
   switch (c) {
-    case VertexClass::Star: return "star";
-    case VertexClass::Bnd3: return "bnd3";
-    case VertexClass::Bnd2: return "bnd2";
-    case VertexClass::Bnd4: return "bnd4";
+    case VertexClass::Star:
+      return "star";
+    case VertexClass::Bnd3:
+      return "bnd3";
+    case VertexClass::Bnd2:
+      return "bnd2";
+    case VertexClass::Bnd4:
+      return "bnd4";
   }
   return "?";
 }
@@ -29,7 +33,10 @@ QuadTopology quad_topology(const DogMesh& mesh) {
       const int a = mesh.F(q, k), b = mesh.F(q, (k + 1) % 4);
       ++topo.quads_around[a];
       const Eigen::Vector2i d = mesh.grid[b] - mesh.grid[a];
-      const int dir_ab = d.x() > 0 ? kXForward : d.x() < 0 ? kXBackward : d.y() > 0 ? kYForward : kYBackward;
+      const int dir_ab = d.x() > 0   ? kXForward
+                         : d.x() < 0 ? kXBackward
+                         : d.y() > 0 ? kYForward
+                                     : kYBackward;
       topo.neighbors[a][dir_ab] = b;
       topo.neighbors[b][(dir_ab + 2) % 4] = a;
       topo.edges.push_back({std::min(a, b), std::max(a, b)});
@@ -39,13 +46,19 @@ QuadTopology quad_topology(const DogMesh& mesh) {
   topo.edges.erase(std::unique(topo.edges.begin(), topo.edges.end()), topo.edges.end());
   topo.vertex_class.resize(n);
   for (int v = 0; v < n; ++v) {
-    const int nb = static_cast<int>(std::count_if(topo.neighbors[v].begin(), topo.neighbors[v].end(),
-                                                  [](int u) { return u >= 0; }));
-    if (topo.quads_around[v] == 4) topo.vertex_class[v] = VertexClass::Star;
-    else if (nb == 4) topo.vertex_class[v] = VertexClass::Bnd4;
-    else if (nb == 3) topo.vertex_class[v] = VertexClass::Bnd3;
-    else if (nb == 2) topo.vertex_class[v] = VertexClass::Bnd2;
-    else throw std::logic_error("vertex " + std::to_string(v) + " has " + std::to_string(nb) + " neighbours");
+    const int nb = static_cast<int>(std::count_if(
+        topo.neighbors[v].begin(), topo.neighbors[v].end(), [](int u) { return u >= 0; }));
+    if (topo.quads_around[v] == 4)
+      topo.vertex_class[v] = VertexClass::Star;
+    else if (nb == 4)
+      topo.vertex_class[v] = VertexClass::Bnd4;
+    else if (nb == 3)
+      topo.vertex_class[v] = VertexClass::Bnd3;
+    else if (nb == 2)
+      topo.vertex_class[v] = VertexClass::Bnd2;
+    else
+      throw std::logic_error("vertex " + std::to_string(v) + " has " + std::to_string(nb) +
+                             " neighbours");
   }
   return topo;
 }

@@ -23,7 +23,7 @@ struct QuadTopology {
   std::vector<std::array<int, 4>> neighbors;  ///< per vertex, by Direction; -1 when no quad edge
   std::vector<int> quads_around;              ///< number of incident quads
   std::vector<VertexClass> vertex_class;
-  std::vector<std::array<int, 2>> edges;      ///< unique quad edges, (smaller, larger) index
+  std::vector<std::array<int, 2>> edges;  ///< unique quad edges, (smaller, larger) index
   int count(VertexClass c) const;
 };
 

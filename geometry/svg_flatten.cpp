@@ -9,10 +9,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+bool finite(const Point& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y());
+}
 
 // a/2 + b/2 cannot overflow where (a + b)/2 can, and is as accurate.
-Point mid(const Point& a, const Point& b) { return 0.5 * a + 0.5 * b; }
+Point mid(const Point& a, const Point& b) {
+  return 0.5 * a + 0.5 * b;
+}
 
 double distance_to_segment(const Point& p, const Point& a, const Point& b) {
   const Point ab = b - a;
@@ -119,7 +123,7 @@ bool arc_center(const Point& p0, double rx, double ry, double rotation_deg, bool
   const double X = x1 / rx, Y = y1 / ry;
   const double lambda = X * X + Y * Y;
   if (!(lambda > 0)) return false;  // the chord underflows against the radii: a straight line
-  double coefficient = 0;  // Λ ≥ 1: the centre is the chord's midpoint (F.6.6)
+  double coefficient = 0;           // Λ ≥ 1: the centre is the chord's midpoint (F.6.6)
   if (lambda > 1) {
     const double scaled_rx = std::hypot(x1, y1 * (rx / ry));
     const double scaled_ry = std::hypot(x1 * (ry / rx), y1);
@@ -173,14 +177,15 @@ void flatten_arc(const Point& p0, double rx, double ry, double rotation_deg, boo
   const std::size_t n =
       arc_segment_count(std::max(arc.rx, arc.ry), arc.delta_theta, tol, out.max_points());
   for (std::size_t i = 1; i < n; ++i)
-    out.push(arc.at(arc.theta1 + arc.delta_theta * (static_cast<double>(i) / static_cast<double>(n))));
+    out.push(
+        arc.at(arc.theta1 + arc.delta_theta * (static_cast<double>(i) / static_cast<double>(n))));
   out.push(p1);
 }
 
 void flatten_ellipse(const Point& center, double rx, double ry, double tol, PointSink& out) {
   if (!finite(center) || !std::isfinite(rx) || !std::isfinite(ry)) not_finite();
-  std::size_t n = arc_segment_count(std::max(std::abs(rx), std::abs(ry)), 2 * kPi, tol,
-                                    out.max_points());
+  std::size_t n =
+      arc_segment_count(std::max(std::abs(rx), std::abs(ry)), 2 * kPi, tol, out.max_points());
   n = std::max<std::size_t>(n, 4);
   for (std::size_t i = 0; i < n; ++i) {
     double c, s;

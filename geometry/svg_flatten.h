@@ -14,8 +14,8 @@
 //   (cx', cy') = ±√((rx²ry² - rx²y1'² - ry²x1'²) / (rx²y1'² + ry²x1'²)) · (rx y1'/ry, -ry x1'/rx)
 //                (+ if large_arc != sweep)
 //   c = R(φ) · (cx', cy') + (p0 + p1) / 2
-//   θ1 = ∠((1,0), u),  Δθ = ∠(u, v),  u = ((x1'-cx')/rx, (y1'-cy')/ry), v = ((-x1'-cx')/rx, (-y1'-cy')/ry)
-//   with Δθ < 0 if !sweep and Δθ > 0 if sweep (adding/subtracting 2π).
+//   θ1 = ∠((1,0), u),  Δθ = ∠(u, v),  u = ((x1'-cx')/rx, (y1'-cy')/ry), v = ((-x1'-cx')/rx,
+//   (-y1'-cy')/ry) with Δθ < 0 if !sweep and Δθ > 0 if sweep (adding/subtracting 2π).
 // Points are c + R(φ) · (rx cos θ, ry sin θ). A chord spanning Δ of the parameter deviates by
 // the sagitta s = r (1 - cos(Δ/2)) = 2 r sin²(Δ/4) on a circle of radius r; the ellipse is a
 // linear image of the unit circle with norm max(rx, ry), so Δ ≤ 4 asin(√(tol / (2 max(rx, ry))))

@@ -8,9 +8,13 @@ namespace sdog::svg {
 
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+char lower(char c) {
+  return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+}
 
 bool starts_with_ci(std::string_view text, std::size_t pos, std::string_view word) {
   if (text.size() - pos < word.size()) return false;
@@ -38,8 +42,8 @@ bool overflows(std::string_view mantissa, long long exponent) {
   if (point == std::string_view::npos) point = mantissa.size();
   for (std::size_t i = 0; i < mantissa.size(); ++i) {
     if (mantissa[i] == '.' || mantissa[i] == '0') continue;
-    const long long k = i < point ? static_cast<long long>(point - i - 1)
-                                  : -static_cast<long long>(i - point);
+    const long long k =
+        i < point ? static_cast<long long>(point - i - 1) : -static_cast<long long>(i - point);
     return k + exponent > 0;
   }
   return false;
@@ -47,7 +51,9 @@ bool overflows(std::string_view mantissa, long long exponent) {
 
 }  // namespace
 
-bool is_wsp(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f'; }
+bool is_wsp(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f';
+}
 
 void skip_wsp(std::string_view text, std::size_t& pos) {
   while (pos < text.size() && is_wsp(text[pos])) ++pos;
@@ -80,8 +86,8 @@ NumberScan scan_number(std::string_view text, std::size_t& pos, double& value) {
     // "5." is a number, "." alone is not; a second '.' starts the next number ("1.5.5").
     if (int_digits || j > i + 1) i = j;
   }
-  if (i == mantissa_begin) return spells_non_finite(text, pos) ? NumberScan::not_finite
-                                                                : NumberScan::absent;
+  if (i == mantissa_begin)
+    return spells_non_finite(text, pos) ? NumberScan::not_finite : NumberScan::absent;
   const std::size_t mantissa_end = i;
   long long exponent = 0;
   if (i < n && (text[i] == 'e' || text[i] == 'E')) {
@@ -121,7 +127,8 @@ std::string position_note(std::string_view text, std::size_t pos) {
   constexpr std::size_t kBefore = 12, kLength = 28;
   std::size_t begin = pos > kBefore ? pos - kBefore : 0;
   // Never cut a UTF-8 sequence in the middle.
-  while (begin > 0 && begin < text.size() && (static_cast<unsigned char>(text[begin]) & 0xC0) == 0x80)
+  while (begin > 0 && begin < text.size() &&
+         (static_cast<unsigned char>(text[begin]) & 0xC0) == 0x80)
     --begin;
   std::size_t end = std::min(text.size(), begin + kLength);
   while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) ++end;
@@ -164,7 +171,8 @@ std::vector<Point> parse_points(std::string_view text) {
                        "); expected x,y pairs");
   std::vector<Point> points;
   points.reserve(numbers.size() / 2);
-  for (std::size_t i = 0; i < numbers.size(); i += 2) points.emplace_back(numbers[i], numbers[i + 1]);
+  for (std::size_t i = 0; i < numbers.size(); i += 2)
+    points.emplace_back(numbers[i], numbers[i + 1]);
   return points;
 }
 
@@ -172,9 +180,26 @@ namespace {
 
 bool is_command(char c) {
   switch (c) {
-    case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v':
-    case 'C': case 'c': case 'S': case 's': case 'Q': case 'q': case 'T': case 't':
-    case 'A': case 'a': case 'Z': case 'z':
+    case 'M':
+    case 'm':
+    case 'L':
+    case 'l':
+    case 'H':
+    case 'h':
+    case 'V':
+    case 'v':
+    case 'C':
+    case 'c':
+    case 'S':
+    case 's':
+    case 'Q':
+    case 'q':
+    case 'T':
+    case 't':
+    case 'A':
+    case 'a':
+    case 'Z':
+    case 'z':
       return true;
     default:
       return false;
@@ -211,7 +236,8 @@ class PathParser {
         if (c == ',') {
           ++pos_;
           skip_wsp(d_, pos_);
-          if (pos_ == d_.size() || !may_start_number(d_, pos_)) fail(expected_number(command), pos_);
+          if (pos_ == d_.size() || !may_start_number(d_, pos_))
+            fail(expected_number(command), pos_);
         } else if (!may_start_number(d_, pos_)) {
           fail(unexpected_character(), pos_);
         }
@@ -274,7 +300,8 @@ class PathParser {
 
   Point checked(const Point& p) const {
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
-      fail("coordinate is not a finite number (the sum of relative offsets overflows)", command_pos_);
+      fail("coordinate is not a finite number (the sum of relative offsets overflows)",
+           command_pos_);
     return p;
   }
 
@@ -374,8 +401,8 @@ class PathParser {
       case 'T': {
         PathSegment s;
         s.kind = SegmentKind::quadratic;
-        s.c1 = last_was_quadratic_ ? checked(Point(current_ + (current_ - last_control_)))
-                                   : current_;
+        s.c1 =
+            last_was_quadratic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
         s.to = absolute(pair(command, true));
         add(s);
         last_control_ = s.c1;
@@ -423,6 +450,8 @@ class PathParser {
 
 }  // namespace
 
-std::vector<PathSubpath> parse_path_data(std::string_view d) { return PathParser(d).parse(); }
+std::vector<PathSubpath> parse_path_data(std::string_view d) {
+  return PathParser(d).parse();
+}
 
 }  // namespace sdog::svg

@@ -1,5 +1,6 @@
 #include "geometry/svg_reader.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -7,7 +8,6 @@
 #include <cstring>
 #include <map>
 #include <optional>
-#include <Eigen/Geometry>
 #include <pugixml.hpp>
 
 #include "geometry/errors.h"
@@ -70,7 +70,9 @@ std::string one_line(std::string message) {
   return message;
 }
 
-bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+bool finite(const Point& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y());
+}
 
 /// A dash array whose values are all zero renders solid (SVG 1.1 11.4); anything else that is
 /// not "none" counts as dashed, even if it cannot be parsed.
@@ -279,8 +281,8 @@ class Reader {
       if (name == "use") fail(child, "<use> is not supported; ungroup/expand it in your editor");
       if (container) {
         if (depth >= kMaxNesting)
-          fail(child, "elements are nested more than " + std::to_string(kMaxNesting) +
-                          " levels deep");
+          fail(child,
+               "elements are nested more than " + std::to_string(kMaxNesting) + " levels deep");
         if (name == "svg") enter_nested_svg(child, style);
         walk(child, style, depth + 1);
       } else {
@@ -309,7 +311,8 @@ class Reader {
       return guarded(node, "color", [&] { return svg::parse_color(*style.color); });
     };
     if (style.stroke) {
-      const svg::Paint stroke = guarded(node, "stroke", [&] { return svg::parse_paint(*style.stroke); });
+      const svg::Paint stroke =
+          guarded(node, "stroke", [&] { return svg::parse_paint(*style.stroke); });
       if (stroke.kind == svg::Paint::Kind::color) return stroke.color;
       if (stroke.kind == svg::Paint::Kind::current_color) return color_property();
     }
@@ -337,7 +340,8 @@ class Reader {
       shape.subpaths = guarded(node, "path data", [&] { return svg::parse_path_data(d); });
     } else if (name == "polyline" || name == "polygon") {
       const char* text = node.attribute("points").value();
-      const std::vector<Point> points = guarded(node, "points", [&] { return svg::parse_points(text); });
+      const std::vector<Point> points =
+          guarded(node, "points", [&] { return svg::parse_points(text); });
       add_line_subpath(shape.subpaths, points, name == "polygon");
     } else if (name == "line") {
       add_line_subpath(shape.subpaths,
@@ -382,8 +386,8 @@ class Reader {
         if (finite(q)) box.extend(q);
       };
       if (shape.is_ellipse) {
-        for (const Point& offset : {Point(shape.rx, 0), Point(-shape.rx, 0), Point(0, shape.ry),
-                                    Point(0, -shape.ry)})
+        for (const Point& offset :
+             {Point(shape.rx, 0), Point(-shape.rx, 0), Point(0, shape.ry), Point(0, -shape.ry)})
           add(shape.center + offset);
         continue;
       }

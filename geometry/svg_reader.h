@@ -65,20 +65,20 @@ struct Box2 {
 
 struct SvgCurve {
   std::vector<Eigen::Vector2d> points;  ///< flattened, y up; consecutive duplicates removed
-  bool closed = false;     ///< closed by Z, or a polygon/rect/circle/ellipse (last != first)
-  std::string color;       ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
+  bool closed = false;       ///< closed by Z, or a polygon/rect/circle/ellipse (last != first)
+  std::string color;         ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
   bool is_boundary = false;  ///< colour is exactly black (#000000)
-  bool dashed = false;     ///< stroke-dasharray set and not "none"
-  std::string element;     ///< tag name, e.g. "path"
-  std::string id;          ///< the element's id attribute, or empty
-  int line = 0;            ///< line of the element in the file (1-based), 0 if unknown
-  int subpath = 0;         ///< index of the subpath inside a <path> (each M starts a new one)
+  bool dashed = false;       ///< stroke-dasharray set and not "none"
+  std::string element;       ///< tag name, e.g. "path"
+  std::string id;            ///< the element's id attribute, or empty
+  int line = 0;              ///< line of the element in the file (1-based), 0 if unknown
+  int subpath = 0;           ///< index of the subpath inside a <path> (each M starts a new one)
 };
 
 struct SvgDrawing {
-  std::string source;   ///< file name used in messages
+  std::string source;  ///< file name used in messages
   bool has_viewbox = false;
-  Box2 viewbox;         ///< in y-up coordinates (see above)
+  Box2 viewbox;                  ///< in y-up coordinates (see above)
   std::vector<SvgCurve> curves;  ///< document order
 };
 

@@ -61,7 +61,8 @@ class Stylesheet {
   void add(std::string_view css);
   /// Overwrites `properties` with the declarations of the rules matching any class in
   /// `class_attribute` (white-space separated), in stylesheet order.
-  void apply(std::string_view class_attribute, std::map<std::string, std::string>& properties) const;
+  void apply(std::string_view class_attribute,
+             std::map<std::string, std::string>& properties) const;
   bool empty() const { return rules_.empty(); }
 
  private:

@@ -2,16 +2,18 @@
 // Paths and helpers shared by the test executables.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 #include <string>
 #include <vector>
 
 namespace sdog::test {
 
-inline std::string dataset(const std::string& name) { return std::string(SDOG_DATASETS_DIR) + "/" + name; }
+inline std::string dataset(const std::string& name) {
+  return std::string(SDOG_DATASETS_DIR) + "/" + name;
+}
 
 /// The project's own crease patterns (datasets/*.svg), sorted.
 inline std::vector<std::string> all_datasets() {
@@ -38,21 +40,23 @@ inline std::vector<std::string> all_reference_patterns() {
   return out;
 }
 
-#define SDOG_REQUIRE_SHARED()                                                               \
-  do {                                                                                      \
-    if (::sdog::test::reference_patterns_dir().empty())                                     \
+#define SDOG_REQUIRE_SHARED()                                                             \
+  do {                                                                                    \
+    if (::sdog::test::reference_patterns_dir().empty())                                   \
       GTEST_SKIP() << "../shared/reference/patterns is absent: reference checks skipped"; \
   } while (0)
 
 /// A fresh empty temporary directory for one test.
 inline std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("sdog_test_" + name + "_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("sdog_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
 }
 
-inline std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
+inline std::string write_file(const std::string& dir, const std::string& name,
+                              const std::string& text) {
   const std::string path = dir + "/" + name;
   std::ofstream(path) << text;
   return path;

@@ -13,7 +13,8 @@ namespace {
 const char* kCrease = R"(<path d="M 0 50 C 30 40, 60 60, 100 50" stroke="red" fill="none"/>)";
 
 std::string svg(const std::string& body, const std::string& viewbox = "0 0 100 100") {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + viewbox + "\">\n" + body + "\n</svg>\n";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + viewbox + "\">\n" + body +
+         "\n</svg>\n";
 }
 
 struct BadCase {
@@ -34,7 +35,8 @@ TEST_P(BadInput, FailsWithOneClearLineAndNoOutput) {
   EXPECT_EQ(r.code, c.code) << r.err;
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
-  for (const auto& m : c.mentions) EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in: " << r.err;
+  for (const auto& m : c.mentions)
+    EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in: " << r.err;
   EXPECT_FALSE(std::filesystem::exists(out)) << "partial output left in " << out;
 }
 
@@ -42,21 +44,52 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, BadInput,
     ::testing::Values(
         BadCase{"not_xml", "this is not XML <<<", "21x21", 1, {"not_xml.svg", "XML"}},
-        BadCase{"no_svg_root", "<html><body/></html>", "21x21", 1, {"no_svg_root.svg", "<html>", "<svg>"}},
-        BadCase{"path_syntax", svg("<path id=\"c1\" d=\"M 0 50 L 100\" stroke=\"red\"/>"), "21x21", 1,
+        BadCase{"no_svg_root",
+                "<html><body/></html>",
+                "21x21",
+                1,
+                {"no_svg_root.svg", "<html>", "<svg>"}},
+        BadCase{"path_syntax",
+                svg("<path id=\"c1\" d=\"M 0 50 L 100\" stroke=\"red\"/>"),
+                "21x21",
+                1,
                 {"path_syntax.svg:2", "<path id=\"c1\">", "character"}},
-        BadCase{"path_letter", svg("<path d=\"M 0 50 K 100 50\" stroke=\"red\"/>"), "21x21", 1,
+        BadCase{"path_letter",
+                svg("<path d=\"M 0 50 K 100 50\" stroke=\"red\"/>"),
+                "21x21",
+                1,
                 {"path_letter.svg:2", "<path>", "'K'"}},
-        BadCase{"nan", svg("<path d=\"M nan 50 L 100 50\" stroke=\"red\"/>"), "21x21", 1, {"nan.svg:2", "<path>"}},
-        BadCase{"infinite", svg("<line x1=\"0\" y1=\"50\" x2=\"1e999\" y2=\"50\" stroke=\"red\"/>"), "21x21", 1,
+        BadCase{"nan",
+                svg("<path d=\"M nan 50 L 100 50\" stroke=\"red\"/>"),
+                "21x21",
+                1,
+                {"nan.svg:2", "<path>"}},
+        BadCase{"infinite",
+                svg("<line x1=\"0\" y1=\"50\" x2=\"1e999\" y2=\"50\" stroke=\"red\"/>"),
+                "21x21",
+                1,
                 {"infinite.svg:2", "<line>", "finite"}},
-        BadCase{"crease_inside", svg("<path d=\"M 0 50 C 20 40, 40 60, 50 50\" stroke=\"red\" fill=\"none\"/>"),
-                "21x21", 1, {"crease_inside.svg:2", "crease 0", "ends at (50, -50)", "boundary"}},
-        BadCase{"bowtie", svg("<polygon points=\"0,0 100,100 100,0 0,100\" stroke=\"black\" fill=\"none\"/>"),
-                "21x21", 1, {"bowtie.svg:2", "<polygon>", "crosses itself"}},
+        BadCase{"far_away",
+                svg("<path d=\"M 0 50 L 50 1e60 L 100 50\" stroke=\"red\"/>"),
+                "21x21",
+                1,
+                {"far_away.svg:2", "<path>", "sheet sizes away"}},
+        BadCase{"crease_inside",
+                svg("<path d=\"M 0 50 C 20 40, 40 60, 50 50\" stroke=\"red\" fill=\"none\"/>"),
+                "21x21",
+                1,
+                {"crease_inside.svg:2", "crease 0", "ends at (50, -50)", "boundary"}},
+        BadCase{"bowtie",
+                svg("<polygon points=\"0,0 100,100 100,0 0,100\" stroke=\"black\" fill=\"none\"/>"),
+                "21x21",
+                1,
+                {"bowtie.svg:2", "<polygon>", "crosses itself"}},
         BadCase{"zero_area", svg(kCrease, "0 0 0 100"), "21x21", 1, {"zero_area.svg", "zero area"}},
-        BadCase{"open_boundary", svg("<polyline points=\"0,0 100,0 100,100\" stroke=\"#000\" fill=\"none\"/>"),
-                "21x21", 1, {"open_boundary.svg:2", "<polyline>", "not closed"}},
+        BadCase{"open_boundary",
+                svg("<polyline points=\"0,0 100,0 100,100\" stroke=\"#000\" fill=\"none\"/>"),
+                "21x21",
+                1,
+                {"open_boundary.svg:2", "<polyline>", "not closed"}},
         BadCase{"res_too_low", svg(kCrease), "2x21", 2, {"2x21", "at least 3"}},
         BadCase{"res_even", svg(kCrease), "30x21", 2, {"30x21", "odd", "31x21"}},
         BadCase{"res_too_high", svg(kCrease), "2003x21", 2, {"2003x21", "2001"}},
@@ -81,7 +114,8 @@ TEST(BadInputFiles, DirectoryInsteadOfFile) {
 TEST(BadInputFiles, UnwritableOutputDirectory) {
   const std::string dir = test::temp_dir("unwritable");
   const std::string blocker = test::write_file(dir, "file", "x");
-  const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 21x21 --out " + blocker + "/sub");
+  const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 21x21 --out " +
+                                blocker + "/sub");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(test::count_lines(r.err), 1);
   EXPECT_NE(r.err.find(blocker), std::string::npos) << r.err;

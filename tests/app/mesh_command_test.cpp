@@ -11,10 +11,12 @@ namespace sdog {
 namespace {
 
 TEST(MeshCommand, JsonMatchesTheLibrary) {
-  const auto r = test::run_sdog("mesh " + test::dataset("crossing_creases.svg") + " --res 21x21 --json");
+  const auto r =
+      test::run_sdog("mesh " + test::dataset("crossing_creases.svg") + " --res 21x21 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {21, 21});
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {21, 21});
   EXPECT_EQ(j["fine"]["vertices"], m.fine.vertex_count());
   EXPECT_EQ(j["fine"]["quads"], m.fine.quad_count());
   EXPECT_EQ(j["fine"]["patches"], 4);
@@ -43,7 +45,8 @@ TEST(MeshCommand, TextSummaryNamesEveryCount) {
 
 TEST(MeshCommand, OutWritesTheFourVtkFiles) {
   const std::string dir = test::temp_dir("mesh_out") + "/nested/out";
-  const auto r = test::run_sdog("mesh " + test::dataset("four_corner_arcs.svg") + " --res 21x21 --out " + dir);
+  const auto r =
+      test::run_sdog("mesh " + test::dataset("four_corner_arcs.svg") + " --res 21x21 --out " + dir);
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"fine.vtu", "coarse.vtu", "creases.vtp", "pattern.vtp"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
@@ -55,7 +58,8 @@ TEST(MeshCommand, OutWritesTheFourVtkFiles) {
 }
 
 TEST(MeshCommand, FineOnlyAcceptsEvenResolutions) {
-  const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 30x20 --fine-only --json");
+  const auto r =
+      test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 30x20 --fine-only --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j.contains("coarse"));
@@ -68,7 +72,8 @@ TEST(MeshCommand, HelpExplainsEveryOption) {
   EXPECT_NE(top.out.find("mesh"), std::string::npos);
   const auto r = test::run_sdog("mesh --help");
   EXPECT_EQ(r.code, 0);
-  for (const char* opt : {"PATTERN", "--res", "--out", "--json", "--fine-only", "--flatness", "--merge-tol", "--snap-tol"})
+  for (const char* opt : {"PATTERN", "--res", "--out", "--json", "--fine-only", "--flatness",
+                          "--merge-tol", "--snap-tol"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 

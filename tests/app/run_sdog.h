@@ -27,7 +27,8 @@ inline std::string slurp(const std::string& path) {
 inline Run run_sdog(const std::string& args) {
   static int counter = 0;
   const std::string dir = temp_dir("run" + std::to_string(counter++));
-  const std::string cmd = std::string("'") + SDOG_EXE + "' " + args + " >" + dir + "/out 2>" + dir + "/err";
+  const std::string cmd =
+      std::string("'") + SDOG_EXE + "' " + args + " >" + dir + "/out 2>" + dir + "/err";
   const int status = std::system(cmd.c_str());
   Run r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -12,7 +12,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const sdog::CreasePattern pattern = sdog::crease_pattern_from_svg(sdog::parse_svg(text, "fuzz.svg"));
+    const sdog::CreasePattern pattern =
+        sdog::crease_pattern_from_svg(sdog::parse_svg(text, "fuzz.svg"));
     const sdog::CleanPattern clean = sdog::clean_pattern(pattern);
     sdog::count_pattern_patches(clean);
     // Meshing at a small resolution exercises grid snapping and the exact patch layout.

@@ -2,8 +2,8 @@
 // against an independent rule for straight creases.
 #include <gtest/gtest.h>
 
-#include <random>
 #include <map>
+#include <random>
 #include <set>
 
 #include "geometry/dog_model.h"
@@ -60,7 +60,8 @@ TEST(DogMesh, DiagonalThroughGridVerticesCutsOnlyTheDiagonalCells) {
 
 TEST(DogMesh, CrossingCreasesMeetAtAPinnedGridVertexOfFourPatches) {
   // Two straight creases crossing at (37, 61): the junction becomes a grid vertex.
-  const DogModel m = build_dog_model(rectangle_pattern(100, 100, {{{0, 61}, {100, 61}}, {{37, 0}, {37, 100}}}), {11, 11});
+  const DogModel m = build_dog_model(
+      rectangle_pattern(100, 100, {{{0, 61}, {100, 61}}, {{37, 0}, {37, 100}}}), {11, 11});
   EXPECT_EQ(m.fine.patch_count(), 4);
   EXPECT_EQ(m.clean.junctions.size(), 1u);
   ASSERT_EQ(m.fine.stitching.junctions.size(), 1u);
@@ -91,12 +92,17 @@ TEST(DogMesh, StraightCreaseCellOwnershipMatchesTheHalfPlaneRule) {
       const int lines = (side % 2 == 0) ? cx : cy;
       const double len = (side % 2 == 0) ? W : H;
       double t = std::uniform_real_distribution<double>(0.05, 0.95)(rng) * len;
-      if (trial % 2 == 0) t = std::clamp(std::round(t / (len / lines)), 1.0, lines - 1.0) * (len / lines);
+      if (trial % 2 == 0)
+        t = std::clamp(std::round(t / (len / lines)), 1.0, lines - 1.0) * (len / lines);
       switch (side) {
-        case 0: return {t, 0};
-        case 1: return {W, t};
-        case 2: return {t, H};
-        default: return {0, t};
+        case 0:
+          return {t, 0};
+        case 1:
+          return {W, t};
+        case 2:
+          return {t, H};
+        default:
+          return {0, t};
       }
     };
     const int s0 = trial % 4, s1 = (s0 + 1 + (trial / 4) % 3) % 4;
@@ -119,7 +125,8 @@ TEST(DogMesh, StraightCreaseCellOwnershipMatchesTheHalfPlaneRule) {
     int left_patch = -1;
     for (const auto& [cell, who] : owners) {
       int sum = 0;
-      for (int d = 0; d < 4; ++d) sum += side((cell.first + d % 2) * hx, (cell.second + d / 2) * hy);
+      for (int d = 0; d < 4; ++d)
+        sum += side((cell.first + d % 2) * hx, (cell.second + d / 2) * hy);
       if (sum == 4) left_patch = *who.begin();
       if (sum == -4 && left_patch < 0) left_patch = 1 - *who.begin();
     }
@@ -136,8 +143,10 @@ TEST(DogMesh, StraightCreaseCellOwnershipMatchesTheHalfPlaneRule) {
             if (s > 0) has[0] = true;
             if (s < 0) has[1] = true;
           }
-        EXPECT_EQ(owned.count({1, i, j}) > 0, has[0]) << "trial " << trial << " cell " << i << "," << j;
-        EXPECT_EQ(owned.count({-1, i, j}) > 0, has[1]) << "trial " << trial << " cell " << i << "," << j;
+        EXPECT_EQ(owned.count({1, i, j}) > 0, has[0])
+            << "trial " << trial << " cell " << i << "," << j;
+        EXPECT_EQ(owned.count({-1, i, j}) > 0, has[1])
+            << "trial " << trial << " cell " << i << "," << j;
       }
   }
 }
@@ -160,7 +169,9 @@ TEST(QuadTopology, NeighboursAreInCyclicOrder) {
 TEST(QuadTopology, StaircaseBoundariesHaveBnd4Vertices) {
   // A curved crease gives staircase patch boundaries: reflex corners are bnd4.
   const DogModel m = build_dog_model(
-      rectangle_pattern(100, 100, {{{0, 30}, {20, 32}, {40, 38}, {60, 50}, {80, 68}, {92, 85}, {100, 100}}}), {21, 21});
+      rectangle_pattern(100, 100,
+                        {{{0, 30}, {20, 32}, {40, 38}, {60, 50}, {80, 68}, {92, 85}, {100, 100}}}),
+      {21, 21});
   EXPECT_GT(m.fine_topology.count(VertexClass::Bnd4), 0);
   for (int v = 0; v < m.fine.vertex_count(); ++v) {
     int nb = 0;
@@ -170,6 +181,53 @@ TEST(QuadTopology, StaircaseBoundariesHaveBnd4Vertices) {
       EXPECT_LT(m.fine_topology.quads_around[v], 4);
     }
   }
+}
+
+}  // namespace
+}  // namespace sdog
+
+namespace sdog {
+namespace {
+
+TEST(DogMesh, TwoCreasePointsOnOneGridEdgeAreBothKept) {
+  // Lines at x = 0, 25, ..., 100 and y = 0, 25, ...: the crease dips below y = 50 and comes back
+  // between x = 30 and x = 45, so both crossings lie on the grid edge (25,50)-(50,50).
+  const DogModel m =
+      build_dog_model(test::rectangle_pattern(
+                          100, 100, {{{0, 60}, {30, 52}, {35, 48}, {40, 48}, {45, 52}, {100, 60}}}),
+                      {5, 5}, {{}, false});
+  int on_edge = 0;
+  std::set<double> ts;
+  for (const auto& p : m.fine.stitching.points) {
+    const Eigen::Vector2d sheet = p.flat / m.fine.scale + m.fine.sheet_origin;
+    if (std::abs(sheet.y() - 50) < 1e-9 && sheet.x() > 25 && sheet.x() < 50) {
+      ++on_edge;
+      ts.insert(p.copies[0].t);
+      EXPECT_EQ(p.copies.size(), 2u);
+    }
+  }
+  EXPECT_EQ(on_edge, 2);
+  EXPECT_EQ(ts.size(), 2u);
+}
+
+TEST(DogMesh, PatchesAreNumberedByTheirFirstCellInRowMajorOrder) {
+  const DogModel m = build_dog_model(
+      test::rectangle_pattern(100, 100,
+                              {{{0, 70}, {100, 20}}, {{60, 0}, {60, 100}}, {{0, 30}, {30, 0}}}),
+      {21, 21});
+  const int cells_x = m.fine.nx() - 1;
+  int previous = -1;
+  for (int p = 0; p < m.fine.patch_count(); ++p) {
+    int first = INT32_MAX;
+    for (int q = m.fine.quad_patch_begin[p]; q < m.fine.quad_patch_begin[p + 1]; ++q) {
+      const auto g = m.fine.grid[m.fine.F(q, 0)];
+      first = std::min(first, g.y() * cells_x + g.x());
+    }
+    EXPECT_GE(first, previous) << "patch " << p;
+    previous = first;
+  }
+  // Patch 0 owns the bottom-left cell.
+  EXPECT_EQ(m.fine.grid[m.fine.F(0, 0)], Eigen::Vector2i(0, 0));
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // reference pattern (a geometry-central style fixture over all assets).
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <map>
 
 #include "geometry/dog_model.h"
@@ -22,7 +22,8 @@ struct Asset {
 std::vector<Asset> assets() {
   std::vector<Asset> out;
   for (const auto& p : test::all_datasets())
-    for (Resolution r : {Resolution{21, 21}, Resolution{41, 31}, Resolution{61, 61}}) out.push_back({p, r});
+    for (Resolution r : {Resolution{21, 21}, Resolution{41, 31}, Resolution{61, 61}})
+      out.push_back({p, r});
   for (const auto& p : test::all_reference_patterns())
     for (Resolution r : {Resolution{41, 41}, Resolution{61, 45}}) out.push_back({p, r});
   return out;
@@ -33,7 +34,8 @@ const DogModel& model(const Asset& a) {
   static std::map<std::string, DogModel> cache;
   const std::string key = a.path + a.res.str();
   auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, build_dog_model(read_crease_pattern(a.path), a.res)).first;
+  if (it == cache.end())
+    it = cache.emplace(key, build_dog_model(read_crease_pattern(a.path), a.res)).first;
   return it->second;
 }
 
@@ -129,7 +131,8 @@ void check_stitching(const DogMesh& mesh, double tol) {
   }
   for (const auto& pair : st.pairs) {
     const auto& p = st.points[pair.point];
-    const Eigen::Vector3d r = DogMesh::position(mesh.V, p.copies[pair.a]) - DogMesh::position(mesh.V, p.copies[pair.b]);
+    const Eigen::Vector3d r =
+        DogMesh::position(mesh.V, p.copies[pair.a]) - DogMesh::position(mesh.V, p.copies[pair.b]);
     EXPECT_EQ(r.norm(), 0.0) << "stitching residual of point " << pair.point;
   }
 }
@@ -151,12 +154,14 @@ TEST_P(MapInvariants, VertexClassesAddUpAndPatchesAreContiguous) {
     EXPECT_EQ(mesh.patch_begin.back(), mesh.vertex_count());
     for (int p = 0; p < mesh.patch_count(); ++p) {
       EXPECT_LT(mesh.patch_begin[p], mesh.patch_begin[p + 1]) << "empty patch " << p;
-      for (int v = mesh.patch_begin[p]; v < mesh.patch_begin[p + 1]; ++v) EXPECT_EQ(mesh.vertex_patch[v], p);
+      for (int v = mesh.patch_begin[p]; v < mesh.patch_begin[p + 1]; ++v)
+        EXPECT_EQ(mesh.vertex_patch[v], p);
       for (int q = mesh.quad_patch_begin[p]; q < mesh.quad_patch_begin[p + 1]; ++q)
         for (int k = 0; k < 4; ++k) EXPECT_EQ(mesh.vertex_patch[mesh.F(q, k)], p);
     }
     for (int q = 0; q < mesh.quad_count(); ++q) {  // counter-clockwise with y up
-      const Eigen::Vector3d a = mesh.V.row(mesh.F(q, 0)), b = mesh.V.row(mesh.F(q, 1)), c = mesh.V.row(mesh.F(q, 2));
+      const Eigen::Vector3d a = mesh.V.row(mesh.F(q, 0)), b = mesh.V.row(mesh.F(q, 1)),
+                            c = mesh.V.row(mesh.F(q, 2));
       EXPECT_GT((b - a).cross(c - a).z(), 0.0);
     }
   }
@@ -191,12 +196,15 @@ TEST_P(MapInvariants, CoarseCreasePointsAreFineOnesWithMonotoneFractions) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllAssets, MapInvariants, ::testing::ValuesIn(assets()), [](const auto& info) {
-  std::string name = std::filesystem::path(info.param.path).stem().string() + "_" + info.param.res.str();
-  for (auto& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(AllAssets, MapInvariants, ::testing::ValuesIn(assets()),
+                         [](const auto& info) {
+                           std::string name =
+                               std::filesystem::path(info.param.path).stem().string() + "_" +
+                               info.param.res.str();
+                           for (auto& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 TEST(ReferencePatterns, EveryPatternBuildsOrFailsWithAClearMessage) {
   SDOG_REQUIRE_SHARED();
@@ -206,9 +214,11 @@ TEST(ReferencePatterns, EveryPatternBuildsOrFailsWithAClearMessage) {
         const DogModel m = build_dog_model(read_crease_pattern(p), r);
         EXPECT_EQ(m.fine.patch_count(), m.expected_patches) << p;
       } catch (const UsageError& e) {
-        EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos) << p << ": " << e.what();
+        EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos)
+            << p << ": " << e.what();
       } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find(std::filesystem::path(p).filename().string()), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find(std::filesystem::path(p).filename().string()),
+                  std::string::npos)
             << e.what();
       }
     }

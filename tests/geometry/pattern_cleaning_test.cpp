@@ -17,21 +17,24 @@ bool has_vertex(const Crease& c, const V2& p) {
 
 TEST(PatternCleaning, CreasePartsOutsideTheSheetAreClippedExactlyAtTheBoundary) {
   // Starts 3 units below the sheet, ends 5 units right of it.
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{20, -3}, {40, 50}, {105, 60}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{20, -3}, {40, 50}, {105, 60}}}));
   ASSERT_EQ(c.creases.size(), 1u);
   const auto& pts = c.creases[0].points;
   EXPECT_EQ(pts.front().y(), 0.0);
   EXPECT_EQ(pts.back().x(), 100.0);
   EXPECT_NEAR(pts.front().x(), 20 + 20 * 3.0 / 53, 1e-12);
   // The ends became boundary vertices.
-  EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), pts.front()), c.sheet.outer.end());
+  EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), pts.front()),
+            c.sheet.outer.end());
   EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), pts.back()), c.sheet.outer.end());
   EXPECT_TRUE(c.pins.empty()) << "ends on the bounding box need no pins";
 }
 
 TEST(PatternCleaning, EndsShortOfTheBoundarySnapOntoIt) {
   // L = 100: snapping reaches 2 units.
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{1.5, 40}, {50, 60}, {98.5, 70}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{1.5, 40}, {50, 60}, {98.5, 70}}}));
   EXPECT_EQ(c.creases[0].points.front(), V2(0, 40));
   EXPECT_EQ(c.creases[0].points.back(), V2(100, 70));
 }
@@ -49,7 +52,8 @@ TEST(PatternCleaning, CreaseEndingInsideTheSheetIsRejectedWithItsPosition) {
 }
 
 TEST(PatternCleaning, CrossingCreasesShareOneJunctionVertex) {
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 30}, {100, 70}}, {{20, 0}, {60, 100}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 30}, {100, 70}}, {{20, 0}, {60, 100}}}));
   ASSERT_EQ(c.junctions.size(), 1u);
   const V2 j = c.junctions[0];
   EXPECT_TRUE(has_vertex(c.creases[0], j));
@@ -72,7 +76,8 @@ TEST(PatternCleaning, NearlyConcurrentCreasesMergeIntoOneJunction) {
 
 TEST(PatternCleaning, EndNearACreaseMakesATJunction) {
   // The second crease stops 1.5 units short of the first (within L/50 = 2).
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 50}, {100, 50}}, {{40, 0}, {40, 48.5}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 50}, {100, 50}}, {{40, 0}, {40, 48.5}}}));
   ASSERT_EQ(c.junctions.size(), 1u);
   EXPECT_EQ(c.junctions[0], V2(40, 50));
   EXPECT_TRUE(has_vertex(c.creases[0], V2(40, 50)));
@@ -82,7 +87,8 @@ TEST(PatternCleaning, EndNearACreaseMakesATJunction) {
 
 TEST(PatternCleaning, PiecesMeetingEndToEndAreJoined) {
   // One crease drawn as two pieces whose ends are 0.5 apart (L/100 = 1).
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 50}, {50, 60}}, {{50.5, 60}, {100, 50}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 50}, {50, 60}}, {{50.5, 60}, {100, 50}}}));
   ASSERT_EQ(c.creases.size(), 1u);
   EXPECT_TRUE(c.junctions.empty());
   EXPECT_EQ(c.creases[0].points.front(), V2(0, 50));
@@ -91,7 +97,8 @@ TEST(PatternCleaning, PiecesMeetingEndToEndAreJoined) {
 
 TEST(PatternCleaning, ClosedCreaseInsideStaysClosed) {
   Polyline2 circle;
-  for (int k = 0; k < 64; ++k) circle.emplace_back(50 + 20 * std::cos(k * M_PI / 32), 50 + 20 * std::sin(k * M_PI / 32));
+  for (int k = 0; k < 64; ++k)
+    circle.emplace_back(50 + 20 * std::cos(k * M_PI / 32), 50 + 20 * std::sin(k * M_PI / 32));
   const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {circle}, {true}));
   ASSERT_EQ(c.creases.size(), 1u);
   EXPECT_TRUE(c.creases[0].closed);
@@ -99,15 +106,18 @@ TEST(PatternCleaning, ClosedCreaseInsideStaysClosed) {
 }
 
 TEST(PatternCleaning, CreaseAlongTheBoundaryIsRejected) {
-  EXPECT_THROW(clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}})), InputError);
+  EXPECT_THROW(clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}})),
+               InputError);
 }
 
 TEST(PatternCleaning, NearbyJunctionCoordinatesAreAligned) {
   // T junctions at (30, 30) and (31.5, 70): x within L/50 = 2, so both move to x = 30.75 and
   // the grid needs one line for them.
-  const CleanPattern c = clean_pattern(rectangle_pattern(
-      100, 100,
-      {{{0, 30}, {100, 30}}, {{0, 70}, {100, 70}}, {{30, 0}, {30, 30}}, {{31.5, 70}, {31.5, 100}}}));
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100,
+                                                         {{{0, 30}, {100, 30}},
+                                                          {{0, 70}, {100, 70}},
+                                                          {{30, 0}, {30, 30}},
+                                                          {{31.5, 70}, {31.5, 100}}}));
   ASSERT_EQ(c.junctions.size(), 2u);
   EXPECT_EQ(c.junctions[0].x(), 30.75);
   EXPECT_EQ(c.junctions[1].x(), 30.75);

@@ -29,8 +29,8 @@ using Vec = Eigen::Vector2d;
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string document(const std::string& body, const std::string& root_attributes =
-                                                  "viewBox=\"0 0 100 100\"") {
+std::string document(const std::string& body,
+                     const std::string& root_attributes = "viewBox=\"0 0 100 100\"") {
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" " + root_attributes + ">\n" + body +
          "\n</svg>\n";
 }
@@ -55,7 +55,9 @@ SvgCurve only_curve(const std::string& body, double flatness = 1e-5) {
 }
 
 /// Converts y-up output back to SVG user space.
-Vec svg_space(const Vec& p) { return Vec(p.x(), -p.y()); }
+Vec svg_space(const Vec& p) {
+  return Vec(p.x(), -p.y());
+}
 
 std::string error_of(const std::function<void()>& action) {
   try {
@@ -91,8 +93,8 @@ void expect_near_point(const Vec& actual, const Vec& expected, double tolerance 
 
 double distance_to_segment(const Vec& p, const Vec& a, const Vec& b) {
   const Vec ab = b - a;
-  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0)
-                                        : 0.0;
+  const double t =
+      ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
   return (p - (a + t * ab)).norm();
 }
 
@@ -127,7 +129,8 @@ TEST(SvgNumbers, FollowThePathGrammar) {
 }
 
 TEST(SvgNumbers, NonFiniteSpellingsAndOverflow) {
-  for (std::string_view text : {"nan", "NaN", "-inf", "Infinity", "1e999", "-1e400", "1e99999999999"}) {
+  for (std::string_view text :
+       {"nan", "NaN", "-inf", "Infinity", "1e999", "-1e400", "1e99999999999"}) {
     std::size_t pos = 0;
     double v = 0;
     EXPECT_EQ(sdog::svg::scan_number(text, pos, v), sdog::svg::NumberScan::not_finite) << text;
@@ -206,7 +209,8 @@ TEST(SvgPath, QuadraticPointsLieNearTheCurve) {
   for (const Vec& p : curve.points) points.push_back(svg_space(p));
   for (int i = 0; i <= 2000; ++i) {
     const double t = i / 2000.0;
-    const Vec q = (1 - t) * (1 - t) * Vec(0, 0) + 2 * (1 - t) * t * Vec(50, 100) + t * t * Vec(100, 0);
+    const Vec q =
+        (1 - t) * (1 - t) * Vec(0, 0) + 2 * (1 - t) * t * Vec(50, 100) + t * t * Vec(100, 0);
     EXPECT_LE(distance_to_polyline(q, points, false), tol * (1 + 1e-9)) << t;
   }
 }
@@ -228,16 +232,16 @@ TEST(SvgPath, ArcFlagCombinations) {
     Vec center, midpoint;
   };
   const Case cases[] = {
-      {0, 1, {5, h}, {5, h - 10}},   // small arc, -120° -> -60° through -90°
-      {1, 0, {5, h}, {5, h + 10}},   // large arc, -120° -> -420° through 90°
-      {0, 0, {5, -h}, {5, 10 - h}},  // small arc, 120° -> 60° through 90°
-      {1, 1, {5, -h}, {5, -h - 10}}, // large arc, 120° -> 420° through 270°
+      {0, 1, {5, h}, {5, h - 10}},    // small arc, -120° -> -60° through -90°
+      {1, 0, {5, h}, {5, h + 10}},    // large arc, -120° -> -420° through 90°
+      {0, 0, {5, -h}, {5, 10 - h}},   // small arc, 120° -> 60° through 90°
+      {1, 1, {5, -h}, {5, -h - 10}},  // large arc, 120° -> 420° through 270°
   };
   const double flatness = 1e-4, tol = flatness * 100;
   std::vector<std::size_t> counts;
   for (const Case& c : cases) {
-    const std::string d = "M0 0 A10 10 0 " + std::to_string(c.large) + " " +
-                          std::to_string(c.sweep) + " 10 0";
+    const std::string d =
+        "M0 0 A10 10 0 " + std::to_string(c.large) + " " + std::to_string(c.sweep) + " 10 0";
     SCOPED_TRACE(d);
     const auto curves = path_curves(d, flatness);
     ASSERT_EQ(curves.size(), 1u);
@@ -347,8 +351,9 @@ TEST(SvgExactness, YIsNegatedExactly) {
 
 TEST(SvgExactness, CurveEndpointsAreTheParsedEndpoints) {
   // Relative end points are previous + delta in double, and curves end exactly there.
-  const auto curve = path_curves("M0.1 0.2 c0.3 0.3 0.6 0.3 0.7 0.1 q0.1 0.3 0.3 0.3 "
-                                 "a0.3 0.2 10 0 1 0.9 0.1")[0];
+  const auto curve = path_curves(
+      "M0.1 0.2 c0.3 0.3 0.6 0.3 0.7 0.1 q0.1 0.3 0.3 0.3 "
+      "a0.3 0.2 10 0 1 0.9 0.1")[0];
   const double x1 = 0.1 + 0.7, y1 = 0.2 + 0.1;
   const double x2 = x1 + 0.3, y2 = y1 + 0.3;
   const double x3 = x2 + 0.9, y3 = y2 + 0.1;
@@ -439,8 +444,8 @@ TEST(SvgFlatness, ToleranceWithoutViewBoxUsesTheControlPointExtent) {
   // Control points span x 0..1000 and y -1000..1000: extent 2000, tol = 1e-3 * 2000 = 2.
   sdog::SvgReadOptions options;
   options.flatness = 1e-3;
-  const SvgDrawing drawing = sdog::parse_svg(
-      "<svg><path d=\"M0 0 C300 1000 700 -1000 1000 0\"/></svg>", "x.svg", options);
+  const SvgDrawing drawing =
+      sdog::parse_svg("<svg><path d=\"M0 0 C300 1000 700 -1000 1000 0\"/></svg>", "x.svg", options);
   EXPECT_FALSE(drawing.has_viewbox);
   ASSERT_EQ(drawing.curves.size(), 1u);
   std::vector<Vec> points;
@@ -562,18 +567,21 @@ TEST(SvgTransforms, NestedTranslateRotateScale) {
 TEST(SvgTransforms, RotateAboutACentre) {
   expect_points(only_curve("<path transform=\"rotate(90 5 5)\" d=\"M10 5 L5 5\"/>"),
                 {{5, 10}, {5, 5}});
-  const SvgCurve curve = only_curve("<path transform=\"rotate(-45, 10, 20)\" d=\"M20 20 L10 20\"/>");
+  const SvgCurve curve =
+      only_curve("<path transform=\"rotate(-45, 10, 20)\" d=\"M20 20 L10 20\"/>");
   const double r = std::sqrt(0.5) * 10;
   expect_near_point(svg_space(curve.points[0]), Vec(10 + r, 20 - r));
   expect_near_point(svg_space(curve.points[1]), Vec(10, 20));
 }
 
 TEST(SvgTransforms, SkewAndMatrix) {
-  expect_near_point(svg_space(only_curve("<path transform=\"skewX(45)\" d=\"M0 0 L2 3\"/>").points[1]),
-                    Vec(5, 3));
+  expect_near_point(
+      svg_space(only_curve("<path transform=\"skewX(45)\" d=\"M0 0 L2 3\"/>").points[1]),
+      Vec(5, 3));
   const double t30 = std::tan(kPi / 6);
-  expect_near_point(svg_space(only_curve("<path transform=\"skewY(30)\" d=\"M0 0 L2 3\"/>").points[1]),
-                    Vec(2, 3 + 2 * t30));
+  expect_near_point(
+      svg_space(only_curve("<path transform=\"skewY(30)\" d=\"M0 0 L2 3\"/>").points[1]),
+      Vec(2, 3 + 2 * t30));
   // matrix(1 2 3 4 5 6): (1,1) -> (1 + 3 + 5, 2 + 4 + 6).
   expect_points(only_curve("<path transform=\"matrix(1,2,3,4,5,6)\" d=\"M1 1 L0 0\"/>"),
                 {{9, 12}, {5, 6}});
@@ -627,7 +635,8 @@ TEST(SvgStyle, InlineStyleOverClassOverAttribute) {
                                "#00FF00 !important\" d=\"M0 0 L1 1\"/>")
                 .color,
             "#00ff00");
-  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" stroke=\"red\" d=\"M0 0 L1 1\"/>").color, "#0000ff");
+  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" stroke=\"red\" d=\"M0 0 L1 1\"/>").color,
+            "#0000ff");
   EXPECT_EQ(only_curve(sheet + "<path stroke=\"red\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
 }
 
@@ -647,8 +656,9 @@ TEST(SvgStyle, StylesheetSyntax) {
       "  .st2{stroke-dasharray:4 2;stroke:#3F48CC}.st3{stroke:#000}\n"
       "]]></style></defs>";
   const SvgDrawing drawing =
-      parse(sheet + "<path class=\"st1\" d=\"M0 0 L1 1\"/><path class=\"st2\" d=\"M0 0 L1 1\"/>"
-                    "<path class=\"st3\" d=\"M0 0 L1 1\"/>");
+      parse(sheet +
+            "<path class=\"st1\" d=\"M0 0 L1 1\"/><path class=\"st2\" d=\"M0 0 L1 1\"/>"
+            "<path class=\"st3\" d=\"M0 0 L1 1\"/>");
   ASSERT_EQ(drawing.curves.size(), 3u);
   EXPECT_EQ(drawing.curves[0].color, "#ef4545");
   EXPECT_EQ(drawing.curves[1].color, "#3f48cc");
@@ -658,7 +668,8 @@ TEST(SvgStyle, StylesheetSyntax) {
 }
 
 TEST(SvgStyle, InheritanceFromGroups) {
-  EXPECT_EQ(only_curve("<g stroke=\"#123456\"><g><path d=\"M0 0 L1 1\"/></g></g>").color, "#123456");
+  EXPECT_EQ(only_curve("<g stroke=\"#123456\"><g><path d=\"M0 0 L1 1\"/></g></g>").color,
+            "#123456");
   EXPECT_EQ(only_curve("<g stroke=\"red\"><g style=\"stroke:blue\"><path d=\"M0 0 L1 1\"/></g></g>")
                 .color,
             "#0000ff");
@@ -667,9 +678,9 @@ TEST(SvgStyle, InheritanceFromGroups) {
             "#ff0000");
   EXPECT_EQ(only_curve("<g stroke=\"blue\"><path stroke=\"inherit\" d=\"M0 0 L1 1\"/></g>").color,
             "#0000ff");
-  EXPECT_EQ(only_curve("<style>.k{stroke:lime}</style><g class=\"k\"><path d=\"M0 0 L1 1\"/></g>")
-                .color,
-            "#00ff00");
+  EXPECT_EQ(
+      only_curve("<style>.k{stroke:lime}</style><g class=\"k\"><path d=\"M0 0 L1 1\"/></g>").color,
+      "#00ff00");
 }
 
 TEST(SvgStyle, FillFallback) {
@@ -682,8 +693,9 @@ TEST(SvgStyle, FillFallback) {
   EXPECT_TRUE(unpainted.is_boundary);
   EXPECT_EQ(only_curve("<path fill=\"none\" stroke=\"none\" d=\"M0 0 L1 1\"/>").color, "#000000");
   EXPECT_EQ(only_curve("<path stroke=\"url(#g) red\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
-  EXPECT_EQ(only_curve("<g color=\"teal\"><path stroke=\"currentColor\" d=\"M0 0 L1 1\"/></g>").color,
-            "#008080");
+  EXPECT_EQ(
+      only_curve("<g color=\"teal\"><path stroke=\"currentColor\" d=\"M0 0 L1 1\"/></g>").color,
+      "#008080");
   const SvgCurve near_black = only_curve("<path stroke=\"#000001\" d=\"M0 0 L1 1\"/>");
   EXPECT_FALSE(near_black.is_boundary);
 }
@@ -772,8 +784,9 @@ TEST(SvgErrors, MissingFileAndDirectory) {
   EXPECT_EQ(error_of([&] { sdog::read_svg_file(missing); }),
             missing + ": cannot open file (No such file or directory)");
   const std::string directory = ::testing::TempDir();
-  EXPECT_NE(error_of([&] { sdog::read_svg_file(directory); }).find("cannot open file (Is a directory)"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { sdog::read_svg_file(directory); }).find("cannot open file (Is a directory)"),
+      std::string::npos);
 }
 
 TEST(SvgErrors, ReadsFromFile) {
@@ -795,13 +808,15 @@ TEST(SvgErrors, NotXmlAndWrongRoot) {
   EXPECT_NE(message.find(" at byte "), std::string::npos);
   message = error_of([] { sdog::parse_svg("<svg>\n<g>\n</svg>", "b.svg"); });
   EXPECT_NE(message.find("b.svg:3: not an XML file"), std::string::npos) << message;
-  EXPECT_NE(error_of([] { sdog::parse_svg("", "e.svg"); }).find("not an XML file"), std::string::npos);
+  EXPECT_NE(error_of([] { sdog::parse_svg("", "e.svg"); }).find("not an XML file"),
+            std::string::npos);
   EXPECT_EQ(error_of([] { sdog::parse_svg("<html><svg/></html>", "c.svg"); }),
             "c.svg: the root element is <html>, expected <svg>");
 }
 
 TEST(SvgErrors, PathSyntaxMessage) {
-  const std::string text = "<svg viewBox=\"0 0 10 10\">\n<g>\n<path id=\"c3\" d=\"M 0 0 C 10\"/>\n</g></svg>";
+  const std::string text =
+      "<svg viewBox=\"0 0 10 10\">\n<g>\n<path id=\"c3\" d=\"M 0 0 C 10\"/>\n</g></svg>";
   const std::string message = error_of([&] { sdog::parse_svg(text, "pattern.svg"); });
   EXPECT_EQ(message.rfind("pattern.svg:3: <path id=\"c3\">: path data: expected a number after 'C' "
                           "at character 11 (\"",
@@ -855,8 +870,9 @@ TEST(SvgErrors, NonFiniteCoordinates) {
 }
 
 TEST(SvgErrors, OtherElementErrors) {
-  EXPECT_EQ(parse_error("<g><use id=\"u1\" href=\"#x\"/></g>"),
-            "test.svg:2: <use id=\"u1\">: <use> is not supported; ungroup/expand it in your editor");
+  EXPECT_EQ(
+      parse_error("<g><use id=\"u1\" href=\"#x\"/></g>"),
+      "test.svg:2: <use id=\"u1\">: <use> is not supported; ungroup/expand it in your editor");
   EXPECT_NE(parse_error("<polygon points=\"0 0 1\"/>").find("points: odd number of coordinates"),
             std::string::npos);
   EXPECT_NE(parse_error("<path stroke=\"bluish\" d=\"M0 0 L1 1\"/>")
@@ -874,8 +890,9 @@ TEST(SvgErrors, OtherElementErrors) {
 TEST(SvgErrors, TooManyPoints) {
   sdog::SvgReadOptions options;
   options.flatness = 1e-300;
-  const std::string message = error_of(
-      [&] { sdog::parse_svg(document("<circle cx=\"50\" cy=\"50\" r=\"50\"/>"), "t.svg", options); });
+  const std::string message = error_of([&] {
+    sdog::parse_svg(document("<circle cx=\"50\" cy=\"50\" r=\"50\"/>"), "t.svg", options);
+  });
   EXPECT_NE(message.find("too many points after flattening"), std::string::npos) << message;
   // Deep recursion on a cubic is bounded by the point budget as well.
   const std::string cubic = error_of([&] {

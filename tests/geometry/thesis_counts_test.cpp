@@ -16,14 +16,22 @@ struct ThesisCase {
 };
 
 const ThesisCase kCases[] = {
-    {"1_curve", 31, 21, 721, 2},            {"1_curve", 43, 31, 1435, 2},
-    {"1_curve", 55, 41, 2389, 2},           {"1_curve", 81, 59, 4969, 2},
-    {"4_corners", 21, 21, 569, 5},          {"4_corners", 41, 41, 1937, 5},
-    {"4_corners", 61, 61, 4105, 5},         {"4_corners", 81, 81, 7073, 5},
-    {"valley", 21, 21, 639, 6},             {"valley", 41, 41, 2069, 6},
-    {"valley", 61, 61, 4301, 6},            {"valley", 81, 81, 7327, 6},
-    {"parallel_curves_4", 27, 45, 1498, 5}, {"parallel_curves_4", 39, 65, 2943, 5},
-    {"parallel_curves_4", 45, 75, 3847, 5}, {"parallel_curves_4", 51, 85, 4867, 5},
+    {"1_curve", 31, 21, 721, 2},
+    {"1_curve", 43, 31, 1435, 2},
+    {"1_curve", 55, 41, 2389, 2},
+    {"1_curve", 81, 59, 4969, 2},
+    {"4_corners", 21, 21, 569, 5},
+    {"4_corners", 41, 41, 1937, 5},
+    {"4_corners", 61, 61, 4105, 5},
+    {"4_corners", 81, 81, 7073, 5},
+    {"valley", 21, 21, 639, 6},
+    {"valley", 41, 41, 2069, 6},
+    {"valley", 61, 61, 4301, 6},
+    {"valley", 81, 81, 7327, 6},
+    {"parallel_curves_4", 27, 45, 1498, 5},
+    {"parallel_curves_4", 39, 65, 2943, 5},
+    {"parallel_curves_4", 45, 75, 3847, 5},
+    {"parallel_curves_4", 51, 85, 4867, 5},
 };
 
 class ThesisCounts : public ::testing::TestWithParam<ThesisCase> {};
@@ -31,18 +39,18 @@ class ThesisCounts : public ::testing::TestWithParam<ThesisCase> {};
 TEST_P(ThesisCounts, FineVertexAndPatchCountsMatchTable61) {
   SDOG_REQUIRE_SHARED();
   const ThesisCase& c = GetParam();
-  const auto pattern = read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg");
+  const auto pattern =
+      read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg");
   const DogModel m = build_dog_model(pattern, {c.nx, c.ny});
   EXPECT_EQ(m.fine.vertex_count(), c.vertices);
   EXPECT_EQ(m.fine.patch_count(), c.patches);
   EXPECT_EQ(m.coarse.patch_count(), c.patches);
 }
 
-INSTANTIATE_TEST_SUITE_P(Table61, ThesisCounts, ::testing::ValuesIn(kCases),
-                         [](const auto& info) {
-                           return std::string(info.param.pattern) + "_" + std::to_string(info.param.nx) +
-                                  "x" + std::to_string(info.param.ny);
-                         });
+INSTANTIATE_TEST_SUITE_P(Table61, ThesisCounts, ::testing::ValuesIn(kCases), [](const auto& info) {
+  return std::string(info.param.pattern) + "_" + std::to_string(info.param.nx) + "x" +
+         std::to_string(info.param.ny);
+});
 
 }  // namespace
 }  // namespace sdog

@@ -47,8 +47,8 @@ inline std::string compare_with_baseline(const std::string& image, const std::st
     return "";
   }
   fs::copy_file(image, kept, fs::copy_options::overwrite_existing);
-  return "image differs from " + baseline + " (thresholded error " + std::to_string(error) +
-         " > " + std::to_string(threshold) + "); the new image is kept as " + kept;
+  return "image differs from " + baseline + " (thresholded error " + std::to_string(error) + " > " +
+         std::to_string(threshold) + "); the new image is kept as " + kept;
 }
 
 }  // namespace sdog::test

@@ -24,14 +24,16 @@ int pixels_near(vtkImageData* img, const vis::Rgb& c) {
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       double d = 0;
-      for (int k = 0; k < 3; ++k) d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
+      for (int k = 0; k < 3; ++k)
+        d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
       count += d < 12;
     }
   return count;
 }
 
 TEST(VertexTypePicture, ShowsEveryVertexTypeAndMatchesBaseline) {
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   ASSERT_GT(m.map.coarse_only_count, 0);
   const std::string path = test::temp_dir("picture") + "/vertex_types.png";
   vis::render_vertex_types(m, path, {800, 400});

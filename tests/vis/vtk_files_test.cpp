@@ -31,7 +31,8 @@ auto read(const std::string& path) {
 }
 
 TEST(VtkFiles, MeshFilesReadBackWithTheirArrays) {
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {21, 21});
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {21, 21});
   const std::string dir = test::temp_dir("vtk_files");
   OutputSet out(dir);
   vis::write_model_files(m, out);

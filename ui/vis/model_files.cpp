@@ -19,7 +19,8 @@ Polyline3 lifted(const DogMesh& mesh, const Polyline2& sheet_points, bool closed
 }  // namespace
 
 void write_model_files(const DogModel& model, OutputSet& out) {
-  write_vtu(quad_grid(model.fine.V, model.fine.F, fine_mesh_arrays(model)), out.temporary("fine.vtu"));
+  write_vtu(quad_grid(model.fine.V, model.fine.F, fine_mesh_arrays(model)),
+            out.temporary("fine.vtu"));
   if (model.has_coarse)
     write_vtu(quad_grid(model.coarse.V, model.coarse.F, coarse_mesh_arrays(model)),
               out.temporary("coarse.vtu"));
@@ -29,7 +30,8 @@ void write_model_files(const DogModel& model, OutputSet& out) {
   NamedArray index{"crease", {}, true}, closed{"closed", {}, true}, dashed{"dashed", {}, true};
   for (size_t k = 0; k < st.curves.size(); ++k) {
     Polyline3 line;
-    for (int p : st.curves[k].points) line.emplace_back(st.points[p].flat.x(), st.points[p].flat.y(), 0.0);
+    for (int p : st.curves[k].points)
+      line.emplace_back(st.points[p].flat.x(), st.points[p].flat.y(), 0.0);
     if (st.curves[k].closed && !line.empty()) line.push_back(line.front());
     creases.push_back(std::move(line));
     index.values.push_back(static_cast<double>(k));
@@ -45,12 +47,14 @@ void write_model_files(const DogModel& model, OutputSet& out) {
   kind.values.push_back(0), which.values.push_back(0), dash.values.push_back(0);
   for (size_t h = 0; h < sheet.holes.size(); ++h) {
     curves.push_back(lifted(model.fine, sheet.holes[h], true));
-    kind.values.push_back(0), which.values.push_back(static_cast<double>(h + 1)), dash.values.push_back(0);
+    kind.values.push_back(0), which.values.push_back(static_cast<double>(h + 1)),
+        dash.values.push_back(0);
   }
   for (size_t k = 0; k < model.pattern.creases.size(); ++k) {
     const Crease& c = model.pattern.creases[k];
     curves.push_back(lifted(model.fine, c.points, c.closed));
-    kind.values.push_back(1), which.values.push_back(static_cast<double>(k)), dash.values.push_back(c.dashed);
+    kind.values.push_back(1), which.values.push_back(static_cast<double>(k)),
+        dash.values.push_back(c.dashed);
   }
   write_vtp(polylines(curves, {kind, which, dash}), out.temporary("pattern.vtp"));
 }

@@ -2,8 +2,8 @@
 // The VTK files of a meshed crease pattern (all in mesh units, z = 0, so they overlay in ParaView):
 //   fine.vtu     fine DOG; point arrays vertex_type, patch, partner, vertex_class; cell array patch
 //   coarse.vtu   coarse DOG, same arrays
-//   creases.vtp  crease polylines through the fine crease points; cell arrays crease, closed, dashed
-//   pattern.vtp  the curves as drawn; cell arrays kind (0 boundary, 1 crease), index, dashed
+//   creases.vtp  crease polylines through the fine crease points; cell arrays crease, closed,
+//   dashed pattern.vtp  the curves as drawn; cell arrays kind (0 boundary, 1 crease), index, dashed
 #include <string>
 
 #include "geometry/atomic_output.h"

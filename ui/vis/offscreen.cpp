@@ -30,8 +30,10 @@ void save_png(vtkRenderWindow* window, const std::string& path, bool transparent
   window->Render();
   auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
   grab->SetInput(window);
-  if (transparent) grab->SetInputBufferTypeToRGBA();
-  else grab->SetInputBufferTypeToRGB();
+  if (transparent)
+    grab->SetInputBufferTypeToRGBA();
+  else
+    grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
   auto writer = vtkSmartPointer<vtkPNGWriter>::New();

@@ -10,10 +10,14 @@ using Rgb = std::array<double, 3>;
 
 inline Rgb vertex_type_color(VertexType t) {
   switch (t) {
-    case VertexType::Link: return {0.17, 0.63, 0.17};       // green
-    case VertexType::I: return {0.45, 0.78, 0.98};          // light blue
-    case VertexType::X: return {0.52, 0.29, 0.72};          // purple
-    case VertexType::CoarseOnly: return {0.86, 0.12, 0.12};  // red
+    case VertexType::Link:
+      return {0.17, 0.63, 0.17};  // green
+    case VertexType::I:
+      return {0.45, 0.78, 0.98};  // light blue
+    case VertexType::X:
+      return {0.52, 0.29, 0.72};  // purple
+    case VertexType::CoarseOnly:
+      return {0.86, 0.12, 0.12};  // red
   }
   return {0, 0, 0};
 }

@@ -52,7 +52,8 @@ vtkSmartPointer<vtkActor> point_actor(const std::vector<Eigen::Vector2d>& pts,
     const vtkIdType id = points->InsertNextPoint(pts[k].x(), pts[k].y(), z);
     verts->InsertNextCell(1, &id);
     const Rgb& c = colors[k];
-    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]),
+                          std::lround(255 * c[2]));
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
@@ -174,7 +175,8 @@ void render_vertex_types(const DogModel& model, const std::string& path, const I
   const double total_w = panels * width + (panels - 1) * gap;
   // The panels fill the left 80% of the window, the legend the rest.
   const double panel_area = 0.8;
-  const double ppu = std::min(0.95 * panel_area * size.width / total_w, 0.80 * size.height / height);
+  const double ppu =
+      std::min(0.95 * panel_area * size.width / total_w, 0.80 * size.height / height);
   const double point_size = std::clamp(0.45 * ppu, 2.0, 14.0);
   const double x0 = model.fine.xs.front(), y0 = model.fine.ys.front();
   const double focal_x = x0 + 0.5 * total_w + (0.5 - 0.5 * panel_area) * size.width / ppu;
@@ -190,8 +192,8 @@ void render_vertex_types(const DogModel& model, const std::string& path, const I
   if (model.has_coarse) {
     add_mesh(ren, model.coarse, &model.map.coarse_type, width + gap, point_size);
     add_title(ren,
-              "coarse " + model.coarse_res.str() + ": " + std::to_string(model.coarse.vertex_count()) +
-                  " vertices",
+              "coarse " + model.coarse_res.str() + ": " +
+                  std::to_string(model.coarse.vertex_count()) + " vertices",
               to_window_x(x0 + 1.5 * width + gap), font);
   }
   add_legend(ren, model.has_coarse, panel_area + 0.01);

@@ -52,12 +52,15 @@ CapturingOutputWindow* output_window() {
 
 vtkSmartPointer<vtkDataArray> to_vtk(const NamedArray& a) {
   vtkSmartPointer<vtkDataArray> out;
-  if (a.integral) out = vtkSmartPointer<vtkIntArray>::New();
-  else out = vtkSmartPointer<vtkDoubleArray>::New();
+  if (a.integral)
+    out = vtkSmartPointer<vtkIntArray>::New();
+  else
+    out = vtkSmartPointer<vtkDoubleArray>::New();
   out->SetName(a.name.c_str());
   out->SetNumberOfComponents(1);
   out->SetNumberOfTuples(static_cast<vtkIdType>(a.values.size()));
-  for (size_t k = 0; k < a.values.size(); ++k) out->SetTuple1(static_cast<vtkIdType>(k), a.values[k]);
+  for (size_t k = 0; k < a.values.size(); ++k)
+    out->SetTuple1(static_cast<vtkIdType>(k), a.values[k]);
   return out;
 }
 
@@ -84,7 +87,9 @@ void write_xml(Data* data, const std::string& path) {
 
 }  // namespace
 
-std::string take_vtk_error() { return output_window()->take(); }
+std::string take_vtk_error() {
+  return output_window()->take();
+}
 
 vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
                                                const MeshArrays& arrays) {
