@@ -11,5 +11,7 @@ using Runner = std::function<void()>;
 
 void register_mesh_command(CLI::App& app, Runner& run);
 void register_render_command(CLI::App& app, Runner& run);
+void register_run_command(CLI::App& app, Runner& run);
+void register_bench_command(CLI::App& app, Runner& run);
 
 }  // namespace sdog::cli

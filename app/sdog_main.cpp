@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   sdog::cli::Runner run;
   sdog::cli::register_mesh_command(app, run);
   sdog::cli::register_render_command(app, run);
+  sdog::cli::register_run_command(app, run);
+  sdog::cli::register_bench_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -34,6 +36,9 @@ int main(int argc, char** argv) {
     std::cerr << "sdog: " << e.what() << "\n";
     return 1;
   } catch (const sdog::OutputError& e) {
+    std::cerr << "sdog: " << e.what() << "\n";
+    return 1;
+  } catch (const sdog::SolverError& e) {
     std::cerr << "sdog: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {

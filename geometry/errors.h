@@ -1,7 +1,7 @@
 #pragma once
 // Exceptions thrown by the libraries. Executables map them to exit codes:
-// InputError and OutputError -> 1 (a file must be fixed), UsageError -> 2 (an option must be
-// changed).
+// InputError, OutputError and SolverError -> 1 (a file or a setting must be fixed), UsageError ->
+// 2 (an option must be changed).
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +23,13 @@ class UsageError : public std::runtime_error {
 
 /// An output cannot be written (directory not creatable, disk full, permission denied).
 class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A solver run cannot continue (divergence, a failed factorisation); the message names the
+/// iteration and the cause.
+class SolverError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

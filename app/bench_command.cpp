@@ -1,0 +1,109 @@
+// sdog bench: speed of the solver modes on the thesis protocol, as a table and CSV.
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "app/commands.h"
+#include "app/threads.h"
+#include "geometry/atomic_output.h"
+#include "geometry/errors.h"
+#include "solver/benchmark.h"
+#include "solver/mode_factory.h"
+
+namespace sdog::cli {
+namespace {
+
+struct BenchArgs {
+  std::vector<std::string> patterns;
+  std::vector<std::string> resolutions;
+  std::vector<std::string> modes{"standard"};
+  bool thesis_grid = false;
+  std::string patterns_dir = "../shared/reference/patterns";
+  int iterations = 250;
+  int repeat = 3;
+  int threads = 0;
+  std::string csv;
+};
+
+void print_row(const BenchResult& r) {
+  std::printf("%-18s %-6s %-9s %6d %6d %9.2f %9.5f %6.2f %9.2f %7.2f %10.4g %9.2g\n", r.pattern.c_str(), r.res.c_str(),
+              r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms, r.factorizations,
+              r.final_objective, r.dog_max);
+  std::fflush(stdout);
+}
+
+void bench(const BenchArgs& a) {
+  set_thread_count(a.threads);
+  for (const auto& m : a.modes) {
+    const auto names = mode_names();
+    if (std::find(names.begin(), names.end(), m) == names.end()) throw UsageError("--modes: unknown mode '" + m + "'");
+  }
+  std::vector<BenchCase> cases;
+  if (a.thesis_grid) {
+    for (const auto& m : a.modes)
+      for (auto& c : thesis_grid(a.patterns_dir, m)) cases.push_back(c);
+  } else {
+    if (a.patterns.empty() || a.resolutions.empty())
+      throw UsageError("give --pattern and --res (or --thesis-grid)");
+    for (const auto& p : a.patterns)
+      for (const auto& r : a.resolutions)
+        for (const auto& m : a.modes) cases.push_back({p, r, m});
+  }
+  std::unique_ptr<OutputSet> out;
+  std::string csv_name;
+  if (!a.csv.empty()) {
+    const std::filesystem::path path(a.csv);
+    out = std::make_unique<OutputSet>(path.has_parent_path() ? path.parent_path().string() : ".");
+    csv_name = path.filename().string();
+  }
+  BenchOptions options;
+  options.iterations = a.iterations;
+  options.repeat = a.repeat;
+  std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s\n", "pattern", "res", "mode", "verts", "dof",
+              "median_ms", "ms/dof", "steps", "factor_ms", "facts", "objective", "dog_max");
+  const bool tty = isatty(fileno(stderr));
+  std::string csv = bench_csv_header();
+  for (const auto& c : cases) {
+    auto progress = [&](int repeat, int iteration, int total) {
+      if (tty && (iteration % 10 == 0 || iteration == total))
+        std::fprintf(stderr, "\r  %s %s: run %d/%d, iteration %d/%d   ", c.res.c_str(), c.mode.c_str(), repeat + 1,
+                     options.repeat, iteration, total);
+    };
+    const BenchResult r = run_benchmark(c, options, progress);
+    if (tty) std::fprintf(stderr, "\r%70s\r", "");
+    print_row(r);
+    csv += bench_csv_row(r);
+  }
+  if (out) {
+    out->write_text(csv_name, csv);
+    for (const auto& f : out->commit()) std::cout << "wrote " << f << "\n";
+  }
+}
+
+}  // namespace
+
+void register_bench_command(CLI::App& app, Runner& runner) {
+  auto a = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Time solver modes on the thesis protocol (median ms per iteration over iterations 10-240)");
+  cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
+  cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
+  cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
+  cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
+  cmd->add_option("--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
+      ->capture_default_str();
+  cmd->add_option("--iters", a->iterations, "moving iterations of the protocol (hold: a fifth of that)")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--repeat", a->repeat, "runs per case (the median of their medians is reported)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
+  cmd->add_option("--csv", a->csv, "also write the table as CSV to this file");
+  cmd->callback([a, &runner]() { runner = [a]() { bench(*a); }; });
+}
+
+}  // namespace sdog::cli

@@ -1,0 +1,229 @@
+// sdog run: a deformation run (scenario, mode) with its run log, run.json and frames.
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/progress.h"
+#include "app/threads.h"
+#include "app/versions.h"
+#include "geometry/atomic_output.h"
+#include "geometry/errors.h"
+#include "geometry/text_format.h"
+#include "solver/mode_factory.h"
+#include "solver/run_log.h"
+#include "ui/vis/frame_writer.h"
+
+namespace sdog::cli {
+namespace {
+
+struct RunArgs {
+  PatternOptions pattern;
+  std::string mode = "standard";
+  std::string scenario = "corners";
+  std::string config;
+  std::string out;
+  double angle = 90;
+  int iterations = 250;
+  int hold = 50;
+  int frames_every = 10;
+  int threads = 0;
+  bool keep_failed = false;
+  bool quiet = false;
+  CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
+};
+
+std::atomic<bool> g_cancel{false};
+void on_interrupt(int) { g_cancel = true; }
+
+nlohmann::json diagnostics_json(const IterationReport& r) {
+  const Diagnostics& d = r.diagnostics;
+  nlohmann::json terms;
+  for (int k = 0; k < kTermCount; ++k) terms[term_name(k)] = d.terms[k];
+  return {{"iteration", r.iteration},
+          {"t", r.t},
+          {"objective", d.objective},
+          {"objective_final_targets", r.objective_final_targets},
+          {"terms_unweighted", terms},
+          {"dog_max", d.dog_max},
+          {"dog_l2", d.dog_l2},
+          {"stitch_gap_max", d.stitch_gap_max},
+          {"edge_strain_max", d.edge_strain_max},
+          {"folded", r.step.folded}};
+}
+
+// Totals over the iterations of a run.
+struct Totals : RunObserver {
+  int factorizations = 0, sqp_steps = 0, fold_retries = 0;
+  double worst_dog = 0, factor_ms = 0;
+  std::vector<double> iteration_ms;
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    factorizations += r.step.factorizations;
+    sqp_steps += r.step.sqp_steps;
+    fold_retries += r.step.fold_retries;
+    worst_dog = std::max(worst_dog, r.diagnostics.dog_max);
+    factor_ms += r.step.factor_ms;
+    iteration_ms.push_back(r.iteration_ms);
+  }
+  double median_ms() const {
+    if (iteration_ms.empty()) return 0;
+    std::vector<double> v = iteration_ms;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  }
+};
+
+void check_mode(const std::string& mode) {
+  const auto names = mode_names();
+  if (std::find(names.begin(), names.end(), mode) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw UsageError("--mode: unknown mode '" + mode + "' (known: " + known + ")");
+  }
+}
+
+void run(const RunArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  check_mode(a.mode);
+  set_thread_count(a.threads);
+  RunConfig config;
+  if (!a.config.empty()) read_run_config(a.config, config);
+  if (a.scenario_opt->count() || a.config.empty()) config.scenario = a.scenario;
+  if (a.iterations_opt->count()) config.iterations = a.iterations;
+  if (a.hold_opt->count()) config.hold = a.hold;
+  if (a.angle_opt->count()) config.fold_angle = a.angle;
+  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
+
+  // Fail on an unusable output directory before the work, not after it.
+  std::unique_ptr<OutputSet> out;
+  if (!a.out.empty()) out = std::make_unique<OutputSet>(a.out);
+
+  const DogModel model = build_model(a.pattern);
+  DogProblem problem(model.fine, model.fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model.fine);
+  if (scenario.positions.empty() && scenario.angles.empty())
+    throw UsageError(config.scenario == "fold"
+                         ? "the fold scenario found no fold sites in " + a.pattern.pattern + " at " +
+                               model.fine_res.str() +
+                               " (crease points strictly inside a grid edge between two patches; creases "
+                               "through grid vertices only have none: try another resolution)"
+                         : "the run has no targets: scenario '" + config.scenario +
+                               "' and no position or angle constraints in the configuration");
+  std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config);
+  Dofs x = scenario.start(model.fine);
+  const int total = scenario.iterations + scenario.hold;
+
+  RunCsv csv;
+  Totals totals;
+  ProgressBar progress(total, !a.quiet);
+  std::vector<RunObserver*> observers{&csv, &totals, &progress};
+  std::unique_ptr<vis::FrameWriter> frames;
+  if (out && a.frames_every > 0) {
+    frames = std::make_unique<vis::FrameWriter>(model, problem, *out, a.frames_every, total);
+    frames->write_start(x);
+    observers.push_back(frames.get());
+  }
+
+  g_cancel = false;
+  auto previous = std::signal(SIGINT, on_interrupt);
+  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel);
+  std::signal(SIGINT, previous);
+  progress.finish();
+  const bool cancelled = !summary.failed && summary.iterations < total;
+  const std::string status = summary.failed ? "failed" : cancelled ? "cancelled" : "completed";
+
+  std::vector<std::string> files;
+  if (out && (status == "completed" || a.keep_failed)) {
+    out->write_text("run.csv", csv.text());
+    nlohmann::json j = {
+        {"status", status},
+        {"pattern", a.pattern.pattern},
+        {"resolution", {{"fine", model.fine_res.str()}, {"coarse", model.has_coarse ? model.coarse_res.str() : ""}}},
+        {"mesh", {{"vertices", model.fine.vertex_count()}, {"quads", model.fine.quad_count()},
+                  {"patches", model.fine.patch_count()}, {"dof", 3 * model.fine.vertex_count()},
+                  {"dog_constraint_rows", problem.dog.row_count()}}},
+        {"mode", a.mode},
+        {"config", to_json(config)},
+        {"scenario", {{"name", scenario.name}, {"position_constraints", scenario.positions.size()},
+                      {"angle_constraints", scenario.angles.size()}}},
+        {"threads", a.threads},
+        {"software", software_versions()},
+        {"totals", {{"iterations", summary.iterations}, {"seconds", summary.seconds},
+                    {"median_iteration_ms", totals.median_ms()}, {"factorizations", totals.factorizations},
+                    {"sqp_steps", totals.sqp_steps}, {"fold_retries", totals.fold_retries},
+                    {"factor_ms", totals.factor_ms}, {"dog_max_over_run", totals.worst_dog}}},
+        {"final", diagnostics_json(summary.last)}};
+    if (summary.failed) j["failure"] = summary.failure;
+    out->write_text("run.json", j.dump(2) + "\n");
+    if (frames) frames->finish();
+    files = out->commit();
+  }
+
+  const IterationReport& last = summary.last;
+  if (summary.failed || cancelled) {
+    std::string msg = summary.failed ? "the solver failed at " + summary.failure
+                                     : "cancelled after " + std::to_string(summary.iterations) + " iterations";
+    if (out)
+      msg += files.empty() ? " (nothing written to " + a.out + "; --keep-failed keeps the log and frames up to here)"
+                           : " (log and frames up to here written to " + a.out + ")";
+    throw SolverError(msg);
+  }
+  std::cout << "sdog run: " << summary.iterations << " iterations of " << a.mode << " (" << scenario.name << ") on "
+            << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count() << " vertices) in "
+            << format_number(seconds_since(start)) << " s, median " << format_number(totals.median_ms())
+            << " ms/iteration\n"
+            << "final: objective " << format_number(last.diagnostics.objective) << ", DOG max "
+            << format_number(last.diagnostics.dog_max) << " (worst over the run " << format_number(totals.worst_dog)
+            << "), stitch gap " << format_number(last.diagnostics.stitch_gap_max) << ", "
+            << (last.step.folded ? "folded" : "NOT folded") << "\n";
+  if (out)
+    std::cout << "wrote " << a.out << "/run.csv, run.json"
+              << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")
+              << "\n";
+}
+
+}  // namespace
+
+void register_run_command(CLI::App& app, Runner& runner) {
+  auto a = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand("run", "Deform the DOG of a crease pattern with a solver mode over a scenario; "
+                                            "write the run log, run.json and VTK frames");
+  add_pattern_options(*cmd, a->pattern);
+  std::string modes;
+  for (const auto& n : mode_names()) modes += (modes.empty() ? "" : ", ") + n;
+  cmd->add_option("--mode", a->mode, "solver mode (" + modes + ")")->capture_default_str();
+  a->scenario_opt = cmd->add_option("--scenario", a->scenario,
+                                    "corners: the thesis protocol (first grid corner held, last one dragged); "
+                                    "fold: every crease folds from flat to --angle; none: only the --config constraints")
+                        ->check(CLI::IsMember({"corners", "fold", "none"}))
+                        ->capture_default_str();
+  a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario (degrees)")
+                     ->check(CLI::Range(-180.0, 180.0))
+                     ->capture_default_str();
+  a->iterations_opt =
+      cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
+          ->check(CLI::Range(0, 1000000))
+          ->capture_default_str();
+  a->hold_opt = cmd->add_option("--hold", a->hold, "iterations with the final targets")
+                    ->check(CLI::Range(0, 1000000))
+                    ->capture_default_str();
+  cmd->add_option("--config", a->config,
+                  "JSON file with constraints, iteration counts, weights and solver options (command-line "
+                  "options win); see README, 'Run configuration'");
+  cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu");
+  cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); the factorisation always uses SDOG_BLAS_THREADS (default 2) BLAS threads, so results do not depend on this")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_flag("--keep-failed", a->keep_failed, "write the log and frames even when the run fails or is cancelled");
+  cmd->add_flag("-q,--quiet", a->quiet, "no progress bar");
+  cmd->callback([a, &runner]() { runner = [a]() { run(*a); }; });
+}
+
+}  // namespace sdog::cli

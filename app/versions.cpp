@@ -1,0 +1,31 @@
+#include "app/versions.h"
+
+#include <CGAL/version.h>
+#include <ceres/version.h>
+#include <cholmod.h>
+#include <tbb/version.h>
+#include <vtkVersion.h>
+
+#include <Eigen/Core>
+#include <string>
+
+namespace sdog::cli {
+
+nlohmann::json software_versions() {
+  auto dotted = [](int a, int b, int c) {
+    return std::to_string(a) + "." + std::to_string(b) + "." + std::to_string(c);
+  };
+  return {{"sdog", SDOG_VERSION},
+          {"sdog_commit", SDOG_GIT_COMMIT},
+          {"compiler", __VERSION__},
+          {"eigen", dotted(EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
+          {"cgal", CGAL_VERSION_STR},
+          {"ceres", CERES_VERSION_STRING},
+          {"cholmod", dotted(CHOLMOD_MAIN_VERSION, CHOLMOD_SUB_VERSION, CHOLMOD_SUBSUB_VERSION)},
+          {"tbb", TBB_VERSION_STRING},
+          {"vtk", vtkVersion::GetVTKVersion()},
+          {"nlohmann_json",
+           dotted(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)}};
+}
+
+}  // namespace sdog::cli

@@ -1,0 +1,115 @@
+#include "solver/benchmark.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "geometry/errors.h"
+#include "solver/mode_factory.h"
+#include "solver/run.h"
+#include "solver/run_config.h"
+
+namespace sdog {
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+struct Recorder : RunObserver {
+  int repeat = 0, total = 0;
+  std::vector<double> window_ms;
+  double factor_ms = 0, sqp_steps = 0, factorizations = 0, worst_dog = 0;
+  const std::function<void(int, int, int)>* progress = nullptr;
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    worst_dog = std::max(worst_dog, r.diagnostics.dog_max);
+    if (r.iteration >= 10 && r.iteration <= 240) {
+      window_ms.push_back(r.iteration_ms);
+      factor_ms += r.step.factor_ms;
+      sqp_steps += r.step.sqp_steps;
+      factorizations += r.step.factorizations;
+    }
+    if (progress && *progress) (*progress)(repeat, r.iteration, total);
+  }
+};
+
+}  // namespace
+
+BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
+                          const std::function<void(int, int, int)>& progress) {
+  MeshOptions mesh_options;
+  mesh_options.build_coarse = mode_needs_coarse(c.mode);
+  const DogModel model = build_dog_model(read_crease_pattern(c.pattern), parse_resolution(c.res), mesh_options);
+  RunConfig config;
+  config.iterations = options.iterations;
+  config.hold = options.iterations / 5;
+  BenchResult result;
+  result.pattern = std::filesystem::path(c.pattern).stem().string();
+  result.res = c.res;
+  result.mode = c.mode;
+  result.vertices = model.fine.vertex_count();
+  result.dof = 3 * result.vertices;
+  double factor_ms = 0, sqp_steps = 0, factorizations = 0;
+  int window = 0;
+  for (int k = 0; k < std::max(1, options.repeat); ++k) {
+    DogProblem problem(model.fine, model.fine_topology, config.weights);
+    const Scenario scenario = make_scenario(config, model.fine);
+    auto mode = make_mode(c.mode, problem, scenario, config);
+    Dofs x = scenario.start(model.fine);
+    Recorder rec;
+    rec.repeat = k;
+    rec.total = scenario.iterations + scenario.hold;
+    rec.progress = &progress;
+    const RunSummary s = run_scenario(*mode, problem, scenario, x, {&rec});
+    if (s.failed) throw SolverError(result.pattern + " " + c.res + " " + c.mode + ": " + s.failure);
+    result.run_medians.push_back(median(rec.window_ms));
+    factor_ms += rec.factor_ms;
+    sqp_steps += rec.sqp_steps;
+    factorizations += rec.factorizations;
+    window += static_cast<int>(rec.window_ms.size());
+    result.final_objective = s.last.diagnostics.objective;
+    result.dog_max = s.last.diagnostics.dog_max;
+    result.dog_max_over_run = std::max(result.dog_max_over_run, rec.worst_dog);
+  }
+  result.median_ms = median(result.run_medians);
+  result.ms_per_dof = result.median_ms / result.dof;
+  if (window > 0) {
+    result.factor_ms = factor_ms / window;
+    result.sqp_steps = sqp_steps / window;
+    result.factorizations = factorizations / window;
+  }
+  return result;
+}
+
+std::string bench_csv_header() {
+  return "pattern,res,mode,vertices,dof,median_ms,ms_per_dof,sqp_steps,factor_ms,final_objective,dog_max,"
+         "factorizations,dog_max_over_run,repeats\n";
+}
+
+std::string bench_csv_row(const BenchResult& r) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%s,%s,%s,%d,%d,%.4g,%.4g,%.4g,%.4g,%.6g,%.3g,%.4g,%.3g,%zu\n", r.pattern.c_str(),
+                r.res.c_str(), r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms,
+                r.final_objective, r.dog_max, r.factorizations, r.dog_max_over_run, r.run_medians.size());
+  return buf;
+}
+
+std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mode) {
+  const std::pair<const char*, std::vector<const char*>> grid[] = {
+      {"1_curve", {"31x21", "43x31", "55x41", "81x59"}},
+      {"4_corners", {"21x21", "41x41", "61x61", "81x81"}},
+      {"valley", {"21x21", "41x41", "61x61", "81x81"}},
+      {"parallel_curves_4", {"27x45", "39x65", "45x75", "51x85"}}};
+  std::vector<BenchCase> cases;
+  for (const auto& [name, resolutions] : grid) {
+    const std::string path = dir + "/" + name + ".svg";
+    if (!std::filesystem::exists(path))
+      throw InputError(path + ": thesis pattern not found (pass the folder with --patterns)");
+    for (const char* res : resolutions) cases.push_back({path, res, mode});
+  }
+  return cases;
+}
+
+}  // namespace sdog

@@ -1,0 +1,52 @@
+#pragma once
+// The speed benchmark (`sdog bench`): the corners protocol on a pattern at a resolution with one
+// mode, repeated; per-iteration times over iterations 10-240 (the thesis's window), medians of the
+// repeats.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "geometry/dog_model.h"
+
+namespace sdog {
+
+struct BenchCase {
+  std::string pattern;  ///< SVG path
+  std::string res;      ///< "XxY"
+  std::string mode;
+};
+
+struct BenchOptions {
+  int iterations = 250;  ///< moving iterations of the protocol (hold: a fifth of that)
+  int repeat = 3;
+};
+
+struct BenchResult {
+  std::string pattern;  ///< file stem
+  std::string res, mode;
+  int vertices = 0, dof = 0;
+  double median_ms = 0;   ///< median over repeats of the per-run median iteration time
+  double ms_per_dof = 0;
+  double sqp_steps = 0;   ///< mean per iteration
+  double factor_ms = 0;   ///< mean factorisation + solve time per iteration (timed window)
+  double factorizations = 0;  ///< mean per iteration
+  double final_objective = 0;
+  double dog_max = 0;     ///< at the last iteration
+  double dog_max_over_run = 0;
+  std::vector<double> run_medians;  ///< per repeat
+};
+
+/// Runs one case; `progress(repeat, iteration, total)` is called after every iteration.
+BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
+                          const std::function<void(int, int, int)>& progress = {});
+
+/// The CSV header and row of a result (columns: pattern, res, mode, vertices, dof, median_ms,
+/// ms_per_dof, sqp_steps, factor_ms, final_objective, dog_max, factorizations, dog_max_over_run,
+/// repeats).
+std::string bench_csv_header();
+std::string bench_csv_row(const BenchResult& r);
+
+/// The 16 cases of the thesis (Table 6.1) for patterns in `dir`.
+std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mode);
+
+}  // namespace sdog

@@ -1,0 +1,76 @@
+#pragma once
+// The terms of a deformation problem on one DOG mesh, with the thesis's default weights:
+// bending 1, isometry 20000/|E| (|E| = all quad edges, duplicates included), stitching 10,
+// positions 25, edge points 25, angles 1000, fold bias 1, link 0 (used by the coarse modes).
+#include <string>
+#include <vector>
+
+#include "geometry/dog_mesh.h"
+#include "geometry/quad_topology.h"
+#include "solver/bending.h"
+#include "solver/crease_geometry.h"
+#include "solver/dog_constraints.h"
+#include "solver/edge_angles.h"
+#include "solver/fold_bias.h"
+#include "solver/isometry.h"
+#include "solver/linear_point_term.h"
+#include "solver/sqp_solver.h"
+
+namespace sdog {
+
+struct Weights {
+  double bending = 1;
+  double isometry = 20000;  ///< divided by the number of quad edges
+  double stitching = 10;
+  double positions = 25;
+  double edge_points = 25;
+  double angles = 1000;
+  double fold_bias = 1;
+  double link = 0;
+  std::string validate() const;
+};
+
+/// Index of each objective term in DogProblem::objective_terms() (the run log's column order).
+enum TermIndex : int {
+  kBending = 0,
+  kIsometry,
+  kPositions,
+  kEdgePoints,
+  kStitching,
+  kAngles,
+  kFoldBias,
+  kLink,
+  kTermCount
+};
+const char* term_name(int index);
+
+class DogProblem {
+ public:
+  DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& weights = {});
+  DogProblem(const DogProblem&) = delete;
+  DogProblem& operator=(const DogProblem&) = delete;
+
+  const DogMesh& mesh() const { return mesh_; }
+  const QuadTopology& topology() const { return topology_; }
+  const Dofs& rest() const { return rest_; }
+
+  /// The objective terms (in TermIndex order) with their effective weights.
+  std::vector<WeightedTerm> objective_terms() const;
+  double effective_weight(int index) const;
+
+  Weights weights;
+  LinearPointTerm bending{"bending"};
+  IsometryTerm isometry;
+  LinearPointTerm positions{"positions"}, edge_points{"edge_points"}, stitching{"stitching"}, link{"link"};
+  EdgeAngleTerm angles;
+  std::vector<FoldSite> sites;
+  FoldBiasTerm fold_bias;
+  DogConstraints dog;
+
+ private:
+  const DogMesh& mesh_;
+  const QuadTopology& topology_;
+  Dofs rest_;
+};
+
+}  // namespace sdog

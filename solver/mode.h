@@ -1,0 +1,35 @@
+#pragma once
+// A solver mode: how one iteration of a deformation run is computed. Modes share the iteration
+// report, the scenario and the diagnostics; the run driver (run.h) is mode independent.
+#include <string>
+
+#include "solver/scenario.h"
+#include "solver/term.h"
+
+namespace sdog {
+
+/// Solver-side facts of one iteration (the run driver adds the diagnostics).
+struct StepReport {
+  int sqp_steps = 0;
+  int factorizations = 0;
+  int restoration_steps = 0;
+  double step_length = 0;
+  int fold_retries = 0;
+  bool folded = true;
+  double factor_ms = 0;  ///< numeric factorisation and triangular solves
+  bool failed = false;
+  std::string failure;  ///< why; the mode rolled x back
+};
+
+class Mode {
+ public:
+  virtual ~Mode() = default;
+  virtual const char* name() const = 0;
+  /// Sets every target the mode uses for scenario time t in [0, 1].
+  virtual void set_time(double t) = 0;
+  /// One iteration on the fine positions x (rolled back on failure). `last`: the run's last
+  /// iteration, which ends with the constraints restored to the final tolerance.
+  virtual StepReport iterate(Dofs& x, bool last) = 0;
+};
+
+}  // namespace sdog

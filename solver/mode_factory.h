@@ -1,0 +1,22 @@
+#pragma once
+// Solver modes by name (`sdog run --mode`, `sdog bench --modes`).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/mode.h"
+#include "solver/run_config.h"
+
+namespace sdog {
+
+/// The names `make_mode` accepts, in the order of the documentation.
+std::vector<std::string> mode_names();
+/// True when the mode needs the coarse mesh and the fine-coarse map.
+bool mode_needs_coarse(const std::string& name);
+
+/// The mode `name` on the problem (which must outlive it) with the config's solver options.
+/// Throws UsageError for unknown names.
+std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
+                                const RunConfig& config);
+
+}  // namespace sdog

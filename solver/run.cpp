@@ -1,0 +1,43 @@
+#include "solver/run.h"
+
+#include <chrono>
+
+namespace sdog {
+
+RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  RunSummary summary;
+  const int total = scenario.iterations + scenario.hold;
+  for (int k = 1; k <= total; ++k) {
+    if (cancel && cancel->load()) break;
+    IterationReport report;
+    report.iteration = k;
+    report.t = scenario.time_of(k);
+    mode.set_time(report.t);
+    const auto t0 = Clock::now();
+    report.step = mode.iterate(x, k == total);
+    report.iteration_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    report.diagnostics = diagnose(problem, x);
+    if (report.t < 1) {
+      scenario.apply(problem, 1.0);
+      report.objective_final_targets = weighted_objective(problem, x);
+      scenario.apply(problem, report.t);
+    } else {
+      report.objective_final_targets = report.diagnostics.objective;
+    }
+    for (RunObserver* o : observers) o->on_iteration(report, x);
+    summary.last = report;
+    if (report.step.failed) {
+      summary.failed = true;
+      summary.failure = "iteration " + std::to_string(k) + ": " + report.step.failure;
+      break;
+    }
+    summary.iterations = k;
+  }
+  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace sdog

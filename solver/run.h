@@ -1,0 +1,43 @@
+#pragma once
+// A deformation run: the scenario's iterations (targets moving, then held), each computed by a
+// mode and reported with the same diagnostics, to observers (run log, frames, progress, GUI).
+#include <atomic>
+#include <functional>
+#include <vector>
+
+#include "solver/diagnostics.h"
+#include "solver/mode.h"
+
+namespace sdog {
+
+struct IterationReport {
+  int iteration = 0;  ///< 1-based
+  double t = 0;       ///< scenario time of the targets
+  Diagnostics diagnostics;
+  double objective_final_targets = 0;  ///< weighted objective with the targets of t = 1
+  StepReport step;
+  double iteration_ms = 0;
+};
+
+/// Receives every iteration (and the state after it).
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void on_iteration(const IterationReport& report, const Dofs& x) = 0;
+};
+
+struct RunSummary {
+  int iterations = 0;  ///< completed iterations
+  bool failed = false;
+  std::string failure;
+  IterationReport last;
+  double seconds = 0;
+};
+
+/// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
+/// problem the diagnostics are measured on (its targets follow the scenario too). Stops at the
+/// first failed iteration (x keeps the last good state) or when `cancel` becomes true.
+RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace sdog

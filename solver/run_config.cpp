@@ -1,0 +1,320 @@
+#include "solver/run_config.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "geometry/errors.h"
+#include "geometry/text_format.h"
+
+namespace sdog {
+namespace {
+
+using nlohmann::json;
+
+// Walks a JSON value with its path; every error names the file and the path.
+class Field {
+ public:
+  Field(const json& value, std::string path, const std::string& source)
+      : v_(value), path_(std::move(path)), source_(source) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(source_ + ": " + path_ + ": " + what); }
+  const std::string& path() const { return path_; }
+  const json& value() const { return v_; }
+
+  /// The object's members; unknown keys are errors.
+  void expect_object(std::initializer_list<const char*> known) const {
+    if (!v_.is_object()) fail("expected an object");
+    const std::set<std::string> allowed(known.begin(), known.end());
+    for (auto it = v_.begin(); it != v_.end(); ++it)
+      if (!allowed.count(it.key())) {
+        std::string list;
+        for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+        throw InputError(source_ + ": " + path_ + "." + it.key() + ": unknown key (known: " + list + ")");
+      }
+  }
+  bool has(const char* key) const { return v_.contains(key); }
+  Field operator[](const char* key) const { return Field(v_.at(key), path_ + "." + key, source_); }
+  Field operator[](size_t i) const { return Field(v_.at(i), path_ + "[" + std::to_string(i) + "]", source_); }
+
+  double number() const {
+    if (!v_.is_number()) fail("expected a number");
+    const double d = v_.get<double>();
+    if (!std::isfinite(d)) fail("expected a finite number");
+    return d;
+  }
+  double positive() const {
+    const double d = number();
+    if (!(d > 0)) fail("expected a number > 0, got " + format_number(d));
+    return d;
+  }
+  double non_negative() const {
+    const double d = number();
+    if (!(d >= 0)) fail("expected a number >= 0, got " + format_number(d));
+    return d;
+  }
+  int integer(int min) const {
+    if (!v_.is_number_integer()) fail("expected an integer");
+    const long long i = v_.get<long long>();
+    if (i < min || i > 100000000) fail("expected an integer >= " + std::to_string(min) + ", got " + std::to_string(i));
+    return static_cast<int>(i);
+  }
+  bool boolean() const {
+    if (!v_.is_boolean()) fail("expected true or false");
+    return v_.get<bool>();
+  }
+  std::string text() const {
+    if (!v_.is_string()) fail("expected a string");
+    return v_.get<std::string>();
+  }
+  template <int N>
+  Eigen::Matrix<double, N, 1> vector() const {
+    if (!v_.is_array() || v_.size() != N) fail("expected an array of " + std::to_string(N) + " numbers");
+    Eigen::Matrix<double, N, 1> out;
+    for (int i = 0; i < N; ++i) out[i] = (*this)[static_cast<size_t>(i)].number();
+    return out;
+  }
+  size_t array_size() const {
+    if (!v_.is_array()) fail("expected an array");
+    return v_.size();
+  }
+
+ private:
+  const json& v_;
+  std::string path_;
+  const std::string& source_;
+};
+
+void apply_weights(const Field& f, Weights& w) {
+  f.expect_object({"bending", "isometry", "stitching", "positions", "edge_points", "angles", "fold_bias", "link"});
+  const std::pair<const char*, double*> all[] = {{"bending", &w.bending},       {"isometry", &w.isometry},
+                                                 {"stitching", &w.stitching},   {"positions", &w.positions},
+                                                 {"edge_points", &w.edge_points}, {"angles", &w.angles},
+                                                 {"fold_bias", &w.fold_bias},   {"link", &w.link}};
+  for (const auto& [key, target] : all)
+    if (f.has(key)) *target = f[key].non_negative();
+}
+
+void apply_solver(const Field& f, StandardOptions& o) {
+  f.expect_object({"kkt_tolerance", "max_steps", "epsilon", "restoration_epsilon", "merit_penalty",
+                   "trusted_backtracks", "constraint_tolerance", "final_constraint_tolerance",
+                   "max_restoration_steps", "polish_steps", "local_rings", "local_fraction", "armijo",
+                   "max_backtracks", "regularization", "rho_max", "second_order_correction",
+                   "lagrangian_hessian", "folding", "max_fold_bias"});
+  SqpOptions& s = o.sqp;
+  const std::pair<const char*, double*> positive[] = {
+      {"kkt_tolerance", &s.kkt_tolerance},     {"epsilon", &s.epsilon},
+      {"restoration_epsilon", &s.restoration_epsilon}, {"merit_penalty", &s.merit_penalty},
+      {"constraint_tolerance", &s.constraint_tolerance},
+      {"final_constraint_tolerance", &s.final_constraint_tolerance},
+      {"armijo", &s.armijo},                   {"rho_max", &s.rho_max},
+      {"max_fold_bias", &o.max_fold_bias}};
+  for (const auto& [key, target] : positive)
+    if (f.has(key)) *target = f[key].positive();
+  const std::pair<const char*, int*> counts[] = {{"max_steps", &s.max_steps},
+                                                 {"trusted_backtracks", &s.trusted_backtracks},
+                                                 {"max_restoration_steps", &s.max_restoration_steps},
+                                                 {"polish_steps", &s.polish_steps},
+                                                 {"local_rings", &s.local_rings},
+                                                 {"max_backtracks", &s.max_backtracks}};
+  for (const auto& [key, target] : counts)
+    if (f.has(key)) *target = f[key].integer(0);
+  if (f.has("local_fraction")) s.local_fraction = f["local_fraction"].non_negative();
+  if (f.has("regularization")) s.regularization = f["regularization"].non_negative();
+  if (f.has("second_order_correction")) s.second_order_correction = f["second_order_correction"].boolean();
+  if (f.has("lagrangian_hessian")) s.lagrangian_hessian = f["lagrangian_hessian"].boolean();
+  if (f.has("folding")) o.folding = f["folding"].boolean();
+}
+
+PositionSpec position_spec(const Field& f) {
+  f.expect_object({"vertex", "near", "start", "end", "move"});
+  PositionSpec p;
+  p.path = f.path();
+  if (f.has("vertex") == f.has("near")) f.fail("give exactly one of \"vertex\" (an index) and \"near\" ([x, y] in sheet units)");
+  if (f.has("end") == f.has("move")) f.fail("give exactly one of \"end\" ([x, y, z]) and \"move\" ([dx, dy, dz])");
+  if (f.has("vertex")) p.vertex = f["vertex"].integer(0);
+  if (f.has("near")) p.near = f["near"].vector<2>();
+  if (f.has("start")) p.start = f["start"].vector<3>();
+  if (f.has("end")) p.end = f["end"].vector<3>();
+  if (f.has("move")) p.move = f["move"].vector<3>();
+  return p;
+}
+
+AngleSpec angle_spec(const Field& f) {
+  f.expect_object({"crease_point", "curve", "start", "end"});
+  AngleSpec a;
+  a.path = f.path();
+  if (f.has("crease_point") == f.has("curve"))
+    f.fail("give exactly one of \"crease_point\" (an index) and \"curve\" (a crease curve index)");
+  if (!f.has("end")) f.fail("missing \"end\" (the final dihedral angle in degrees)");
+  if (f.has("crease_point")) a.point = f["crease_point"].integer(0);
+  if (f.has("curve")) a.curve = f["curve"].integer(0);
+  if (f.has("start")) a.start_degrees = f["start"].number();
+  a.end_degrees = f["end"].number();
+  for (double d : {a.start_degrees, a.end_degrees})
+    if (std::abs(d) > 180) f.fail("angles must be in [-180, 180] degrees");
+  return a;
+}
+
+}  // namespace
+
+void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
+  const Field root(j, "$", source);
+  root.expect_object({"scenario", "iterations", "hold", "angle", "weights", "solver", "positions", "angles"});
+  if (root.has("scenario")) {
+    c.scenario = root["scenario"].text();
+    if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none")
+      root["scenario"].fail("expected \"corners\", \"fold\" or \"none\", got \"" + c.scenario + "\"");
+  }
+  if (root.has("iterations")) c.iterations = root["iterations"].integer(0);
+  if (root.has("hold")) c.hold = root["hold"].integer(0);
+  if (root.has("angle")) c.fold_angle = root["angle"].number();
+  if (root.has("weights")) apply_weights(root["weights"], c.weights);
+  if (root.has("solver")) apply_solver(root["solver"], c.standard);
+  if (root.has("positions")) {
+    const Field list = root["positions"];
+    c.positions.clear();
+    for (size_t i = 0; i < list.array_size(); ++i) c.positions.push_back(position_spec(list[i]));
+  }
+  if (root.has("angles")) {
+    const Field list = root["angles"];
+    c.angles.clear();
+    for (size_t i = 0; i < list.array_size(); ++i) c.angles.push_back(angle_spec(list[i]));
+  }
+  validate_run_config(c, source);
+}
+
+void read_run_config(const std::string& path, RunConfig& config) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the configuration file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(path + ": not valid JSON (" + e.what() + ")");
+  }
+  apply_run_config(j, path, config);
+}
+
+void validate_run_config(const RunConfig& c, const std::string& source) {
+  if (c.iterations + c.hold < 1) throw InputError(source + ": iterations + hold must be at least 1");
+  if (!(std::abs(c.fold_angle) <= 180))
+    throw InputError(source + ": $.angle: the fold angle must be in [-180, 180] degrees");
+  if (const std::string m = c.weights.validate(); !m.empty()) throw InputError(source + ": $.weights: " + m);
+  if (const std::string m = c.standard.validate(); !m.empty()) throw InputError(source + ": $.solver: " + m);
+}
+
+Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
+  Scenario s;
+  if (c.scenario == "corners") s = corners_scenario(mesh, c.iterations, c.hold);
+  if (c.scenario == "fold") s = fold_scenario(mesh, c.fold_angle, c.iterations, c.hold);
+  if (c.scenario == "none") s.name = "none";
+  s.iterations = c.iterations;
+  s.hold = c.hold;
+  for (const auto& p : c.positions) {
+    int v = -1;
+    if (p.vertex) {
+      if (*p.vertex >= mesh.vertex_count())
+        throw InputError(p.path + ".vertex: the fine mesh has " + std::to_string(mesh.vertex_count()) +
+                         " vertices, there is no vertex " + std::to_string(*p.vertex));
+      v = *p.vertex;
+    } else {
+      const Eigen::Vector2d target = mesh.to_mesh(*p.near);
+      double best = 0;
+      for (int u = 0; u < mesh.vertex_count(); ++u) {
+        const double d = (mesh.V.row(u).head<2>().transpose() - target).squaredNorm();
+        if (v < 0 || d < best) v = u, best = d;
+      }
+    }
+    PositionConstraint pc;
+    pc.vertex = v;
+    pc.start = p.start ? *p.start : Eigen::Vector3d(mesh.V.row(v).transpose());
+    pc.end = p.end ? *p.end : Eigen::Vector3d(pc.start + *p.move);
+    s.positions.push_back(pc);
+  }
+  const auto sites = fold_sites(mesh);
+  s.curve_signs.resize(mesh.stitching.curves.size(), 0.0);
+  auto set_sign = [&](int curve, double degrees) {
+    if (degrees != 0) s.curve_signs[curve] = degrees > 0 ? 1.0 : -1.0;
+  };
+  for (const auto& a : c.angles) {
+    if (a.point) {
+      bool found = false;
+      for (const auto& site : sites) found = found || site.point == *a.point;
+      if (!found)
+        throw InputError(a.path + ".crease_point: crease point " + std::to_string(*a.point) +
+                         " is not a fold site (an interior crease point on an edge between two patches; the mesh "
+                         "has " + std::to_string(sites.size()) + " of them, see `sdog mesh --out` creases.vtp)");
+      s.angles.push_back(angle_constraint(mesh, *a.point, a.start_degrees, a.end_degrees));
+      for (const auto& site : sites)
+        if (site.point == *a.point) set_sign(site.curve, a.end_degrees);
+    } else {
+      if (*a.curve >= static_cast<int>(mesh.stitching.curves.size()))
+        throw InputError(a.path + ".curve: the pattern has " + std::to_string(mesh.stitching.curves.size()) +
+                         " crease curves, there is no curve " + std::to_string(*a.curve));
+      for (const auto& site : sites)
+        if (site.curve == *a.curve) s.angles.push_back(angle_constraint(mesh, site.point, a.start_degrees, a.end_degrees));
+      set_sign(*a.curve, a.end_degrees);
+    }
+  }
+  return s;
+}
+
+nlohmann::json to_json(const RunConfig& c) {
+  const SqpOptions& s = c.standard.sqp;
+  const Weights& w = c.weights;
+  json positions = json::array(), angles = json::array();
+  for (const auto& p : c.positions) {
+    json e;
+    if (p.vertex) e["vertex"] = *p.vertex;
+    if (p.near) e["near"] = {p.near->x(), p.near->y()};
+    if (p.start) e["start"] = {p.start->x(), p.start->y(), p.start->z()};
+    if (p.end) e["end"] = {p.end->x(), p.end->y(), p.end->z()};
+    if (p.move) e["move"] = {p.move->x(), p.move->y(), p.move->z()};
+    positions.push_back(e);
+  }
+  for (const auto& a : c.angles) {
+    json e{{"start", a.start_degrees}, {"end", a.end_degrees}};
+    if (a.point) e["crease_point"] = *a.point;
+    if (a.curve) e["curve"] = *a.curve;
+    angles.push_back(e);
+  }
+  return {{"scenario", c.scenario},
+          {"iterations", c.iterations},
+          {"hold", c.hold},
+          {"angle", c.fold_angle},
+          {"weights",
+           {{"bending", w.bending},
+            {"isometry", w.isometry},
+            {"stitching", w.stitching},
+            {"positions", w.positions},
+            {"edge_points", w.edge_points},
+            {"angles", w.angles},
+            {"fold_bias", w.fold_bias},
+            {"link", w.link}}},
+          {"solver",
+           {{"kkt_tolerance", s.kkt_tolerance},
+            {"max_steps", s.max_steps},
+            {"epsilon", s.epsilon},
+            {"restoration_epsilon", s.restoration_epsilon},
+            {"merit_penalty", s.merit_penalty},
+            {"trusted_backtracks", s.trusted_backtracks},
+            {"constraint_tolerance", s.constraint_tolerance},
+            {"final_constraint_tolerance", s.final_constraint_tolerance},
+            {"max_restoration_steps", s.max_restoration_steps},
+            {"polish_steps", s.polish_steps},
+            {"local_rings", s.local_rings},
+            {"local_fraction", s.local_fraction},
+            {"armijo", s.armijo},
+            {"max_backtracks", s.max_backtracks},
+            {"regularization", s.regularization},
+            {"rho_max", s.rho_max},
+            {"second_order_correction", s.second_order_correction},
+            {"lagrangian_hessian", s.lagrangian_hessian},
+            {"folding", c.standard.folding},
+            {"max_fold_bias", c.standard.max_fold_bias}}},
+          {"positions", positions},
+          {"angles", angles}};
+}
+
+}  // namespace sdog

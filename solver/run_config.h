@@ -1,0 +1,61 @@
+#pragma once
+// Everything a deformation run is set up from: the scenario, its iteration counts, weights and
+// solver options, and extra position and angle constraints. Read from a JSON file (see the README,
+// "Run configuration"); every unknown key and bad value is an InputError naming the file and the
+// JSON path, e.g. `run.json: $.positions[1].end: expected an array of 3 numbers`.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver/scenario.h"
+#include "solver/standard_mode.h"
+
+namespace sdog {
+
+/// A position constraint before it is resolved against a mesh.
+struct PositionSpec {
+  std::string path;                      ///< JSON path, for messages
+  std::optional<int> vertex;             ///< fine vertex index ...
+  std::optional<Eigen::Vector2d> near;   ///< ... or the vertex nearest this flat-state point (sheet units)
+  std::optional<Eigen::Vector3d> start;  ///< mesh units; default: the vertex's flat position
+  std::optional<Eigen::Vector3d> end;    ///< absolute target, mesh units ...
+  std::optional<Eigen::Vector3d> move;   ///< ... or displacement from start
+};
+
+/// An angle constraint before it is resolved: one crease point, or every fold site of a curve.
+struct AngleSpec {
+  std::string path;
+  std::optional<int> point;
+  std::optional<int> curve;
+  double start_degrees = 0;
+  double end_degrees = 0;
+};
+
+struct RunConfig {
+  std::string scenario = "corners";  ///< corners | fold | none (only the listed constraints)
+  int iterations = 250;              ///< iterations over which targets move
+  int hold = 50;                     ///< iterations with the final targets
+  double fold_angle = 90;            ///< degrees, the fold scenario's final dihedral angle
+  Weights weights;
+  StandardOptions standard;
+  std::vector<PositionSpec> positions;
+  std::vector<AngleSpec> angles;
+};
+
+/// Overrides the fields present in `json` (an object); `source` names the file in messages.
+void apply_run_config(const nlohmann::json& json, const std::string& source, RunConfig& config);
+/// Reads and applies a JSON file.
+void read_run_config(const std::string& path, RunConfig& config);
+/// Checks the values (InputError naming the field).
+void validate_run_config(const RunConfig& config, const std::string& source);
+
+/// The scenario on a fine mesh: the named one plus the listed constraints. Throws InputError for
+/// vertex or crease-point indices that do not exist (naming the JSON path).
+Scenario make_scenario(const RunConfig& config, const DogMesh& mesh);
+
+/// Every parameter as JSON (for run.json).
+nlohmann::json to_json(const RunConfig& config);
+
+}  // namespace sdog

@@ -1,0 +1,62 @@
+#include "solver/standard_mode.h"
+
+namespace sdog {
+
+std::string StandardOptions::validate() const {
+  if (const std::string m = sqp.validate(); !m.empty()) return m;
+  if (!(max_fold_bias > 0)) return "max_fold_bias must be positive";
+  return "";
+}
+
+StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
+    : problem_(problem), scenario_(scenario), options_(options), base_fold_bias_(problem.weights.fold_bias) {
+  scenario_.install(problem_);
+  if (!options_.folding) problem_.weights.fold_bias = 0;
+  sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(), problem_.dog,
+                                     options_.sqp);
+}
+
+void StandardMode::set_time(double t) { scenario_.apply(problem_, t); }
+
+StepReport StandardMode::iterate(Dofs& x, bool last) {
+  StepReport report;
+  auto run = [&]() {
+    const SqpReport r = sqp_->iterate(x, last);
+    report.sqp_steps += r.steps;
+    report.factorizations += r.factorizations;
+    report.restoration_steps += r.restoration_steps;
+    report.step_length = r.step_length;
+    report.factor_ms += r.factor_ms;
+    report.failed = r.failed;
+    report.failure = r.failure;
+    return !r.failed;
+  };
+  if (!options_.folding) {
+    run();
+    return report;
+  }
+  const Dofs x0 = x;
+  const Eigen::VectorXd lambda0 = sqp_->multipliers();
+  if (!run()) return report;
+  report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;
+  // As in the reference: an escalated bias stays for the next iteration and returns to its base
+  // value once an iteration ends folded.
+  double weight = problem_.weights.fold_bias;
+  while (!report.folded && weight * 10 <= options_.max_fold_bias) {
+    x = x0;
+    sqp_->set_multipliers(lambda0);
+    set_fold_bias(weight *= 10);
+    ++report.fold_retries;
+    if (!run()) return report;
+    report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;
+  }
+  if (report.folded && report.fold_retries == 0) set_fold_bias(base_fold_bias_);
+  return report;
+}
+
+void StandardMode::set_fold_bias(double weight) {
+  problem_.weights.fold_bias = weight;
+  sqp_->set_weight(kFoldBias, weight);
+}
+
+}  // namespace sdog

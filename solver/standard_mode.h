@@ -1,0 +1,37 @@
+#pragma once
+// The standard mode: the global SQP solver (sqp_solver.h) on the whole fine DOG, in folding mode
+// by default: after an iteration that leaves the sheet unfolded (check_folded), x is rolled back,
+// the fold-bias weight multiplied by 10 and the iteration solved again, up to a weight of 1e14;
+// after a folded iteration the weight returns to its base value.
+#include <memory>
+
+#include "solver/mode.h"
+
+namespace sdog {
+
+struct StandardOptions {
+  SqpOptions sqp;
+  bool folding = true;
+  double max_fold_bias = 1e14;
+  std::string validate() const;
+};
+
+class StandardMode : public Mode {
+ public:
+  /// The problem must outlive the mode; the scenario is installed into it.
+  StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options);
+  const char* name() const override { return "standard"; }
+  void set_time(double t) override;
+  StepReport iterate(Dofs& x, bool last) override;
+  SqpSolver& sqp() { return *sqp_; }
+
+ private:
+  void set_fold_bias(double weight);
+  DogProblem& problem_;
+  Scenario scenario_;
+  StandardOptions options_;
+  std::unique_ptr<SqpSolver> sqp_;
+  double base_fold_bias_;
+};
+
+}  // namespace sdog

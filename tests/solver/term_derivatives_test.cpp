@@ -1,0 +1,298 @@
+// Every term's Jacobian against central finite differences (Richardson-extrapolated) and against
+// Ceres automatic differentiation, at random non-flat configurations; second derivatives against
+// finite differences of the analytic gradient.
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+
+#include "geometry/dog_model.h"
+#include "solver/bending.h"
+#include "solver/ceres_cost.h"
+#include "solver/crease_geometry.h"
+#include "solver/dog_constraints.h"
+#include "solver/edge_angles.h"
+#include "solver/fold_bias.h"
+#include "solver/isometry.h"
+#include "solver/linear_point_term.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+struct Fixture {
+  DogModel model;
+  Dofs rest;
+  Fixture() {
+    model = build_dog_model(read_crease_pattern(test::dataset("crossing_creases.svg")), {11, 11});
+    rest = to_dofs(model.fine.V);
+  }
+};
+const Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+// A random non-flat configuration: the rest state moved in plane and lifted out of it.
+Dofs perturbed(const Dofs& rest, unsigned seed, double in_plane, double out_of_plane) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0, 1);
+  Dofs x = rest;
+  for (Eigen::Index v = 0; v < x.size() / 3; ++v) {
+    x[3 * v] += in_plane * n(rng);
+    x[3 * v + 1] += in_plane * n(rng);
+    x[3 * v + 2] += out_of_plane * n(rng);
+  }
+  return x;
+}
+
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+Matrix analytic_jacobian(const Term& t, int b, const Dofs& x) {
+  std::vector<Eigen::Vector3d> p(t.block_size(b));
+  gather_block(t, b, x, p.data());
+  Matrix J(t.residual_count(b), 3 * t.block_size(b));
+  Eigen::VectorXd r(t.residual_count(b));
+  t.evaluate(b, p.data(), r.data(), J.data());
+  return J;
+}
+
+Eigen::VectorXd residuals(const Term& t, int b, const std::vector<Eigen::Vector3d>& p) {
+  Eigen::VectorXd r(t.residual_count(b));
+  t.evaluate(b, p.data(), r.data(), nullptr);
+  return r;
+}
+
+// Central differences, Richardson-extrapolated: (4 D(h/2) - D(h)) / 3.
+Matrix numeric_jacobian(const Term& t, int b, const Dofs& x, double h) {
+  std::vector<Eigen::Vector3d> p(t.block_size(b));
+  gather_block(t, b, x, p.data());
+  Matrix J(t.residual_count(b), 3 * t.block_size(b));
+  for (int j = 0; j < t.block_size(b); ++j)
+    for (int c = 0; c < 3; ++c) {
+      auto central = [&](double step) {
+        auto plus = p, minus = p;
+        plus[j][c] += step;
+        minus[j][c] -= step;
+        return Eigen::VectorXd((residuals(t, b, plus) - residuals(t, b, minus)) / (2 * step));
+      };
+      J.col(3 * j + c) = (4 * central(h / 2) - central(h)) / 3;
+    }
+  return J;
+}
+
+template <class TermT>
+Matrix autodiff_jacobian(const TermT& t, int b, const Dofs& x) {
+  auto* functor = new TermResidualFunctor<TermT>{&t, b};
+  ceres::DynamicAutoDiffCostFunction<TermResidualFunctor<TermT>, 4> cost(functor);
+  std::vector<Eigen::Vector3d> p(t.block_size(b));
+  gather_block(t, b, x, p.data());
+  std::vector<const double*> params;
+  for (auto& q : p) {
+    cost.AddParameterBlock(3);
+    params.push_back(q.data());
+  }
+  cost.SetNumResiduals(t.residual_count(b));
+  const int m = t.residual_count(b), k = t.block_size(b);
+  std::vector<std::vector<double>> blocks(k, std::vector<double>(3 * m));
+  std::vector<double*> jac;
+  for (auto& bl : blocks) jac.push_back(bl.data());
+  Eigen::VectorXd r(m);
+  EXPECT_TRUE(cost.Evaluate(params.data(), r.data(), jac.data()));
+  Matrix J(m, 3 * k);
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < m; ++i)
+      for (int c = 0; c < 3; ++c) J(i, 3 * j + c) = blocks[j][3 * i + c];
+  return J;
+}
+
+double relative_error(const Matrix& a, const Matrix& b) {
+  return (a - b).cwiseAbs().maxCoeff() / std::max(b.cwiseAbs().maxCoeff(), 1e-12);
+}
+
+template <class TermT>
+void check_jacobians(const TermT& t, const Dofs& x, double h = 1e-5, int max_blocks = 200) {
+  ASSERT_GT(t.block_count(), 0) << t.name();
+  const int step = std::max(1, t.block_count() / max_blocks);
+  for (int b = 0; b < t.block_count(); b += step) {
+    const Matrix J = analytic_jacobian(t, b, x);
+    EXPECT_LT(relative_error(J, numeric_jacobian(t, b, x, h)), 1e-6) << t.name() << " block " << b;
+    EXPECT_LT(relative_error(J, autodiff_jacobian(t, b, x)), 1e-10) << t.name() << " block " << b;
+    // Ceres' analytic wrapper gives sqrt(w) J.
+    TermCost cost(t, b, 4.0);
+    std::vector<Eigen::Vector3d> p(t.block_size(b));
+    gather_block(t, b, x, p.data());
+    std::vector<const double*> params;
+    for (auto& q : p) params.push_back(q.data());
+    std::vector<std::vector<double>> blocks(t.block_size(b), std::vector<double>(3 * t.residual_count(b)));
+    std::vector<double*> jac;
+    for (auto& bl : blocks) jac.push_back(bl.data());
+    Eigen::VectorXd r(t.residual_count(b));
+    ASSERT_TRUE(cost.Evaluate(params.data(), r.data(), jac.data()));
+    EXPECT_NEAR(r.norm(), 2 * residuals(t, b, p).norm(), 1e-12 * (1 + r.norm()));
+    for (int j = 0; j < t.block_size(b); ++j)
+      for (int i = 0; i < t.residual_count(b); ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(jac[j][3 * i + c], 2 * J(i, 3 * j + c), 1e-12 * (1 + std::abs(J(i, 3 * j + c))));
+  }
+}
+
+// sum_i y_i Hessian(r_i) against central differences of the analytic gradient J^T y.
+void check_second_order(const Term& t, const Dofs& x, int max_blocks = 100) {
+  ASSERT_TRUE(t.has_second_order()) << t.name();
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n(0, 1);
+  const int step = std::max(1, t.block_count() / max_blocks);
+  for (int b = 0; b < t.block_count(); b += step) {
+    const int k = t.block_size(b), m = t.residual_count(b);
+    Eigen::VectorXd y(m);
+    for (int i = 0; i < m; ++i) y[i] = n(rng);
+    std::vector<Eigen::Vector3d> p(k);
+    gather_block(t, b, x, p.data());
+    Matrix H = Matrix::Zero(3 * k, 3 * k);
+    t.add_second_order(b, p.data(), y.data(), H.data());
+    auto gradient = [&](const std::vector<Eigen::Vector3d>& q) {
+      Matrix J(m, 3 * k);
+      Eigen::VectorXd r(m);
+      t.evaluate(b, q.data(), r.data(), J.data());
+      return Eigen::VectorXd(J.transpose() * y);
+    };
+    Matrix H_fd(3 * k, 3 * k);
+    const double h = 1e-5;
+    for (int j = 0; j < k; ++j)
+      for (int c = 0; c < 3; ++c) {
+        auto central = [&](double s) {
+          auto plus = p, minus = p;
+          plus[j][c] += s;
+          minus[j][c] -= s;
+          return Eigen::VectorXd((gradient(plus) - gradient(minus)) / (2 * s));
+        };
+        H_fd.col(3 * j + c) = (4 * central(h / 2) - central(h)) / 3;
+      }
+    EXPECT_LT(relative_error(H, H_fd), 1e-6) << t.name() << " block " << b;
+    EXPECT_LT(relative_error(H, Matrix(H.transpose())), 1e-14) << t.name() << " block " << b << " not symmetric";
+  }
+}
+
+TEST(TermDerivatives, Bending) {
+  const auto& f = fixture();
+  const LinearPointTerm t = make_bending_term(f.model.fine_topology, f.rest);
+  for (unsigned seed : {1u, 2u}) check_jacobians(t, perturbed(f.rest, seed, 0.2, 0.5));
+}
+
+TEST(TermDerivatives, BendingVanishesAtRest) {
+  const auto& f = fixture();
+  const LinearPointTerm t = make_bending_term(f.model.fine_topology, f.rest);
+  double worst = 0;
+  for (int b = 0; b < t.block_count(); ++b) {
+    std::vector<Eigen::Vector3d> p(t.block_size(b));
+    gather_block(t, b, f.rest, p.data());
+    worst = std::max(worst, residuals(t, b, p).norm());
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(TermDerivatives, Isometry) {
+  const auto& f = fixture();
+  const IsometryTerm t(f.model.fine_topology, f.rest);
+  for (unsigned seed : {3u, 4u}) {
+    const Dofs x = perturbed(f.rest, seed, 0.2, 0.5);
+    check_jacobians(t, x);
+    check_second_order(t, x);
+  }
+}
+
+TEST(TermDerivatives, PositionsEdgePointsStitchingLinks) {
+  const auto& f = fixture();
+  const DogMesh& mesh = f.model.fine;
+  LinearPointTerm positions("positions"), edge_points("edge_points"), stitching("stitching");
+  positions.add({{0, 1.0}}, Eigen::Vector3d(1, 2, 3));
+  positions.add({{mesh.vertex_count() - 1, 1.0}}, Eigen::Vector3d(-1, 0, 2));
+  for (const auto& pair : mesh.stitching.pairs) {
+    const auto& p = mesh.stitching.points[pair.point];
+    const EdgePoint& a = p.copies[pair.a];
+    const EdgePoint& b = p.copies[pair.b];
+    stitching.add({{a.v1, a.t}, {a.v2, 1 - a.t}, {b.v1, -b.t}, {b.v2, -(1 - b.t)}});
+    edge_points.add({{a.v1, a.t}, {a.v2, 1 - a.t}}, Eigen::Vector3d(0.5, 0.25, -1));
+  }
+  const Dofs x = perturbed(f.rest, 5, 0.2, 0.5);
+  check_jacobians(positions, x);
+  check_jacobians(edge_points, x);
+  check_jacobians(stitching, x);
+}
+
+TEST(TermDerivatives, EdgeAnglesAtCreasePoints) {
+  const auto& f = fixture();
+  const DogMesh& mesh = f.model.fine;
+  EdgeAngleTerm t;
+  for (const auto& p : mesh.stitching.points) {
+    if (p.copies.size() != 2 || p.copies[0].v1 == p.copies[0].v2) continue;
+    const EdgePoint& a = p.copies[0];
+    const EdgePoint& b = p.copies[1];
+    const double l = (vertex_of(f.rest, a.v1) - vertex_of(f.rest, a.v2)).norm();
+    t.add(a.v1, a.v2, b.v1, b.v2, l * l, crease_edge_cosine(0.7, 1.2));
+  }
+  const Dofs x = perturbed(f.rest, 6, 0.2, 0.5);
+  check_jacobians(t, x);
+  check_second_order(t, x);
+}
+
+TEST(TermDerivatives, FoldBias) {
+  const auto& f = fixture();
+  const auto sites = fold_sites(f.model.fine);
+  const FoldBiasTerm t(f.model.fine, sites);
+  // The bias saturates (tanh of 1000 B.e) once a site is bent more than about 1e-3, where its
+  // derivatives vanish and finite differences measure noise: test where it is not saturated,
+  // nearly flat and moderately bent.
+  check_jacobians(t, perturbed(f.rest, 7, 0.0, 1e-4), 1e-7);
+  check_jacobians(t, perturbed(f.rest, 8, 0.05, 1e-3), 1e-7);
+}
+
+TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessian) {
+  const auto& f = fixture();
+  const DogConstraints t(f.model.fine_topology);
+  EXPECT_EQ(t.row_count(), 3 * f.model.fine_topology.count(VertexClass::Star) +
+                               f.model.fine_topology.count(VertexClass::Bnd3));
+  for (unsigned seed : {9u, 10u}) {
+    const Dofs x = perturbed(f.rest, seed, 0.15, 0.4);
+    check_jacobians(t, x);
+    check_second_order(t, x);
+  }
+}
+
+TEST(TermDerivatives, DogConstraintsVanishOnAFlatGridAndOnADevelopableBend) {
+  const auto& f = fixture();
+  const DogConstraints t(f.model.fine_topology);
+  // Bending the flat sheet into a cylinder around the y axis is a DOG motion (the grid stays
+  // orthogonal and geodesic): every constraint stays zero.
+  Dofs x = f.rest;
+  const double R = 7;
+  for (Eigen::Index v = 0; v < x.size() / 3; ++v) {
+    const double u = x[3 * v];
+    x[3 * v] = R * std::sin(u / R);
+    x[3 * v + 2] = R * (1 - std::cos(u / R));
+  }
+  double worst_flat = 0, worst_bent = 0;
+  for (int b = 0; b < t.block_count(); ++b) {
+    std::vector<Eigen::Vector3d> p(t.block_size(b));
+    gather_block(t, b, f.rest, p.data());
+    worst_flat = std::max(worst_flat, residuals(t, b, p).cwiseAbs().maxCoeff());
+    gather_block(t, b, x, p.data());
+    worst_bent = std::max(worst_bent, residuals(t, b, p).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst_flat, 1e-14);
+  EXPECT_LT(worst_bent, 1e-12);
+  // A shear is not a DOG motion.
+  Dofs sheared = f.rest;
+  for (Eigen::Index v = 0; v < x.size() / 3; ++v) sheared[3 * v] += 0.3 * sheared[3 * v + 1];
+  double worst_shear = 0;
+  for (int b = 0; b < t.block_count(); ++b) {
+    std::vector<Eigen::Vector3d> p(t.block_size(b));
+    gather_block(t, b, sheared, p.data());
+    worst_shear = std::max(worst_shear, residuals(t, b, p).cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(worst_shear, 0.1);
+}
+
+}  // namespace
+}  // namespace sdog

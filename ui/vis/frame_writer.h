@@ -1,0 +1,40 @@
+#pragma once
+// Solver frames for ParaView: frame_NNNN.vtu (the fine mesh in its current state) every K
+// iterations, plus frame_0000 (the flat start) and the last iteration, tied together by
+// frames.pvd (time = iteration). Point arrays: the fine mesh arrays (vertex_type, patch, partner,
+// vertex_class) and dog_residual, bending, position_residual; cell arrays patch and edge_strain.
+// Files go into an OutputSet, so a failed run leaves none behind.
+#include <string>
+#include <vector>
+
+#include "geometry/atomic_output.h"
+#include "geometry/dog_model.h"
+#include "geometry/mesh_arrays.h"
+#include "solver/run.h"
+
+namespace sdog::vis {
+
+/// The fine mesh at state x with the model's and the solver's arrays.
+MeshArrays frame_arrays(const DogModel& model, const DogProblem& problem, const Dofs& x);
+
+class FrameWriter : public RunObserver {
+ public:
+  /// `every` >= 1; `last_iteration` is the run's final iteration (always written).
+  FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out, int every, int last_iteration);
+  /// Writes frame_0000 of the start state.
+  void write_start(const Dofs& x);
+  void on_iteration(const IterationReport& report, const Dofs& x) override;
+  /// Writes frames.pvd listing the frames written so far.
+  void finish();
+  int frame_count() const { return static_cast<int>(frames_.size()); }
+
+ private:
+  void write(int iteration, const Dofs& x);
+  const DogModel& model_;
+  const DogProblem& problem_;
+  OutputSet& out_;
+  int every_, last_;
+  std::vector<std::pair<int, std::string>> frames_;  // (iteration, file name)
+};
+
+}  // namespace sdog::vis
