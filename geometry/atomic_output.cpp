@@ -15,6 +15,11 @@ namespace fs = std::filesystem;
 
 OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
+  // The directories this set creates, deepest first: removed again if nothing is committed.
+  for (fs::path p = fs::absolute(dir_, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    created_.push_back(p.string());
+    if (p == p.parent_path()) break;
+  }
   fs::create_directories(dir_, ec);
   if (ec) throw OutputError(dir_ + ": cannot create the output directory (" + ec.message() + ")");
   if (!fs::is_directory(dir_)) throw OutputError(dir_ + ": exists and is not a directory");
@@ -28,6 +33,10 @@ OutputSet::~OutputSet() {
   for (const auto& f : files_) {
     std::error_code ec;
     fs::remove(f.first, ec);
+  }
+  for (const auto& d : created_) {
+    std::error_code ec;
+    fs::remove(d, ec);  // only removes empty directories
   }
 }
 

@@ -13,7 +13,7 @@ class OutputSet {
   explicit OutputSet(std::string dir);
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
-  /// Removes the temporary files of an uncommitted set.
+  /// Removes the temporary files of an uncommitted set, and the directories it created.
   ~OutputSet();
 
   /// Temporary path to write `name` (a file name inside the directory) to.
@@ -28,6 +28,7 @@ class OutputSet {
  private:
   std::string dir_;
   std::vector<std::pair<std::string, std::string>> files_;  // (temporary, final)
+  std::vector<std::string> created_;  // directories created by the constructor, deepest first
   bool committed_ = false;
 };
 

@@ -20,6 +20,8 @@ class Field {
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError(source_ + ": " + path_ + ": " + what); }
   const std::string& path() const { return path_; }
+  /// "file: $.path", for messages raised later.
+  std::string where() const { return source_ + ": " + path_; }
   const json& value() const { return v_; }
 
   /// The object's members; unknown keys are errors.
@@ -129,7 +131,7 @@ void apply_solver(const Field& f, StandardOptions& o) {
 PositionSpec position_spec(const Field& f) {
   f.expect_object({"vertex", "near", "start", "end", "move"});
   PositionSpec p;
-  p.path = f.path();
+  p.path = f.where();
   if (f.has("vertex") == f.has("near")) f.fail("give exactly one of \"vertex\" (an index) and \"near\" ([x, y] in sheet units)");
   if (f.has("end") == f.has("move")) f.fail("give exactly one of \"end\" ([x, y, z]) and \"move\" ([dx, dy, dz])");
   if (f.has("vertex")) p.vertex = f["vertex"].integer(0);
@@ -143,7 +145,7 @@ PositionSpec position_spec(const Field& f) {
 AngleSpec angle_spec(const Field& f) {
   f.expect_object({"crease_point", "curve", "start", "end"});
   AngleSpec a;
-  a.path = f.path();
+  a.path = f.where();
   if (f.has("crease_point") == f.has("curve"))
     f.fail("give exactly one of \"crease_point\" (an index) and \"curve\" (a crease curve index)");
   if (!f.has("end")) f.fail("missing \"end\" (the final dihedral angle in degrees)");

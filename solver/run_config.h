@@ -16,7 +16,7 @@ namespace sdog {
 
 /// A position constraint before it is resolved against a mesh.
 struct PositionSpec {
-  std::string path;                      ///< JSON path, for messages
+  std::string path;                      ///< source and JSON path, for messages
   std::optional<int> vertex;             ///< fine vertex index ...
   std::optional<Eigen::Vector2d> near;   ///< ... or the vertex nearest this flat-state point (sheet units)
   std::optional<Eigen::Vector3d> start;  ///< mesh units; default: the vertex's flat position
@@ -26,7 +26,7 @@ struct PositionSpec {
 
 /// An angle constraint before it is resolved: one crease point, or every fold site of a curve.
 struct AngleSpec {
-  std::string path;
+  std::string path;  ///< source and JSON path, for messages
   std::optional<int> point;
   std::optional<int> curve;
   double start_degrees = 0;

@@ -295,6 +295,32 @@ Eigen::VectorXd SqpSolver::solve(const Eigen::VectorXd& rhs, SqpReport& report) 
 }
 
 SqpReport SqpSolver::iterate(Dofs& x, bool last) {
+  SqpReport report = solve_iteration(x, false);
+  if (!last || report.failed || report.constraint_max <= options_.final_constraint_tolerance) return report;
+  // The last iteration of a run polishes the state to the final tolerance. A polish that fails or
+  // ends less feasible (a sheet asked for more than bending allows) is dropped, and the state the
+  // ordinary iteration reached is kept.
+  const Dofs x1 = x;
+  const Eigen::VectorXd lambda1 = lambda_;
+  const SqpReport polish = solve_iteration(x, true);
+  report.steps += polish.steps;
+  report.restoration_steps += polish.restoration_steps;
+  report.local_steps += polish.local_steps;
+  report.factorizations += polish.factorizations;
+  report.factor_ms += polish.factor_ms;
+  report.assembly_ms += polish.assembly_ms;
+  if (polish.failed || polish.constraint_max > report.constraint_max) {
+    x = x1;
+    lambda_ = lambda1;
+    factored_ = false;
+  } else {
+    report.constraint_max = polish.constraint_max;
+    if (polish.steps > 0) report.step_length = polish.step_length;
+  }
+  return report;
+}
+
+SqpReport SqpSolver::solve_iteration(Dofs& x, bool last) {
   SqpReport report;
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = lambda_;
@@ -318,8 +344,8 @@ SqpReport SqpSolver::iterate(Dofs& x, bool last) {
   Linearization lin;
   if (!relinearize(lin)) return fail(not_finite);
   double error = kkt_error(lin) * 1e4;  // as in the reference: at least one step unless tiny
-  // The last iteration polishes: exact-Hessian SQP steps (the multipliers are settled by then)
-  // until the constraints meet the final tolerance.
+  // Polishing: exact-Hessian SQP steps (the multipliers are settled by then) until the
+  // constraints meet the final tolerance.
   polishing_ = last;
   struct Unset {
     bool& flag;

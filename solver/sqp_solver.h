@@ -22,12 +22,15 @@
 //    nearly flat region, where the linearised constraints are degenerate and the full step
 //    violates them quadratically: the search restarts with mu = merit_penalty, which accepts such
 //    steps, and restoration removes the violation.
-// 2. Restoration steps, until |c|_inf <= constraint_tolerance (final_constraint_tolerance in the
-//    last iteration of a run), at most max_restoration_steps: Gauss-Newton on rho/2 |c|^2 in the
+// 2. Restoration steps, until |c|_inf <= constraint_tolerance (final_constraint_tolerance when
+//    polishing), at most max_restoration_steps: Gauss-Newton on rho/2 |c|^2 in the
 //    metric of H, (H + rho J^T J) d = -rho J^T c, backtracking until |c| decreases. In order of
 //    cost: a chord step with the last factorisation and its Jacobian (a second-order correction;
 //    repeated while it cuts |c|_2^2 by 20%, at most 5 times), a local step on the neighbourhood of the violated rows
 //    when they are few (local_restoration.h), a fresh global factorisation.
+// 3. In the last iteration of a run only: a polishing iteration (up to polish_steps steps with the
+//    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
+//    it ends more feasible than step 2 left the state.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
@@ -160,7 +163,9 @@ class SqpSolver {
   RowMatrix J_pattern_;                      // constraint Jacobian pattern
   std::vector<std::vector<int>> column_rank_;  // per block vertex: its rank in the block's row
   LocalRestoration local_;
-  bool polishing_ = false;  // last iteration: Lagrangian Hessian on
+  bool polishing_ = false;  // polishing iteration: Lagrangian Hessian on
+  // One iteration; `last`: a polishing iteration (see iterate()).
+  SqpReport solve_iteration(Dofs& x, bool last);
 };
 
 }  // namespace sdog

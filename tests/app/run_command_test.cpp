@@ -1,0 +1,247 @@
+// `sdog run` and `sdog bench` as a user runs them: the files a run writes (run.csv, run.json,
+// frames.pvd and its .vtu frames read back with VTK's XML readers), configuration errors with
+// their JSON path, thread-count independence, and the benchmark table.
+#include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkCellData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/app/run_sdog.h"
+
+namespace sdog {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> split(const std::string& line, char sep = ',') {
+  std::vector<std::string> out;
+  std::stringstream s(line);
+  for (std::string field; std::getline(s, field, sep);) out.push_back(field);
+  return out;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream s(text);
+  for (std::string line; std::getline(s, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
+// A CSV as header + rows of fields.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  int column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+  }
+};
+
+Csv read_csv(const std::string& path) {
+  Csv csv;
+  const auto lines = lines_of(test::slurp(path));
+  if (lines.empty()) return csv;
+  csv.header = split(lines[0]);
+  for (size_t i = 1; i < lines.size(); ++i) csv.rows.push_back(split(lines[i]));
+  return csv;
+}
+
+const std::string kPattern = test::dataset("one_curve.svg");
+const std::string kSmallRun = "run '" + kPattern + "' --res 21x15 --iters 20 --hold 5 -q";
+
+TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
+  const std::string dir = test::temp_dir("run_files") + "/out";
+  const auto r = test::run_sdog(kSmallRun + " --frames-every 10 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("25 iterations of standard (corners)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("DOG max"), std::string::npos) << r.out;
+
+  // run.csv: the issue's columns, in its order, one row per iteration, finite numbers.
+  const Csv csv = read_csv(dir + "/run.csv");
+  const std::vector<std::string> required = {
+      "iteration", "t", "objective", "bending", "isometry", "positions", "edge_points", "stitching", "angles",
+      "fold_bias", "objective_final_targets", "dog_max", "dog_l2", "stitch_gap_max", "edge_strain_max", "sqp_steps",
+      "step_length", "fold_retries", "folded", "iteration_ms", "factor_ms"};
+  int previous = -1;
+  for (const auto& name : required) {
+    const int c = csv.column(name);
+    ASSERT_GE(c, 0) << "column " << name << " missing";
+    EXPECT_GT(c, previous) << "column " << name << " out of order";
+    previous = c;
+  }
+  ASSERT_EQ(csv.rows.size(), 25u);
+  for (size_t i = 0; i < csv.rows.size(); ++i) {
+    ASSERT_EQ(csv.rows[i].size(), csv.header.size()) << "row " << i;
+    EXPECT_EQ(std::stoi(csv.rows[i][csv.column("iteration")]), static_cast<int>(i) + 1);
+    for (const auto& field : csv.rows[i]) EXPECT_TRUE(std::isfinite(std::stod(field))) << field;
+    EXPECT_LT(std::stod(csv.rows[i][csv.column("dog_max")]), 1e-4);
+  }
+  EXPECT_DOUBLE_EQ(std::stod(csv.rows.back()[csv.column("t")]), 1.0);
+  EXPECT_DOUBLE_EQ(std::stod(csv.rows[9][csv.column("t")]), 0.5);
+
+  // run.json: parameters, versions, totals, the final state.
+  const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
+  EXPECT_EQ(j.at("status"), "completed");
+  EXPECT_EQ(j.at("mode"), "standard");
+  EXPECT_EQ(j.at("resolution").at("fine"), "21x15");
+  EXPECT_EQ(j.at("config").at("iterations"), 20);
+  EXPECT_EQ(j.at("config").at("hold"), 5);
+  EXPECT_EQ(j.at("config").at("weights").at("stitching"), 10);
+  EXPECT_TRUE(j.at("config").at("solver").contains("kkt_tolerance"));
+  EXPECT_TRUE(j.at("software").contains("eigen"));
+  EXPECT_EQ(j.at("totals").at("iterations"), 25);
+  const double objective = j.at("final").at("objective").get<double>();
+  EXPECT_NEAR(objective, std::stod(csv.rows.back()[csv.column("objective")]), 1e-9 * objective);
+
+  // frames.pvd through VTK's XML parser; every listed frame through the .vtu reader.
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  const std::string pvd = dir + "/frames.pvd";
+  parser->SetFileName(pvd.c_str());
+  ASSERT_EQ(parser->Parse(), 1);
+  vtkXMLDataElement* root = parser->GetRootElement();
+  ASSERT_STREQ(root->GetAttribute("type"), "Collection");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  ASSERT_NE(collection, nullptr);
+  std::vector<int> steps;
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* e = collection->GetNestedElement(i);
+    steps.push_back(std::atoi(e->GetAttribute("timestep")));
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    const std::string file = dir + "/" + e->GetAttribute("file");
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    ASSERT_GT(grid->GetNumberOfPoints(), 0) << file;
+    ASSERT_GT(grid->GetNumberOfCells(), 0) << file;
+    for (const char* name : {"dog_residual", "bending", "patch", "vertex_type", "vertex_class", "position_residual"})
+      EXPECT_NE(grid->GetPointData()->GetArray(name), nullptr) << file << ": point array " << name;
+    vtkDataArray* strain = grid->GetCellData()->GetArray("edge_strain");
+    ASSERT_NE(strain, nullptr) << file;
+    vtkDataArray* residual = grid->GetPointData()->GetArray("dog_residual");
+    ASSERT_NE(residual, nullptr);
+    if (steps.back() > 0) EXPECT_LT(residual->GetRange()[1], 1e-4) << file;
+  }
+  EXPECT_EQ(steps, (std::vector<int>{0, 10, 20, 25}));
+}
+
+TEST(RunCommand, SameCsvWhateverTheThreadCount) {
+  const std::string base = test::temp_dir("run_threads");
+  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 1 --out " + base + "/a").code, 0);
+  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 2 --out " + base + "/b").code, 0);
+  const Csv a = read_csv(base + "/a/run.csv"), b = read_csv(base + "/b/run.csv");
+  ASSERT_EQ(a.header, b.header);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  const int t1 = a.column("iteration_ms"), t2 = a.column("factor_ms");
+  for (size_t i = 0; i < a.rows.size(); ++i)
+    for (size_t c = 0; c < a.header.size(); ++c)
+      if (static_cast<int>(c) != t1 && static_cast<int>(c) != t2)
+        EXPECT_EQ(a.rows[i][c], b.rows[i][c]) << "row " << i << " column " << a.header[c];
+}
+
+struct ConfigCase {
+  std::string name, json;
+  std::vector<std::string> mentions;
+  friend void PrintTo(const ConfigCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class BadConfig : public ::testing::TestWithParam<ConfigCase> {};
+
+TEST_P(BadConfig, OneLineNamingTheJsonPathAndNoOutput) {
+  const ConfigCase& c = GetParam();
+  const std::string dir = test::temp_dir("config_" + c.name);
+  const std::string config = test::write_file(dir, "c.json", c.json);
+  const auto r = test::run_sdog(kSmallRun + " --config " + config + " --out " + dir + "/out");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("c.json"), std::string::npos) << r.err;
+  for (const auto& m : c.mentions) EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in " << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadConfig,
+    ::testing::Values(ConfigCase{"not_json", "{ iterations: 3", {"JSON"}},
+                      ConfigCase{"unknown_key", R"({"solver": {"kkt_tolerence": 1e-3}})", {"$.solver.kkt_tolerence", "unknown key"}},
+                      ConfigCase{"bad_type", R"({"iterations": "many"})", {"$.iterations"}},
+                      ConfigCase{"negative_weight", R"({"weights": {"bending": -1}})", {"bending"}},
+                      ConfigCase{"bad_vertex", R"({"positions": [{"vertex": 99999, "move": [0, 0, 1]}]})",
+                                 {"$.positions[0]", "99999"}},
+                      ConfigCase{"bad_target", R"({"positions": [{"vertex": 3, "end": [1, 2]}]})",
+                                 {"$.positions[0].end"}},
+                      ConfigCase{"bad_crease_point", R"({"angles": [{"crease_point": 100000, "end": 30}]})",
+                                 {"$.angles[0]", "100000"}},
+                      ConfigCase{"bad_scenario", R"({"scenario": "twist"})", {"$.scenario", "twist"}}));
+
+TEST(RunCommand, ConfigConstraintsDriveTheRun) {
+  const std::string dir = test::temp_dir("config_good");
+  // No scenario: one vertex lifted by 2 units, the opposite corner held; the log shows the lift.
+  const std::string config = test::write_file(dir, "c.json", R"({
+    "scenario": "none", "iterations": 10, "hold": 2,
+    "positions": [{"vertex": 0, "move": [0, 0, 0]}, {"near": [1e9, 1e9], "move": [0, 0, 2]}],
+    "solver": {"kkt_tolerance": 1e-4}
+  })");
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " + config +
+                                " --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(test::slurp(dir + "/out/run.json"));
+  EXPECT_EQ(j.at("scenario").at("position_constraints"), 2);
+  EXPECT_EQ(j.at("config").at("solver").at("kkt_tolerance"), 1e-4);
+  const Csv csv = read_csv(dir + "/out/run.csv");
+  ASSERT_EQ(csv.rows.size(), 12u);
+  EXPECT_GT(std::stod(csv.rows.back()[csv.column("bending")]), 0);
+  EXPECT_LT(std::stod(csv.rows.back()[csv.column("positions")]), 0.1);
+}
+
+TEST(RunCommand, UsageErrorsExitWithTwo) {
+  auto r = test::run_sdog(kSmallRun + " --mode warp");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("warp"), std::string::npos) << r.err;
+  r = test::run_sdog("run '" + test::dataset("diagonal_fold.svg") + "' --res 21x21 -q --scenario fold");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("no fold sites"), std::string::npos) << r.err;
+}
+
+TEST(RunCommand, UnwritableOutputFailsBeforeTheWork) {
+  const std::string dir = test::temp_dir("run_unwritable");
+  test::write_file(dir, "file", "x");
+  const auto r = test::run_sdog(kSmallRun + " --out " + dir + "/file/sub");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/file"), std::string::npos) << r.err;
+}
+
+TEST(BenchCommand, WritesTheTableAsCsv) {
+  const std::string dir = test::temp_dir("bench");
+  const auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --modes standard --iters 12 --repeat 2 --csv " +
+                                dir + "/bench.csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("median_ms"), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir + "/bench.csv");
+  for (const char* name : {"pattern", "res", "mode", "vertices", "dof", "median_ms", "ms_per_dof", "sqp_steps", "factor_ms",
+                           "final_objective", "dog_max"})
+    EXPECT_GE(csv.column(name), 0) << name;
+  ASSERT_EQ(csv.rows.size(), 1u);
+  const auto& row = csv.rows[0];
+  EXPECT_EQ(row[csv.column("res")], "15x11");
+  EXPECT_EQ(row[csv.column("mode")], "standard");
+  const int vertices = std::stoi(row[csv.column("vertices")]);
+  EXPECT_EQ(std::stoi(row[csv.column("dof")]), 3 * vertices);
+  EXPECT_GT(std::stod(row[csv.column("median_ms")]), 0);
+  EXPECT_NEAR(std::stod(row[csv.column("ms_per_dof")]), std::stod(row[csv.column("median_ms")]) / (3 * vertices),
+              1e-6 * std::stod(row[csv.column("median_ms")]));
+  EXPECT_LT(std::stod(row[csv.column("dog_max")]), 1e-4);
+}
+
+}  // namespace
+}  // namespace sdog
