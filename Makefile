@@ -45,9 +45,11 @@ demo: build
 	@rm -rf out/demo.tmp && mkdir -p out
 	$(SDOG) mesh $(DEMO_PATTERN) --res $(DEMO_RES) --out out/demo.tmp
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res $(DEMO_RES) --overlay vertex-types --size 1600x800 --out out/demo.tmp/vertex_types.png
+	$(SDOG) run $(DEMO_PATTERN) --res $(DEMO_RES) --scenario corners --frames-every 10 --out out/demo.tmp/run
 	@rm -rf out/demo && mv out/demo.tmp out/demo
 	@echo ""; echo "Demo results in out/demo/:"; ls -1 out/demo | sed 's/^/  out\/demo\//'; \
-	echo "Open the .vtu/.vtp files in ParaView (File > Open), the picture with any image viewer."
+	echo "  out/demo/run/: run.csv (one row per solver iteration), run.json, frames.pvd + $$(ls out/demo/run | grep -c vtu) frames"; \
+	echo "Open the .vtu/.vtp files and out/demo/run/frames.pvd in ParaView (File > Open), the picture with any image viewer."
 
 test: build
 	cd $(BUILD) && $(XVFB) ctest --output-on-failure -j $(JOBS)

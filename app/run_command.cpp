@@ -191,7 +191,7 @@ void run(const RunArgs& a) {
               << format_number(config.standard.sqp.constraint_tolerance) << " after " << totals.dog_misses << " of "
               << summary.iterations << " iterations (worst " << format_number(totals.worst_dog) << " at iteration "
               << totals.worst_iteration
-              << "): the targets ask for more than bending allows; see dog_max in run.csv\n";
+              << "): the targets may ask for stretching (see dog_max in run.csv)\n";
   if (out)
     std::cout << "wrote " << a.out << "/run.csv, run.json"
               << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")

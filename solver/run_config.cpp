@@ -98,7 +98,7 @@ void apply_weights(const Field& f, Weights& w) {
 }
 
 void apply_solver(const Field& f, StandardOptions& o) {
-  f.expect_object({"kkt_tolerance", "max_steps", "epsilon", "restoration_epsilon", "merit_penalty",
+  f.expect_object({"kkt_tolerance", "max_steps", "epsilon", "restoration_epsilon", "polish_epsilon", "merit_penalty",
                    "trusted_backtracks", "constraint_tolerance", "final_constraint_tolerance",
                    "max_restoration_steps", "polish_steps", "local_rings", "local_fraction", "armijo",
                    "max_backtracks", "regularization", "rho_max", "second_order_correction",
@@ -106,7 +106,8 @@ void apply_solver(const Field& f, StandardOptions& o) {
   SqpOptions& s = o.sqp;
   const std::pair<const char*, double*> positive[] = {
       {"kkt_tolerance", &s.kkt_tolerance},     {"epsilon", &s.epsilon},
-      {"restoration_epsilon", &s.restoration_epsilon}, {"merit_penalty", &s.merit_penalty},
+      {"restoration_epsilon", &s.restoration_epsilon}, {"polish_epsilon", &s.polish_epsilon},
+      {"merit_penalty", &s.merit_penalty},
       {"constraint_tolerance", &s.constraint_tolerance},
       {"final_constraint_tolerance", &s.final_constraint_tolerance},
       {"armijo", &s.armijo},                   {"rho_max", &s.rho_max},
@@ -299,6 +300,7 @@ nlohmann::json to_json(const RunConfig& c) {
             {"max_steps", s.max_steps},
             {"epsilon", s.epsilon},
             {"restoration_epsilon", s.restoration_epsilon},
+            {"polish_epsilon", s.polish_epsilon},
             {"merit_penalty", s.merit_penalty},
             {"trusted_backtracks", s.trusted_backtracks},
             {"constraint_tolerance", s.constraint_tolerance},

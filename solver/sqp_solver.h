@@ -30,7 +30,8 @@
 //    when they are few (local_restoration.h), a fresh global factorisation.
 // 3. In the last iteration of a run only: a polishing iteration (up to polish_steps steps with the
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
-//    it ends more feasible than step 2 left the state.
+//    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
+//    at rho_max.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
@@ -62,6 +63,7 @@ struct SqpOptions {
   int max_steps = 1;                          ///< optimality steps per iteration (reference: 5)
   double epsilon = 1e-6;                      ///< constraint-block regularisation (rho = 1/epsilon)
   double restoration_epsilon = 1e-6;          ///< of global and local restoration steps
+  double polish_epsilon = 1e-8;               ///< of restoration steps when polishing
   double merit_penalty = 1e3;                 ///< mu of the fallback line search
   int trusted_backtracks = 3;                 ///< halvings with mu = rho before the fallback
   double constraint_tolerance = 5e-5;         ///< |c|_inf wanted after every iteration
@@ -73,7 +75,7 @@ struct SqpOptions {
   double armijo = 1e-4;                       ///< sufficient decrease factor of the line search
   int max_backtracks = 20;                    ///< halvings of the step before giving up
   double regularization = 1e-8;               ///< smallest shift delta of K
-  double rho_max = 1e10;                      ///< rho may grow to this to make K positive definite
+  double rho_max = 1e12;                      ///< rho may grow to this to make K positive definite
   bool second_order_correction = true;        ///< retry a rejected full step pulled back onto c = 0
   bool lagrangian_hessian = false;            ///< add -sum lambda_i Hess c_i to H
   /// Empty when valid, else the offending field and why.
@@ -164,6 +166,7 @@ class SqpSolver {
   std::vector<std::vector<int>> column_rank_;  // per block vertex: its rank in the block's row
   LocalRestoration local_;
   bool polishing_ = false;  // polishing iteration: Lagrangian Hessian on
+  double rho_cap_ = 0;      // rho may grow to this (options_.rho_max except when polishing)
   // One iteration; `last`: a polishing iteration (see iterate()).
   SqpReport solve_iteration(Dofs& x, bool last);
 };

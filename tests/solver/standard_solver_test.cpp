@@ -50,7 +50,9 @@ void expect_constraint_bars(const RunResult& r, int iterations) {
   for (const auto& rep : r.reports) {
     EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
     // While the targets move every iteration takes a step (a held, converged state may not).
-    if (rep.t < 1) EXPECT_GE(rep.step.sqp_steps, 1) << "iteration " << rep.iteration;
+    if (rep.t < 1) {
+      EXPECT_GE(rep.step.sqp_steps, 1) << "iteration " << rep.iteration;
+    }
   }
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_TRUE(r.reports.back().step.folded);
@@ -131,8 +133,11 @@ TEST(FoldSeed, ValleyTiltsUpAndMountainDown) {
     EXPECT_EQ(valley[3 * v], flat[3 * v]);
     EXPECT_EQ(valley[3 * v + 1], flat[3 * v + 1]);
     EXPECT_EQ(mountain[3 * v + 2], -valley[3 * v + 2]);
-    if (inside[v]) EXPECT_GE(valley[3 * v + 2], 0) << "vertex " << v;
-    else EXPECT_LE(valley[3 * v + 2], 0) << "vertex " << v;
+    if (inside[v]) {
+      EXPECT_GE(valley[3 * v + 2], 0) << "vertex " << v;
+    } else {
+      EXPECT_LE(valley[3 * v + 2], 0) << "vertex " << v;
+    }
     raised += valley[3 * v + 2] > 1e-4;
   }
   EXPECT_GT(raised, model.fine.vertex_count() / 2);
