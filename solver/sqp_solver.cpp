@@ -470,10 +470,9 @@ bool SqpSolver::restore(Dofs& x, Eigen::VectorXd& c, double tolerance, int max_s
       polishing_ = false;
       const bool factored = refactorize(x, lin, epsilon, report);
       polishing_ = polishing;
-      if (!factored) {
-        report.failure = "the Cholesky factorisation of a restoration step failed";
-        return false;
-      }
+      // The state is still valid (finite): restoration ends and the residual left is reported in
+      // the diagnostics (and the run's warning), as when |c| cannot be reduced further.
+      if (!factored) break;
       d = solve(-rho_ * (lin.J.transpose() * lin.c), report);
     }
     if (!d.allFinite()) {
