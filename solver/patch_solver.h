@@ -1,0 +1,94 @@
+#pragma once
+// One patch of a DOG as its own nonlinear least-squares problem, solved with Ceres: every
+// objective residual block whose vertices all lie in the patch (one Ceres parameter block per
+// vertex) plus the patch's DOG constraints through an augmented-Lagrangian outer loop:
+//
+//   minimise f_P(x) + mu/2 |c(x) - lambda/mu|^2   (Ceres, Levenberg-Marquardt, sparse Cholesky)
+//   lambda <- lambda - mu c(x)
+//   mu <- growth * mu  when |c|_inf did not fall below a quarter of its previous value
+//
+// until |c|_inf <= constraint_tolerance (the standard solver's per-iteration tolerance by
+// default). Multipliers and the penalty are kept across solves (warm start). Blocks that couple
+// patches (stitching, angles, fold bias) are not part of a patch problem: the multi-patch modes
+// turn them into per-patch targets (edge-point terms) before solving.
+//
+// Patch problems are independent; solve_patches() runs them in parallel with TBB (each solve is
+// single threaded), and the result does not depend on the number of threads.
+#include <ceres/ceres.h>
+
+#include <memory>
+#include <vector>
+
+#include "geometry/dog_mesh.h"
+#include "solver/ceres_cost.h"
+#include "solver/dog_constraints.h"
+#include "solver/sqp_solver.h"
+
+namespace sdog {
+
+struct PatchOptions {
+  double constraint_tolerance = 5e-5;  ///< |c|_inf of the patch's DOG constraints
+  double initial_penalty = 1e4;        ///< mu of the first solve
+  double penalty_growth = 10;
+  double max_penalty = 1e12;
+  int max_outer = 12;  ///< augmented-Lagrangian updates per solve
+  int max_inner = 50;  ///< Ceres iterations per update
+  /// Empty when valid, else the offending field and why.
+  std::string validate() const;
+};
+
+/// What one patch solve did.
+struct PatchReport {
+  int patch = -1;
+  double ms = 0;         ///< wall time of the solve
+  double start_ms = 0;   ///< when it started, from the start of solve_patches (timelines)
+  int thread = 0;        ///< index of the TBB worker that ran it (thread-use pictures)
+  double objective = 0;  ///< weighted f_P at the end (without the augmented terms)
+  double dog_max = 0;    ///< |c|_inf of the patch's DOG constraints at the end
+  int outer = 0;         ///< augmented-Lagrangian updates
+  int inner = 0;         ///< Ceres iterations in all
+  bool converged = false;
+};
+
+class PatchSolver {
+ public:
+  /// Patch `patch` of `mesh`: the blocks of `terms` inside it and the blocks of `dog` inside it.
+  /// The terms and `dog` must outlive the solver; their targets may change between solves.
+  PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const DogConstraints& dog,
+              const PatchOptions& options = {});
+  PatchSolver(const PatchSolver&) = delete;
+  PatchSolver& operator=(const PatchSolver&) = delete;
+
+  int patch() const { return patch_; }
+  /// Solves from x and writes the patch's vertices back into x (others are not touched).
+  PatchReport solve(Dofs& x);
+  /// Changes the weight of terms[index] (as passed to the constructor).
+  void set_weight(size_t index, double weight);
+
+  /// Objective (weighted, without augmented terms) and |c|_inf of the patch at x.
+  double objective(const Dofs& x) const;
+  double dog_max(const Dofs& x) const;
+
+ private:
+  void load(const Dofs& x);
+  double constraint_max_local();  // of local_
+  int patch_, begin_, end_;
+  PatchOptions options_;
+  const DogConstraints& dog_;
+  std::vector<double> local_;  // the patch's coordinates, Ceres' parameter blocks
+  std::unique_ptr<ceres::Problem> problem_;
+  std::vector<std::vector<TermCost*>> term_costs_;  // per objective term
+  std::vector<std::pair<const Term*, std::vector<int>>> objective_blocks_;
+  std::vector<double> weights_;
+  std::vector<int> dog_blocks_;
+  std::vector<TermCost*> dog_costs_;
+  Eigen::VectorXd lambda_;  // per patch constraint row
+  Eigen::VectorXd offset_;  // lambda / mu, the augmented terms' offsets
+  double mu_;
+};
+
+/// Solves every patch from x (in parallel), writing each patch's vertices into x. Reports in
+/// patch order.
+std::vector<PatchReport> solve_patches(std::vector<std::unique_ptr<PatchSolver>>& solvers, Dofs& x);
+
+}  // namespace sdog

@@ -1,0 +1,143 @@
+// Per-patch Ceres problems with augmented-Lagrangian DOG constraints, and their parallel solve.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "geometry/dog_model.h"
+#include "solver/dog_problem.h"
+#include "solver/patch_solver.h"
+#include "solver/run_config.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+struct PatchCase {
+  DogModel model;
+  std::unique_ptr<DogProblem> problem;
+  Scenario scenario;
+  explicit PatchCase(const std::string& pattern, Eigen::Vector2i res) {
+    model = build_dog_model(read_crease_pattern(test::dataset(pattern)), {res[0], res[1]});
+    problem = std::make_unique<DogProblem>(model.fine, model.fine_topology);
+    scenario = corners_scenario(model.fine, 10, 0);
+    scenario.install(*problem);
+    scenario.apply(*problem, 0.5);  // the dragged corner half way
+  }
+  std::vector<std::unique_ptr<PatchSolver>> solvers() const {
+    std::vector<std::unique_ptr<PatchSolver>> out;
+    for (int p = 0; p < model.fine.patch_count(); ++p)
+      out.push_back(std::make_unique<PatchSolver>(model.fine, p, problem->objective_terms(), problem->dog));
+    return out;
+  }
+  // A bent start: the flat sheet rolled around the y axis (a developable state, DOG constraints 0).
+  Dofs bent() const {
+    Dofs x = to_dofs(model.fine.V);
+    const double radius = 3 * model.fine.nx();
+    for (Eigen::Index v = 0; v < x.size() / 3; ++v) {
+      const double a = x[3 * v] / radius;
+      x[3 * v] = radius * std::sin(a);
+      x[3 * v + 2] = radius * (1 - std::cos(a));
+    }
+    return x;
+  }
+};
+
+TEST(PatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
+  const PatchCase s("four_corner_arcs.svg", {15, 15});
+  auto solvers = s.solvers();
+  Dofs x = s.bent();
+  const Dofs x0 = x;
+  // The last patch holds the dragged corner: its objective is far from its minimum.
+  PatchSolver& last = *solvers.back();
+  const double before = last.objective(x);
+  const PatchReport r = last.solve(x);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.dog_max, 5e-5);
+  EXPECT_NEAR(r.dog_max, last.dog_max(x), 1e-15);
+  EXPECT_LT(r.objective, 0.5 * before);
+  EXPECT_DOUBLE_EQ(r.objective, last.objective(x));
+  EXPECT_GE(r.outer, 1);
+  EXPECT_GE(r.inner, 1);
+  // Only the patch's own vertices moved.
+  const int begin = s.model.fine.patch_begin[last.patch()], end = s.model.fine.patch_begin[last.patch() + 1];
+  for (int v = 0; v < s.model.fine.vertex_count(); ++v) {
+    const bool moved = (vertex_of(x, v) - vertex_of(x0, v)).norm() > 0;
+    if (v < begin || v >= end) {
+      EXPECT_FALSE(moved) << "vertex " << v << " outside the patch moved";
+    }
+  }
+}
+
+TEST(PatchSolver, ParallelSolveEqualsSerialSolve) {
+  const PatchCase s("four_corner_arcs.svg", {15, 15});
+  Dofs serial = s.bent(), parallel = serial;
+  std::vector<PatchReport> a, b;
+  {
+    auto solvers = s.solvers();
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    a = solve_patches(solvers, serial);
+  }
+  {
+    auto solvers = s.solvers();
+    tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+    b = solve_patches(solvers, parallel);
+  }
+  EXPECT_TRUE(serial == parallel);
+  ASSERT_EQ(a.size(), static_cast<size_t>(s.model.fine.patch_count()));
+  for (size_t p = 0; p < a.size(); ++p) {
+    EXPECT_EQ(a[p].patch, static_cast<int>(p));
+    EXPECT_TRUE(a[p].converged) << "patch " << p << " dog_max " << a[p].dog_max;
+    EXPECT_EQ(a[p].objective, b[p].objective);
+    EXPECT_GT(a[p].ms, 0);
+  }
+}
+
+TEST(PatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
+  const PatchCase s("one_curve.svg", {15, 11});
+  auto solvers = s.solvers();
+  Dofs x = s.bent();
+  const auto first = solve_patches(solvers, x);
+  const auto again = solve_patches(solvers, x);
+  for (size_t p = 0; p < again.size(); ++p) {
+    EXPECT_TRUE(again[p].converged) << "patch " << p;
+    // Patches without position targets may slide rigidly (bending and isometry do not see it);
+    // the objective may only go down.
+    EXPECT_LE(again[p].objective, first[p].objective * (1 + 1e-6) + 1e-9) << "patch " << p;
+  }
+}
+
+TEST(PatchSolver, WeightChangesReachTheCeresProblem) {
+  const PatchCase s("one_curve.svg", {15, 11});
+  PatchSolver solver(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
+  Dofs x = s.bent();
+  const double before = solver.objective(x);
+  solver.set_weight(kPositions, 0);
+  EXPECT_LT(solver.objective(x), before);  // the position term carried weight before
+}
+
+TEST(TermCost, OffsetShiftsResidualsNotJacobians) {
+  const PatchCase s("one_curve.svg", {15, 11});
+  const Term& dog = s.problem->dog;
+  const Dofs x = s.bent() + 0.01 * Dofs::Ones(s.bent().size());
+  const int b = 0, k = dog.block_size(b), m = dog.residual_count(b);
+  std::vector<double> offset(m);
+  for (int i = 0; i < m; ++i) offset[i] = 0.1 * (i + 1);
+  TermCost plain(dog, b, 4.0), shifted(dog, b, 4.0, offset.data());
+  std::vector<const double*> params;
+  for (int j = 0; j < k; ++j) params.push_back(x.data() + 3 * dog.block_vertices(b)[j]);
+  std::vector<double> r1(m), r2(m), J1(3 * m * k), J2(3 * m * k);
+  std::vector<double*> j1, j2;
+  for (int j = 0; j < k; ++j) {
+    j1.push_back(J1.data() + 3 * m * j);
+    j2.push_back(J2.data() + 3 * m * j);
+  }
+  ASSERT_TRUE(plain.Evaluate(params.data(), r1.data(), j1.data()));
+  ASSERT_TRUE(shifted.Evaluate(params.data(), r2.data(), j2.data()));
+  for (int i = 0; i < m; ++i) EXPECT_NEAR(r2[i], r1[i] - 2.0 * offset[i], 1e-15);
+  EXPECT_EQ(J1, J2);
+  shifted.set_weight(9.0);
+  ASSERT_TRUE(shifted.Evaluate(params.data(), r2.data(), nullptr));
+  for (int i = 0; i < m; ++i) EXPECT_NEAR(r2[i], 1.5 * r1[i] - 3.0 * offset[i], 1e-14);
+}
+
+}  // namespace
+}  // namespace sdog
