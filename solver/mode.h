@@ -2,7 +2,9 @@
 // A solver mode: how one iteration of a deformation run is computed. Modes share the iteration
 // report, the scenario and the diagnostics; the run driver (run.h) is mode independent.
 #include <string>
+#include <vector>
 
+#include "solver/patch_report.h"
 #include "solver/scenario.h"
 #include "solver/term.h"
 
@@ -19,6 +21,7 @@ struct StepReport {
   double factor_ms = 0;  ///< numeric factorisation and triangular solves
   bool failed = false;
   std::string failure;  ///< why; the mode rolled x back
+  std::vector<PatchReport> patches;  ///< per-patch solves of the multi-patch modes, in patch order
 };
 
 class Mode {

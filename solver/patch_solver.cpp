@@ -148,6 +148,7 @@ PatchReport PatchSolver::solve(Dofs& x) {
     ceres::Solver::Summary summary;
     ceres::Solve(so, problem_.get(), &summary);
     report.inner += static_cast<int>(summary.iterations.size()) - 1;
+    report.linear_ms += 1e3 * summary.linear_solver_time_in_seconds;
     ++report.outer;
     // The multiplier update, from the constraint values at the new point.
     int row = 0;
@@ -159,7 +160,8 @@ PatchReport PatchSolver::solve(Dofs& x) {
       new_max = std::max(new_max, c.lpNorm<Eigen::Infinity>());
       row += static_cast<int>(c.size());
     }
-    if (new_max > 0.25 * cmax) mu_ = std::min(mu_ * options_.penalty_growth, options_.max_penalty);
+    if (new_max > options_.constraint_tolerance && new_max > 0.25 * cmax)
+      mu_ = std::min(mu_ * options_.penalty_growth, options_.max_penalty);
     cmax = new_max;
     if (cmax <= options_.constraint_tolerance) break;
   }

@@ -5,7 +5,8 @@
 //
 //   minimise f_P(x) + mu/2 |c(x) - lambda/mu|^2   (Ceres, Levenberg-Marquardt, sparse Cholesky)
 //   lambda <- lambda - mu c(x)
-//   mu <- growth * mu  when |c|_inf did not fall below a quarter of its previous value
+//   mu <- growth * mu  when |c|_inf is above the tolerance and did not fall below a quarter of
+//                      its previous value
 //
 // until |c|_inf <= constraint_tolerance (the standard solver's per-iteration tolerance by
 // default). Multipliers and the penalty are kept across solves (warm start). Blocks that couple
@@ -22,6 +23,7 @@
 #include "geometry/dog_mesh.h"
 #include "solver/ceres_cost.h"
 #include "solver/dog_constraints.h"
+#include "solver/patch_report.h"
 #include "solver/sqp_solver.h"
 
 namespace sdog {
@@ -37,19 +39,6 @@ struct PatchOptions {
   std::string validate() const;
 };
 
-/// What one patch solve did.
-struct PatchReport {
-  int patch = -1;
-  double ms = 0;         ///< wall time of the solve
-  double start_ms = 0;   ///< when it started, from the start of solve_patches (timelines)
-  int thread = 0;        ///< index of the TBB worker that ran it (thread-use pictures)
-  double objective = 0;  ///< weighted f_P at the end (without the augmented terms)
-  double dog_max = 0;    ///< |c|_inf of the patch's DOG constraints at the end
-  int outer = 0;         ///< augmented-Lagrangian updates
-  int inner = 0;         ///< Ceres iterations in all
-  bool converged = false;
-};
-
 class PatchSolver {
  public:
   /// Patch `patch` of `mesh`: the blocks of `terms` inside it and the blocks of `dog` inside it.
@@ -60,6 +49,8 @@ class PatchSolver {
   PatchSolver& operator=(const PatchSolver&) = delete;
 
   int patch() const { return patch_; }
+  /// The tolerance of the following solves (the last iteration of a run asks for a tighter one).
+  void set_constraint_tolerance(double tolerance) { options_.constraint_tolerance = tolerance; }
   /// Solves from x and writes the patch's vertices back into x (others are not touched).
   PatchReport solve(Dofs& x);
   /// Changes the weight of terms[index] (as passed to the constructor).

@@ -129,6 +129,21 @@ void apply_solver(const Field& f, StandardOptions& o) {
   if (f.has("folding")) o.folding = f["folding"].boolean();
 }
 
+void apply_patch_solver(const Field& f, SubsolverOptions& o) {
+  f.expect_object({"constraint_tolerance", "final_constraint_tolerance", "initial_penalty", "penalty_growth",
+                   "max_penalty", "max_outer", "max_inner"});
+  PatchOptions& p = o.patch;
+  const std::pair<const char*, double*> positive[] = {{"constraint_tolerance", &p.constraint_tolerance},
+                                                      {"final_constraint_tolerance", &o.final_constraint_tolerance},
+                                                      {"initial_penalty", &p.initial_penalty},
+                                                      {"penalty_growth", &p.penalty_growth},
+                                                      {"max_penalty", &p.max_penalty}};
+  for (const auto& [key, target] : positive)
+    if (f.has(key)) *target = f[key].positive();
+  if (f.has("max_outer")) p.max_outer = f["max_outer"].integer(1);
+  if (f.has("max_inner")) p.max_inner = f["max_inner"].integer(1);
+}
+
 PositionSpec position_spec(const Field& f) {
   f.expect_object({"vertex", "near", "start", "end", "move"});
   PositionSpec p;
@@ -163,7 +178,8 @@ AngleSpec angle_spec(const Field& f) {
 
 void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
-  root.expect_object({"scenario", "iterations", "hold", "angle", "weights", "solver", "positions", "angles"});
+  root.expect_object(
+      {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "positions", "angles"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
     if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none")
@@ -174,6 +190,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   if (root.has("angle")) c.fold_angle = root["angle"].number();
   if (root.has("weights")) apply_weights(root["weights"], c.weights);
   if (root.has("solver")) apply_solver(root["solver"], c.standard);
+  if (root.has("patch_solver")) apply_patch_solver(root["patch_solver"], c.subsolvers);
   if (root.has("positions")) {
     const Field list = root["positions"];
     c.positions.clear();
@@ -205,6 +222,8 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
     throw InputError(source + ": $.angle: the fold angle must be in [-180, 180] degrees");
   if (const std::string m = c.weights.validate(); !m.empty()) throw InputError(source + ": $.weights: " + m);
   if (const std::string m = c.standard.validate(); !m.empty()) throw InputError(source + ": $.solver: " + m);
+  if (const std::string m = c.subsolvers.validate(); !m.empty())
+    throw InputError(source + ": $.patch_solver: " + m);
 }
 
 Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
@@ -317,6 +336,14 @@ nlohmann::json to_json(const RunConfig& c) {
             {"lagrangian_hessian", s.lagrangian_hessian},
             {"folding", c.standard.folding},
             {"max_fold_bias", c.standard.max_fold_bias}}},
+          {"patch_solver",
+           {{"constraint_tolerance", c.subsolvers.patch.constraint_tolerance},
+            {"final_constraint_tolerance", c.subsolvers.final_constraint_tolerance},
+            {"initial_penalty", c.subsolvers.patch.initial_penalty},
+            {"penalty_growth", c.subsolvers.patch.penalty_growth},
+            {"max_penalty", c.subsolvers.patch.max_penalty},
+            {"max_outer", c.subsolvers.patch.max_outer},
+            {"max_inner", c.subsolvers.patch.max_inner}}},
           {"positions", positions},
           {"angles", angles}};
 }

@@ -11,6 +11,7 @@
 
 #include "solver/scenario.h"
 #include "solver/standard_mode.h"
+#include "solver/subsolvers_mode.h"
 
 namespace sdog {
 
@@ -40,6 +41,7 @@ struct RunConfig {
   double fold_angle = 90;            ///< degrees, the fold scenario's final dihedral angle
   Weights weights;
   StandardOptions standard;
+  SubsolverOptions subsolvers;  ///< the multi-patch modes' per-patch solves
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
 };

@@ -12,34 +12,16 @@
 #include "solver/mode_factory.h"
 #include "solver/run.h"
 #include "solver/run_config.h"
+#include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 
 namespace sdog {
 namespace {
 
-// Collects the report of every iteration.
-struct Recorder : RunObserver {
-  std::vector<IterationReport> reports;
-  void on_iteration(const IterationReport& r, const Dofs&) override { reports.push_back(r); }
-};
+using test::Recorder;
+using test::RunResult;
 
-struct RunResult {
-  RunSummary summary;
-  std::vector<IterationReport> reports;
-  Dofs x;
-};
-
-RunResult run(const DogModel& model, const RunConfig& config) {
-  DogProblem problem(model.fine, model.fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model.fine);
-  auto mode = make_mode("standard", problem, scenario, config);
-  RunResult r;
-  r.x = scenario.start(model.fine);
-  Recorder recorder;
-  r.summary = run_scenario(*mode, problem, scenario, r.x, {&recorder});
-  r.reports = recorder.reports;
-  return r;
-}
+RunResult run(const DogModel& model, const RunConfig& config) { return test::run_mode("standard", model, config); }
 
 // The bars of the issue: DOG constraints below 1e-4 after every iteration and 1e-6 at the end,
 // folded at the end.

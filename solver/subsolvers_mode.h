@@ -1,0 +1,43 @@
+#pragma once
+// The thesis's "subsolvers" mode (block Jacobi over patches): every patch is its own problem
+// (patch_solver.h: Ceres, DOG constraints by an augmented Lagrangian) with, for every stitching
+// pair, an edge-point target on its own copy at the other copy's position from the previous
+// iterate (weight 0.5 x the stitching weight: the stitching residual split into two one-sided
+// halves). All patches are solved in parallel (TBB), then the targets are refreshed.
+//
+// Dihedral angle constraints couple two patches and are not supported by this mode yet: a
+// scenario with angle constraints is refused with a UsageError. The fold check is reported, the
+// fold bias is not used.
+#include <memory>
+
+#include "solver/dog_problem.h"
+#include "solver/mode.h"
+#include "solver/patch_solver.h"
+
+namespace sdog {
+
+struct SubsolverOptions {
+  PatchOptions patch;
+  double final_constraint_tolerance = 5e-7;  ///< of the run's last iteration
+  std::string validate() const;
+};
+
+class SubsolversMode : public Mode {
+ public:
+  /// The problem must outlive the mode; the scenario is installed into it.
+  SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options);
+  const char* name() const override { return "subsolvers"; }
+  void set_time(double t) override;
+  StepReport iterate(Dofs& x, bool last) override;
+
+ private:
+  void refresh_targets(const Dofs& x);
+  DogProblem& problem_;
+  Scenario scenario_;
+  SubsolverOptions options_;
+  LinearPointTerm targets_{"stitch_targets"};  // one block per copy and stitching pair
+  std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
+  std::vector<std::unique_ptr<PatchSolver>> solvers_;
+};
+
+}  // namespace sdog
