@@ -1,8 +1,5 @@
 #include "solver/patch_solver.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <chrono>
 
 namespace sdog {
@@ -37,6 +34,7 @@ Eigen::VectorXd block_residual(const Term& t, int b, Position position) {
 
 std::string PatchOptions::validate() const {
   if (!(constraint_tolerance > 0)) return "constraint_tolerance must be positive";
+  if (!(final_constraint_tolerance > 0)) return "final_constraint_tolerance must be positive";
   if (!(initial_penalty > 0)) return "initial_penalty must be positive";
   if (!(penalty_growth > 1)) return "penalty_growth must be above 1";
   if (!(max_penalty >= initial_penalty)) return "max_penalty must be at least initial_penalty";
@@ -127,6 +125,14 @@ double PatchSolver::objective(const Dofs& x) const {
   return f;
 }
 
+PatchReport PatchSolver::step(Dofs& x, bool last) {
+  const double tolerance = options_.constraint_tolerance;
+  if (last) options_.constraint_tolerance = options_.final_constraint_tolerance;
+  const PatchReport r = solve(x);
+  options_.constraint_tolerance = tolerance;
+  return r;
+}
+
 PatchReport PatchSolver::solve(Dofs& x) {
   const auto t0 = Clock::now();
   PatchReport report;
@@ -171,19 +177,6 @@ PatchReport PatchSolver::solve(Dofs& x) {
   report.objective = objective(x);
   report.ms = ms_between(t0, Clock::now());
   return report;
-}
-
-std::vector<PatchReport> solve_patches(std::vector<std::unique_ptr<PatchSolver>>& solvers, Dofs& x) {
-  const auto t0 = Clock::now();
-  std::vector<PatchReport> reports(solvers.size());
-  // Each solve reads and writes only its own patch's vertices of x.
-  tbb::parallel_for(size_t(0), solvers.size(), [&](size_t i) {
-    const auto start = Clock::now();
-    reports[i] = solvers[i]->solve(x);
-    reports[i].start_ms = ms_between(t0, start);
-    reports[i].thread = tbb::this_task_arena::current_thread_index();
-  });
-  return reports;
 }
 
 }  // namespace sdog

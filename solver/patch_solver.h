@@ -23,13 +23,14 @@
 #include "geometry/dog_mesh.h"
 #include "solver/ceres_cost.h"
 #include "solver/dog_constraints.h"
-#include "solver/patch_report.h"
+#include "solver/patch_stepper.h"
 #include "solver/sqp_solver.h"
 
 namespace sdog {
 
 struct PatchOptions {
   double constraint_tolerance = 5e-5;  ///< |c|_inf of the patch's DOG constraints
+  double final_constraint_tolerance = 5e-7;  ///< ... in the last iteration of a run
   double initial_penalty = 1e4;        ///< mu of the first solve
   double penalty_growth = 10;
   double max_penalty = 1e12;
@@ -39,7 +40,7 @@ struct PatchOptions {
   std::string validate() const;
 };
 
-class PatchSolver {
+class PatchSolver : public PatchStepper {
  public:
   /// Patch `patch` of `mesh`: the blocks of `terms` inside it and the blocks of `dog` inside it.
   /// The terms and `dog` must outlive the solver; their targets may change between solves.
@@ -48,13 +49,12 @@ class PatchSolver {
   PatchSolver(const PatchSolver&) = delete;
   PatchSolver& operator=(const PatchSolver&) = delete;
 
-  int patch() const { return patch_; }
-  /// The tolerance of the following solves (the last iteration of a run asks for a tighter one).
-  void set_constraint_tolerance(double tolerance) { options_.constraint_tolerance = tolerance; }
+  int patch() const override { return patch_; }
+  PatchReport step(Dofs& x, bool last) override;
   /// Solves from x and writes the patch's vertices back into x (others are not touched).
   PatchReport solve(Dofs& x);
   /// Changes the weight of terms[index] (as passed to the constructor).
-  void set_weight(size_t index, double weight);
+  void set_weight(size_t index, double weight) override;
 
   /// Objective (weighted, without augmented terms) and |c|_inf of the patch at x.
   double objective(const Dofs& x) const;
@@ -77,9 +77,5 @@ class PatchSolver {
   Eigen::VectorXd offset_;  // lambda / mu, the augmented terms' offsets
   double mu_;
 };
-
-/// Solves every patch from x (in parallel), writing each patch's vertices into x. Reports in
-/// patch order.
-std::vector<PatchReport> solve_patches(std::vector<std::unique_ptr<PatchSolver>>& solvers, Dofs& x);
 
 }  // namespace sdog

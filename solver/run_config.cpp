@@ -130,11 +130,15 @@ void apply_solver(const Field& f, StandardOptions& o) {
 }
 
 void apply_patch_solver(const Field& f, SubsolverOptions& o) {
-  f.expect_object({"constraint_tolerance", "final_constraint_tolerance", "initial_penalty", "penalty_growth",
-                   "max_penalty", "max_outer", "max_inner"});
+  f.expect_object({"backend", "constraint_tolerance", "final_constraint_tolerance", "initial_penalty",
+                   "penalty_growth", "max_penalty", "max_outer", "max_inner"});
+  if (f.has("backend")) {
+    o.backend = f["backend"].text();
+    if (o.backend != "sqp" && o.backend != "ceres") f["backend"].fail("expected \"sqp\" or \"ceres\"");
+  }
   PatchOptions& p = o.patch;
   const std::pair<const char*, double*> positive[] = {{"constraint_tolerance", &p.constraint_tolerance},
-                                                      {"final_constraint_tolerance", &o.final_constraint_tolerance},
+                                                      {"final_constraint_tolerance", &p.final_constraint_tolerance},
                                                       {"initial_penalty", &p.initial_penalty},
                                                       {"penalty_growth", &p.penalty_growth},
                                                       {"max_penalty", &p.max_penalty}};
@@ -337,8 +341,9 @@ nlohmann::json to_json(const RunConfig& c) {
             {"folding", c.standard.folding},
             {"max_fold_bias", c.standard.max_fold_bias}}},
           {"patch_solver",
-           {{"constraint_tolerance", c.subsolvers.patch.constraint_tolerance},
-            {"final_constraint_tolerance", c.subsolvers.final_constraint_tolerance},
+           {{"backend", c.subsolvers.backend},
+            {"constraint_tolerance", c.subsolvers.patch.constraint_tolerance},
+            {"final_constraint_tolerance", c.subsolvers.patch.final_constraint_tolerance},
             {"initial_penalty", c.subsolvers.patch.initial_penalty},
             {"penalty_growth", c.subsolvers.patch.penalty_growth},
             {"max_penalty", c.subsolvers.patch.max_penalty},

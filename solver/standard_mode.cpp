@@ -1,5 +1,7 @@
 #include "solver/standard_mode.h"
 
+#include "solver/blas_threads.h"
+
 namespace sdog {
 
 std::string StandardOptions::validate() const {
@@ -19,6 +21,7 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
 void StandardMode::set_time(double t) { scenario_.apply(problem_, t); }
 
 StepReport StandardMode::iterate(Dofs& x, bool last) {
+  set_blas_threads(default_blas_threads());  // a patch mode before may have lowered it
   StepReport report;
   auto run = [&]() {
     const SqpReport r = sqp_->iterate(x, last);

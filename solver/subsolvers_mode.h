@@ -13,19 +13,21 @@
 #include "solver/dog_problem.h"
 #include "solver/mode.h"
 #include "solver/patch_solver.h"
+#include "solver/patch_sqp.h"
 
 namespace sdog {
 
 struct SubsolverOptions {
-  PatchOptions patch;
-  double final_constraint_tolerance = 5e-7;  ///< of the run's last iteration
+  std::string backend = "sqp";  ///< per-patch steps: "sqp" (patch_sqp.h) or "ceres" (patch_solver.h)
+  PatchOptions patch;           ///< of the Ceres backend (the SQP backend uses the standard options)
   std::string validate() const;
 };
 
 class SubsolversMode : public Mode {
  public:
   /// The problem must outlive the mode; the scenario is installed into it.
-  SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options);
+  SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
+                 const SqpOptions& sqp);
   const char* name() const override { return "subsolvers"; }
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
@@ -37,7 +39,7 @@ class SubsolversMode : public Mode {
   SubsolverOptions options_;
   LinearPointTerm targets_{"stitch_targets"};  // one block per copy and stitching pair
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
-  std::vector<std::unique_ptr<PatchSolver>> solvers_;
+  std::vector<std::unique_ptr<PatchStepper>> patches_;
 };
 
 }  // namespace sdog

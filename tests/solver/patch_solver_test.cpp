@@ -5,6 +5,8 @@
 #include "geometry/dog_model.h"
 #include "solver/dog_problem.h"
 #include "solver/patch_solver.h"
+#include "solver/patch_sqp.h"
+#include "solver/patch_term.h"
 #include "solver/run_config.h"
 #include "tests/test_support.h"
 
@@ -22,8 +24,8 @@ struct PatchCase {
     scenario.install(*problem);
     scenario.apply(*problem, 0.5);  // the dragged corner half way
   }
-  std::vector<std::unique_ptr<PatchSolver>> solvers() const {
-    std::vector<std::unique_ptr<PatchSolver>> out;
+  std::vector<std::unique_ptr<PatchStepper>> solvers() const {
+    std::vector<std::unique_ptr<PatchStepper>> out;
     for (int p = 0; p < model.fine.patch_count(); ++p)
       out.push_back(std::make_unique<PatchSolver>(model.fine, p, problem->objective_terms(), problem->dog));
     return out;
@@ -43,11 +45,10 @@ struct PatchCase {
 
 TEST(PatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   const PatchCase s("four_corner_arcs.svg", {15, 15});
-  auto solvers = s.solvers();
   Dofs x = s.bent();
   const Dofs x0 = x;
   // The last patch holds the dragged corner: its objective is far from its minimum.
-  PatchSolver& last = *solvers.back();
+  PatchSolver last(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
   const double before = last.objective(x);
   const PatchReport r = last.solve(x);
   EXPECT_TRUE(r.converged);
@@ -74,12 +75,12 @@ TEST(PatchSolver, ParallelSolveEqualsSerialSolve) {
   {
     auto solvers = s.solvers();
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    a = solve_patches(solvers, serial);
+    a = step_patches(solvers, serial, false);
   }
   {
     auto solvers = s.solvers();
     tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
-    b = solve_patches(solvers, parallel);
+    b = step_patches(solvers, parallel, false);
   }
   EXPECT_TRUE(serial == parallel);
   ASSERT_EQ(a.size(), static_cast<size_t>(s.model.fine.patch_count()));
@@ -95,8 +96,8 @@ TEST(PatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
   const PatchCase s("one_curve.svg", {15, 11});
   auto solvers = s.solvers();
   Dofs x = s.bent();
-  const auto first = solve_patches(solvers, x);
-  const auto again = solve_patches(solvers, x);
+  const auto first = step_patches(solvers, x, false);
+  const auto again = step_patches(solvers, x, false);
   for (size_t p = 0; p < again.size(); ++p) {
     EXPECT_TRUE(again[p].converged) << "patch " << p;
     // Patches without position targets may slide rigidly (bending and isometry do not see it);
@@ -112,6 +113,58 @@ TEST(PatchSolver, WeightChangesReachTheCeresProblem) {
   const double before = solver.objective(x);
   solver.set_weight(kPositions, 0);
   EXPECT_LT(solver.objective(x), before);  // the position term carried weight before
+}
+
+TEST(PatchTerm, KeepsTheBlocksInsideThePatchReindexed) {
+  const PatchCase s("four_corner_arcs.svg", {15, 15});
+  const DogMesh& mesh = s.model.fine;
+  const Term& dog = s.problem->dog;
+  const Dofs x = s.bent();
+  int total = 0;
+  for (int p = 0; p < mesh.patch_count(); ++p) {
+    const int begin = mesh.patch_begin[p], end = mesh.patch_begin[p + 1];
+    const PatchTerm view(dog, begin, end);
+    total += view.block_count();
+    for (int b = 0; b < view.block_count(); ++b) {
+      const int src = view.source_block(b);
+      ASSERT_EQ(view.block_size(b), dog.block_size(src));
+      std::vector<Eigen::Vector3d> p1(view.block_size(b));
+      for (int j = 0; j < view.block_size(b); ++j) {
+        const int v = view.block_vertices(b)[j];
+        ASSERT_GE(v, 0);
+        ASSERT_LT(v, end - begin);
+        ASSERT_EQ(v + begin, dog.block_vertices(src)[j]);
+        p1[j] = vertex_of(x, v + begin);
+      }
+      Eigen::VectorXd r1(view.residual_count(b)), r2(view.residual_count(b));
+      view.evaluate(b, p1.data(), r1.data(), nullptr);
+      dog.evaluate(src, p1.data(), r2.data(), nullptr);
+      EXPECT_EQ(r1, r2);
+    }
+  }
+  EXPECT_EQ(total, dog.block_count());  // DOG constraints never cross patches
+}
+
+TEST(PatchSqp, StepsOnlyItsPatchAndMeetsTheTolerance) {
+  const PatchCase s("four_corner_arcs.svg", {15, 15});
+  const int patch = s.model.fine.patch_count() - 1;
+  PatchSqp sqp(s.model.fine, patch, s.problem->objective_terms(), s.problem->dog, SqpOptions{});
+  PatchSolver reference(s.model.fine, patch, s.problem->objective_terms(), s.problem->dog);
+  Dofs x = s.bent();
+  const Dofs x0 = x;
+  const double before = reference.objective(x);
+  for (int k = 0; k < 5; ++k) {
+    const PatchReport r = sqp.step(x, k == 4);
+    ASSERT_TRUE(r.converged);
+    EXPECT_LE(reference.dog_max(x), 5e-5 * 1.01) << "step " << k;
+  }
+  EXPECT_LE(reference.dog_max(x), 1e-6);
+  EXPECT_LT(reference.objective(x), 0.5 * before);
+  const int begin = s.model.fine.patch_begin[patch], end = s.model.fine.patch_begin[patch + 1];
+  for (int v = 0; v < s.model.fine.vertex_count(); ++v)
+    if (v < begin || v >= end) {
+      EXPECT_EQ(vertex_of(x, v), vertex_of(x0, v)) << "vertex " << v;
+    }
 }
 
 TEST(TermCost, OffsetShiftsResidualsNotJacobians) {

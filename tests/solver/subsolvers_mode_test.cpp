@@ -47,6 +47,18 @@ TEST(SubsolversMode, KeepsTheDogConstraintsAndReportsEveryPatch) {
   EXPECT_LT(r.reports.back().diagnostics.terms[kPositions], 0.9 * r.reports[19].diagnostics.terms[kPositions]);
 }
 
+TEST(SubsolversMode, CeresBackendKeepsTheDogConstraints) {
+  RunConfig config;
+  config.iterations = 8;
+  config.hold = 2;
+  config.subsolvers.backend = "ceres";
+  const Result r = run_subsolvers(model(), config, 2);
+  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+  EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
+  EXPECT_GT(r.reports.back().diagnostics.terms[kBending], 1e-3);  // it moved
+}
+
 TEST(SubsolversMode, StitchingTargetsPullThePatchesTogether) {
   RunConfig config;
   config.iterations = 10;
