@@ -12,7 +12,8 @@ struct PatchReport {
   double objective = 0;  ///< weighted patch objective at the end (without the augmented terms)
   double dog_max = 0;    ///< |c|_inf of the patch's DOG constraints at the end
   int outer = 0;         ///< augmented-Lagrangian updates
-  int inner = 0;         ///< Ceres iterations in all
+  int inner = 0;         ///< Ceres iterations in all (SQP backend: optimality steps)
+  int factorizations = 0;  ///< global factorisations of the patch (SQP backend)
   bool converged = false;
 };
 

@@ -25,6 +25,7 @@ PatchReport PatchSqp::step(Dofs& x, bool last) {
   PatchReport report;
   report.patch = patch_;
   report.inner = r.steps;
+  report.factorizations = r.factorizations;
   report.linear_ms = r.factor_ms;
   report.dog_max = r.constraint_max;
   report.converged = !r.failed;

@@ -61,7 +61,8 @@ StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   }
   for (const auto& p : report.patches) {
     report.sqp_steps += p.inner;
-    report.factor_ms += p.linear_ms;
+    report.factor_ms += p.linear_ms;  // summed over patches: CPU time, not wall time
+    report.factorizations += p.factorizations;
     if (!p.converged && !report.failed) {
       report.failed = true;
       report.failure = "the step of patch " + std::to_string(p.patch) + " failed";
