@@ -37,10 +37,7 @@ void print_row(const BenchResult& r) {
 
 void bench(const BenchArgs& a) {
   set_thread_count(a.threads);
-  for (const auto& m : a.modes) {
-    const auto names = mode_names();
-    if (std::find(names.begin(), names.end(), m) == names.end()) throw UsageError("--modes: unknown mode '" + m + "'");
-  }
+  for (const auto& m : a.modes) check_mode_name(m, "--modes: ");
   std::vector<BenchCase> cases;
   if (a.thesis_grid) {
     for (const auto& m : a.modes)

@@ -14,6 +14,7 @@
 #include "geometry/atomic_output.h"
 #include "geometry/errors.h"
 #include "geometry/text_format.h"
+#include "solver/benchmark.h"
 #include "solver/mode_factory.h"
 #include "solver/run_log.h"
 #include "ui/vis/frame_writer.h"
@@ -73,26 +74,12 @@ struct Totals : RunObserver {
     factor_ms += r.step.factor_ms;
     iteration_ms.push_back(r.iteration_ms);
   }
-  double median_ms() const {
-    if (iteration_ms.empty()) return 0;
-    std::vector<double> v = iteration_ms;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  }
+  double median_ms() const { return median(iteration_ms); }
 };
-
-void check_mode(const std::string& mode) {
-  const auto names = mode_names();
-  if (std::find(names.begin(), names.end(), mode) == names.end()) {
-    std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw UsageError("--mode: unknown mode '" + mode + "' (known: " + known + ")");
-  }
-}
 
 void run(const RunArgs& a) {
   const auto start = std::chrono::steady_clock::now();
-  check_mode(a.mode);
+  check_mode_name(a.mode, "--mode: ");
   set_thread_count(a.threads);
   RunConfig config;
   if (!a.config.empty()) read_run_config(a.config, config);
@@ -205,9 +192,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
   CLI::App* cmd = app.add_subcommand("run", "Deform the DOG of a crease pattern with a solver mode over a scenario; "
                                             "write the run log, run.json and VTK frames");
   add_pattern_options(*cmd, a->pattern);
-  std::string modes;
-  for (const auto& n : mode_names()) modes += (modes.empty() ? "" : ", ") + n;
-  cmd->add_option("--mode", a->mode, "solver mode (" + modes + ")")->capture_default_str();
+  cmd->add_option("--mode", a->mode, "solver mode (" + known_modes() + ")")->capture_default_str();
   a->scenario_opt = cmd->add_option("--scenario", a->scenario,
                                     "corners: the thesis protocol (first grid corner held, last one dragged); "
                                     "fold: every crease folds from flat to --angle; none: only the --config constraints")

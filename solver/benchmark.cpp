@@ -10,13 +10,13 @@
 #include "solver/run_config.h"
 
 namespace sdog {
-namespace {
-
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
 }
+
+namespace {
 
 struct Recorder : RunObserver {
   int repeat = 0, total = 0;

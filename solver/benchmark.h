@@ -36,6 +36,9 @@ struct BenchResult {
   std::vector<double> run_medians;  ///< per repeat
 };
 
+/// The median (upper median for even sizes; 0 when empty).
+double median(std::vector<double> values);
+
 /// Runs one case; `progress(repeat, iteration, total)` is called after every iteration.
 BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
                           const std::function<void(int, int, int)>& progress = {});

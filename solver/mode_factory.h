@@ -11,6 +11,10 @@ namespace sdog {
 
 /// The names `make_mode` accepts, in the order of the documentation.
 std::vector<std::string> mode_names();
+/// The names, comma separated (for help texts and messages).
+std::string known_modes();
+/// Throws UsageError "`what`unknown mode 'name' (known: ...)" unless `name` is a mode.
+void check_mode_name(const std::string& name, const std::string& what = "");
 /// True when the mode needs the coarse mesh and the fine-coarse map.
 bool mode_needs_coarse(const std::string& name);
 

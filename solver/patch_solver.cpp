@@ -1,16 +1,10 @@
 #include "solver/patch_solver.h"
 
-#include <chrono>
+#include "solver/stopwatch.h"
 
 namespace sdog {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 bool inside(const Term& t, int b, int begin, int end) {
   for (int j = 0; j < t.block_size(b); ++j) {

@@ -1,6 +1,6 @@
 #include "solver/patch_sqp.h"
 
-#include <chrono>
+#include "solver/stopwatch.h"
 
 namespace sdog {
 
@@ -17,7 +17,7 @@ PatchSqp::PatchSqp(const DogMesh& mesh, int patch, const std::vector<WeightedTer
 }
 
 PatchReport PatchSqp::step(Dofs& x, bool last) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(end_ - begin_);
   Dofs local = x.segment(3 * static_cast<Eigen::Index>(begin_), n);
   const SqpReport r = sqp_->iterate(local, last);
@@ -30,7 +30,7 @@ PatchReport PatchSqp::step(Dofs& x, bool last) {
   report.dog_max = r.constraint_max;
   report.converged = !r.failed;
   report.objective = sqp_->objective(local);
-  report.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.ms = ms_since(t0);
   return report;
 }
 

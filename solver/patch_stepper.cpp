@@ -3,19 +3,18 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <chrono>
+#include "solver/stopwatch.h"
 
 namespace sdog {
 
 std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last) {
-  using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   std::vector<PatchReport> reports(patches.size());
   // Each step reads and writes only its own patch's vertices of x.
   tbb::parallel_for(size_t(0), patches.size(), [&](size_t i) {
     const auto start = Clock::now();
     reports[i] = patches[i]->step(x, last);
-    reports[i].start_ms = std::chrono::duration<double, std::milli>(start - t0).count();
+    reports[i].start_ms = ms_between(t0, start);
     reports[i].thread = tbb::this_task_arena::current_thread_index();
   });
   return reports;

@@ -1,12 +1,11 @@
 #include "solver/run.h"
 
-#include <chrono>
+#include "solver/stopwatch.h"
 
 namespace sdog {
 
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
                         const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel) {
-  using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   RunSummary summary;
   const int total = scenario.iterations + scenario.hold;
@@ -18,7 +17,7 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     mode.set_time(report.t);
     const auto t0 = Clock::now();
     report.step = mode.iterate(x, k == total);
-    report.iteration_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    report.iteration_ms = ms_since(t0);
     report.diagnostics = diagnose(problem, x);
     if (report.t < 1) {
       scenario.apply(problem, 1.0);
@@ -36,7 +35,7 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     }
     summary.iterations = k;
   }
-  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.seconds = ms_since(start) / 1000;
   return summary;
 }
 

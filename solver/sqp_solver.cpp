@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
-#include <chrono>
 #include <cmath>
 
 #include "geometry/text_format.h"
+#include "solver/stopwatch.h"
 
 namespace sdog {
 
@@ -33,15 +33,10 @@ std::string SqpOptions::validate() const {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 // A chord restoration step is followed by another while it cuts |c|^2 at least this much, up to
 // kMaxChords per iteration.
 constexpr double kChordProgress = 0.8;
 constexpr int kMaxChords = 5;
-
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
 
 std::vector<const Term*> all_terms(const std::vector<WeightedTerm>& objective, const Term& constraints) {
   std::vector<const Term*> terms;
