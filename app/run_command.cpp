@@ -35,6 +35,9 @@ struct RunArgs {
   int threads = 0;
   bool keep_failed = false;
   bool quiet = false;
+  double link_weight = 0.1;
+  bool no_fine_to_coarse = false;
+  CLI::Option *link_weight_opt = nullptr;
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
 };
 
@@ -87,6 +90,8 @@ void run(const RunArgs& a) {
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
+  if (a.link_weight_opt->count()) config.coarse.link_weight = a.link_weight;
+  if (a.no_fine_to_coarse) config.coarse.fine_to_coarse = false;
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
 
   // Fail on an unusable output directory before the work, not after it.
@@ -104,7 +109,7 @@ void run(const RunArgs& a) {
                                "through grid vertices only have none: try another resolution)"
                          : "the run has no targets: scenario '" + config.scenario +
                                "' and no position or angle constraints in the configuration");
-  std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config);
+  std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config, &model);
   Dofs x = scenario.start(model.fine);
   const int total = scenario.iterations + scenario.hold;
 
@@ -215,9 +220,15 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
-  cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); the factorisation always uses SDOG_BLAS_THREADS (default 2) BLAS threads, so results do not depend on this")
+  cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); results do not depend on this (the standard factorisation uses SDOG_BLAS_THREADS, default 2, BLAS threads; patch factorisations one each)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  a->link_weight_opt = cmd->add_option("--link-weight", a->link_weight,
+                                       "coarse mode: weight of the link constraints between fine and coarse twins")
+                           ->check(CLI::Range(0.0, 1e12))
+                           ->capture_default_str();
+  cmd->add_flag("--no-fine-to-coarse", a->no_fine_to_coarse,
+                "coarse mode: the coarse mesh is not pulled towards the fine one (one-way coupling)");
   cmd->add_flag("--keep-failed", a->keep_failed, "write the log and frames even when the run fails or is cancelled");
   cmd->add_flag("-q,--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &runner]() { runner = [a]() { run(*a); }; });

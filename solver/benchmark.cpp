@@ -56,7 +56,7 @@ BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
   for (int k = 0; k < std::max(1, options.repeat); ++k) {
     DogProblem problem(model.fine, model.fine_topology, config.weights);
     const Scenario scenario = make_scenario(config, model.fine);
-    auto mode = make_mode(c.mode, problem, scenario, config);
+    auto mode = make_mode(c.mode, problem, scenario, config, &model);
     Dofs x = scenario.start(model.fine);
     Recorder rec;
     rec.repeat = k;

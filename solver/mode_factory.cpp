@@ -4,12 +4,13 @@
 #include <stdexcept>
 
 #include "geometry/errors.h"
+#include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
 
 namespace sdog {
 
-std::vector<std::string> mode_names() { return {"standard", "subsolvers"}; }
+std::vector<std::string> mode_names() { return {"standard", "subsolvers", "coarse"}; }
 
 std::string known_modes() {
   std::string known;
@@ -23,12 +24,16 @@ void check_mode_name(const std::string& name, const std::string& what) {
     throw UsageError(what + "unknown mode '" + name + "' (known: " + known_modes() + ")");
 }
 
-bool mode_needs_coarse(const std::string&) { return false; }
+bool mode_needs_coarse(const std::string& name) { return name == "coarse"; }
 
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
-                                const RunConfig& config) {
+                                const RunConfig& config, const DogModel* model) {
   if (name == "standard") return std::make_unique<StandardMode>(problem, scenario, config.standard);
   if (name == "subsolvers") return std::make_unique<SubsolversMode>(problem, scenario, config.subsolvers, config.standard.sqp);
+  if (name == "coarse") {
+    if (!model) throw std::logic_error("make_mode: mode coarse needs the model");
+    return std::make_unique<CoarseMode>(problem, *model, scenario, config.coarse, config.standard);
+  }
   check_mode_name(name);
   throw std::logic_error("make_mode: mode '" + name + "' is listed but not built");
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/dog_model.h"
 #include "solver/mode.h"
 #include "solver/run_config.h"
 
@@ -20,7 +21,8 @@ bool mode_needs_coarse(const std::string& name);
 
 /// The mode `name` on the problem (which must outlive it) with the config's solver options.
 /// Throws UsageError for unknown names.
+/// `model` (needed by the coarse modes, mode_needs_coarse) must outlive the mode.
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
-                                const RunConfig& config);
+                                const RunConfig& config, const DogModel* model = nullptr);
 
 }  // namespace sdog

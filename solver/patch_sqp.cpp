@@ -1,15 +1,18 @@
 #include "solver/patch_sqp.h"
 
+#include <algorithm>
+
 #include "solver/stopwatch.h"
 
 namespace sdog {
 
 PatchSqp::PatchSqp(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-                   const SqpOptions& options)
+                   const SqpOptions& options, const PatchCoupling& coupling)
     : patch_(patch), begin_(mesh.patch_begin[patch]), end_(mesh.patch_begin[patch + 1]) {
   std::vector<WeightedTerm> local;
   for (const auto& t : terms) {
-    terms_.push_back(std::make_unique<PatchTerm>(*t.term, begin_, end_));
+    const bool split = std::find(coupling.split.begin(), coupling.split.end(), t.term) != coupling.split.end();
+    terms_.push_back(std::make_unique<PatchTerm>(*t.term, begin_, end_, split ? coupling.frozen : nullptr));
     local.push_back({terms_.back().get(), t.weight, t.exact_hessian});
   }
   dog_ = std::make_unique<PatchTerm>(dog, begin_, end_);

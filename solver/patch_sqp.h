@@ -12,11 +12,19 @@
 
 namespace sdog {
 
+/// Cross-patch terms of a patch problem: the blocks of the `split` terms that reach into other
+/// patches are kept with those vertices read from `frozen` (patch_term.h).
+struct PatchCoupling {
+  const Dofs* frozen = nullptr;
+  std::vector<const Term*> split;
+};
+
 class PatchSqp : public PatchStepper {
  public:
-  /// The terms and `dog` must outlive the stepper; their targets may change between steps.
+  /// The terms, `dog` and the coupling's frozen state must outlive the stepper; their targets may
+  /// change between steps.
   PatchSqp(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-           const SqpOptions& options);
+           const SqpOptions& options, const PatchCoupling& coupling = {});
   int patch() const override { return patch_; }
   PatchReport step(Dofs& x, bool last) override;
   void set_weight(size_t index, double weight) override { sqp_->set_weight(index, weight); }

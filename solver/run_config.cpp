@@ -148,6 +148,13 @@ void apply_patch_solver(const Field& f, SubsolverOptions& o) {
   if (f.has("max_inner")) p.max_inner = f["max_inner"].integer(1);
 }
 
+void apply_coarse(const Field& f, CoarseOptions& o) {
+  f.expect_object({"link_weight", "fine_to_coarse", "prolongate"});
+  if (f.has("prolongate")) o.prolongate = f["prolongate"].boolean();
+  if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
+  if (f.has("fine_to_coarse")) o.fine_to_coarse = f["fine_to_coarse"].boolean();
+}
+
 PositionSpec position_spec(const Field& f) {
   f.expect_object({"vertex", "near", "start", "end", "move"});
   PositionSpec p;
@@ -183,7 +190,8 @@ AngleSpec angle_spec(const Field& f) {
 void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
   root.expect_object(
-      {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "positions", "angles"});
+      {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "coarse", "positions",
+       "angles"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
     if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none")
@@ -195,6 +203,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   if (root.has("weights")) apply_weights(root["weights"], c.weights);
   if (root.has("solver")) apply_solver(root["solver"], c.standard);
   if (root.has("patch_solver")) apply_patch_solver(root["patch_solver"], c.subsolvers);
+  if (root.has("coarse")) apply_coarse(root["coarse"], c.coarse);
   if (root.has("positions")) {
     const Field list = root["positions"];
     c.positions.clear();
@@ -349,6 +358,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"max_penalty", c.subsolvers.patch.max_penalty},
             {"max_outer", c.subsolvers.patch.max_outer},
             {"max_inner", c.subsolvers.patch.max_inner}}},
+          {"coarse",
+           {{"link_weight", c.coarse.link_weight}, {"fine_to_coarse", c.coarse.fine_to_coarse}, {"prolongate", c.coarse.prolongate}}},
           {"positions", positions},
           {"angles", angles}};
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "solver/scenario.h"
+#include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
 
@@ -42,6 +43,7 @@ struct RunConfig {
   Weights weights;
   StandardOptions standard;
   SubsolverOptions subsolvers;  ///< the multi-patch modes' per-patch solves
+  CoarseOptions coarse;         ///< the coarse mode
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
 };

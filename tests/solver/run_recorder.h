@@ -26,7 +26,7 @@ struct RunResult {
 inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config) {
   DogProblem problem(model.fine, model.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, model.fine);
-  auto mode = make_mode(mode_name, problem, scenario, config);
+  auto mode = make_mode(mode_name, problem, scenario, config, &model);
   RunResult r;
   r.x = scenario.start(model.fine);
   Recorder recorder;

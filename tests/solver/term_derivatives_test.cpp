@@ -16,6 +16,7 @@
 #include "solver/fold_bias.h"
 #include "solver/isometry.h"
 #include "solver/linear_point_term.h"
+#include "solver/patch_term.h"
 #include "tests/test_support.h"
 
 namespace sdog {
@@ -32,6 +33,17 @@ struct Fixture {
 const Fixture& fixture() {
   static Fixture f;
   return f;
+}
+
+// An angle constraint on the crossing edge of every crease point with two copies.
+void add_crease_angles(const Fixture& f, EdgeAngleTerm& t) {
+  for (const auto& p : f.model.fine.stitching.points) {
+    if (p.copies.size() != 2 || p.copies[0].v1 == p.copies[0].v2) continue;
+    const EdgePoint& a = p.copies[0];
+    const EdgePoint& b = p.copies[1];
+    const double l = (vertex_of(f.rest, a.v1) - vertex_of(f.rest, a.v2)).norm();
+    t.add(a.v1, a.v2, b.v1, b.v2, l * l, crease_edge_cosine(0.7, 1.2));
+  }
 }
 
 // A random non-flat configuration: the rest state moved in plane and lifted out of it.
@@ -223,15 +235,8 @@ TEST(TermDerivatives, PositionsEdgePointsStitchingLinks) {
 
 TEST(TermDerivatives, EdgeAnglesAtCreasePoints) {
   const auto& f = fixture();
-  const DogMesh& mesh = f.model.fine;
   EdgeAngleTerm t;
-  for (const auto& p : mesh.stitching.points) {
-    if (p.copies.size() != 2 || p.copies[0].v1 == p.copies[0].v2) continue;
-    const EdgePoint& a = p.copies[0];
-    const EdgePoint& b = p.copies[1];
-    const double l = (vertex_of(f.rest, a.v1) - vertex_of(f.rest, a.v2)).norm();
-    t.add(a.v1, a.v2, b.v1, b.v2, l * l, crease_edge_cosine(0.7, 1.2));
-  }
+  add_crease_angles(f, t);
   const Dofs x = perturbed(f.rest, 6, 0.2, 0.5);
   check_jacobians(t, x);
   check_second_order(t, x);
@@ -246,6 +251,45 @@ TEST(TermDerivatives, FoldBias) {
   // nearly flat and moderately bent.
   check_jacobians(t, perturbed(f.rest, 7, 0.0, 1e-4), 1e-7);
   check_jacobians(t, perturbed(f.rest, 8, 0.05, 1e-3), 1e-7);
+}
+
+// A patch's view of a cross-patch term with the other patches frozen (patch_term.h): residuals
+// equal the whole term's at the frozen state, the Jacobian is the inside columns of the whole one,
+// and both derivatives agree with finite differences in the patch's own unknowns.
+TEST(TermDerivatives, SplitPatchBlocksAgainstAFrozenState) {
+  const auto& f = fixture();
+  const DogMesh& mesh = f.model.fine;
+  EdgeAngleTerm angles;
+  add_crease_angles(f, angles);
+  const Dofs x = perturbed(f.rest, 11, 0.2, 0.5);
+  int split = 0;
+  for (int patch = 0; patch < mesh.patch_count(); ++patch) {
+    const int begin = mesh.patch_begin[patch], end = mesh.patch_begin[patch + 1];
+    const PatchTerm view(angles, begin, end, &x);
+    const PatchTerm whole_only(angles, begin, end);
+    EXPECT_EQ(view.block_count() - view.split_block_count(), whole_only.block_count());
+    split += view.split_block_count();
+    const Dofs local = x.segment(3 * begin, 3 * (end - begin));
+    for (int b = 0; b < view.block_count(); ++b) {
+      const int src = view.source_block(b);
+      const Matrix J = analytic_jacobian(view, b, local);
+      const Matrix J_whole = analytic_jacobian(angles, src, x);
+      std::vector<Eigen::Vector3d> p(view.block_size(b)), q(angles.block_size(src));
+      gather_block(view, b, local, p.data());
+      gather_block(angles, src, x, q.data());
+      EXPECT_LT((residuals(view, b, p) - residuals(angles, src, q)).cwiseAbs().maxCoeff(), 1e-15);
+      for (int j = 0; j < view.block_size(b); ++j) {
+        const int v = view.block_vertices(b)[j] + begin;
+        const int* whole_vertices = angles.block_vertices(src);
+        const int slot = static_cast<int>(std::find(whole_vertices, whole_vertices + angles.block_size(src), v) - whole_vertices);
+        ASSERT_LT(slot, angles.block_size(src));
+        EXPECT_LT(relative_error(Matrix(J.middleCols(3 * j, 3)), Matrix(J_whole.middleCols(3 * slot, 3))), 1e-15);
+      }
+      EXPECT_LT(relative_error(J, numeric_jacobian(view, b, local, 1e-5)), 1e-6) << "patch " << patch << " block " << b;
+    }
+    if (view.split_block_count() > 0) check_second_order(view, local);
+  }
+  EXPECT_GT(split, 0);  // the crease edges' angle blocks reach across patches
 }
 
 TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessian) {

@@ -1,0 +1,65 @@
+#pragma once
+// The thesis's coarse mode ("coarse guess"), one iteration =
+//   1. coarse step: one standard-solver iteration on the coarse DOG, position constraints moved
+//      to the coarse twins of their (link) vertices, coarse link vertices pulled towards their
+//      fine twins (link weight; on both sides, unlike the reference);
+//   2. coarse to fine: every coarse crease curve is interpolated at the arc-length fractions
+//      stored in the fine/coarse map, and both copies of each fine crease point get that position
+//      as an edge-point target (weight 0.5 x stitching: it replaces stitching on the fine side);
+//   3. fine step: every fine patch steps on its own (patch_stepper.h, in parallel) with its
+//      bending, isometry, positions, the crease targets and link targets at the coarse twins of
+//      its link vertices (link weight);
+//   4. fine to coarse: the coarse link targets of the next iteration are the new fine positions
+//      (off with fine_to_coarse = false).
+// Limitations for now: position constraints must be on link vertices (fine vertices with a coarse
+// twin), and angle constraints are refused; both are usage errors.
+#include <memory>
+
+#include "geometry/dog_model.h"
+#include "solver/curve_interpolation.h"
+#include "solver/dog_problem.h"
+#include "solver/mode.h"
+#include "solver/patch_stepper.h"
+#include "solver/standard_mode.h"
+
+namespace sdog {
+
+struct CoarseOptions {
+  double link_weight = 0.1;   ///< the thesis's ftc_weight
+  bool fine_to_coarse = true;
+  bool prolongate = false;  ///< start each fine step from the coarse state carried to the fine mesh
+  std::string validate() const;
+};
+
+class CoarseMode : public Mode {
+ public:
+  /// The fine problem and the model must outlive the mode; the scenario is installed into the
+  /// fine problem and mapped to the coarse one.
+  CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& scenario, const CoarseOptions& options,
+             const StandardOptions& standard);
+  ~CoarseMode() override;
+  const char* name() const override { return "coarse"; }
+  void set_time(double t) override;
+  StepReport iterate(Dofs& x, bool last) override;
+  const Dofs& coarse_state() const { return coarse_x_; }
+  void prolongate(Dofs& x) const;
+
+ private:
+  void set_crease_targets();
+  void set_fine_link_targets();
+  void set_coarse_link_targets(const Dofs& x);
+  DogProblem& fine_;
+  const DogModel& model_;
+  Scenario scenario_;
+  CoarseOptions options_;
+  std::unique_ptr<DogProblem> coarse_;
+  std::unique_ptr<StandardMode> coarse_mode_;
+  Dofs coarse_x_;
+  LinearPointTerm crease_targets_{"crease_targets"};  // per fine crease point copy
+  std::vector<CurveStencil> crease_stencils_;         // per block of crease_targets_
+  std::vector<int> fine_links_, coarse_links_;        // link blocks: fine vertex / coarse vertex
+  Dofs frozen_;  // the fine state before the patch step: the other side of cross-patch blocks
+  std::vector<std::unique_ptr<PatchStepper>> patches_;
+};
+
+}  // namespace sdog
