@@ -36,6 +36,8 @@ struct RunArgs {
   bool keep_failed = false;
   bool quiet = false;
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
+  double rho = 1, gamma = 1;  // the ADMM modes
+  CLI::Option *rho_opt = nullptr, *gamma_opt = nullptr;
 };
 
 std::atomic<bool> g_cancel{false};
@@ -87,6 +89,8 @@ void run(const RunArgs& a) {
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
+  if (a.rho_opt->count()) config.admm.rho = a.rho;
+  if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
 
   // Fail on an unusable output directory before the work, not after it.
@@ -195,8 +199,10 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--mode", a->mode, "solver mode (" + known_modes() + ")")->capture_default_str();
   a->scenario_opt = cmd->add_option("--scenario", a->scenario,
                                     "corners: the thesis protocol (first grid corner held, last one dragged); "
-                                    "fold: every crease folds from flat to --angle; none: only the --config constraints")
-                        ->check(CLI::IsMember({"corners", "fold", "none"}))
+                                    "fold: every crease folds from flat to --angle; none: only the --config constraints; "
+                                    "flatten: start with every crease folded to --angle, one corner held, nothing else "
+                                    "asked (the thesis's ADMM test)")
+                        ->check(CLI::IsMember({"corners", "fold", "none", "flatten"}))
                         ->capture_default_str();
   a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))
@@ -218,6 +224,10 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); the factorisation always uses SDOG_BLAS_THREADS (default 2) BLAS threads, so results do not depend on this")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  a->rho_opt = cmd->add_option("--rho", a->rho, "ADMM modes: penalty rho of the augmented terms ($.admm.rho)")
+                   ->check(CLI::PositiveNumber);
+  a->gamma_opt = cmd->add_option("--gamma", a->gamma, "jadmm, proxjadmm: multiplier damping gamma ($.admm.gamma)")
+                     ->check(CLI::PositiveNumber);
   cmd->add_flag("--keep-failed", a->keep_failed, "write the log and frames even when the run fails or is cancelled");
   cmd->add_flag("-q,--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &runner]() { runner = [a]() { run(*a); }; });

@@ -4,12 +4,13 @@
 #include <stdexcept>
 
 #include "geometry/errors.h"
+#include "solver/admm_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
 
 namespace sdog {
 
-std::vector<std::string> mode_names() { return {"standard", "subsolvers"}; }
+std::vector<std::string> mode_names() { return {"standard", "subsolvers", "vsadmm", "jadmm", "proxjadmm"}; }
 
 std::string known_modes() {
   std::string known;
@@ -29,6 +30,10 @@ std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, co
                                 const RunConfig& config) {
   if (name == "standard") return std::make_unique<StandardMode>(problem, scenario, config.standard);
   if (name == "subsolvers") return std::make_unique<SubsolversMode>(problem, scenario, config.subsolvers, config.standard.sqp);
+  for (const auto& [admm, variant] : {std::pair{"vsadmm", AdmmVariant::kVariableSplitting},
+                                      std::pair{"jadmm", AdmmVariant::kJacobian},
+                                      std::pair{"proxjadmm", AdmmVariant::kProximalJacobian}})
+    if (name == admm) return std::make_unique<AdmmMode>(problem, scenario, variant, config.admm, config.standard.sqp);
   check_mode_name(name);
   throw std::logic_error("make_mode: mode '" + name + "' is listed but not built");
 }
