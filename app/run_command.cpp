@@ -204,7 +204,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                                     "asked (the thesis's ADMM test)")
                         ->check(CLI::IsMember({"corners", "fold", "none", "flatten"}))
                         ->capture_default_str();
-  a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario (degrees)")
+  a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario, start angle of the flatten scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))
                      ->capture_default_str();
   a->iterations_opt =
@@ -224,10 +224,8 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); the factorisation always uses SDOG_BLAS_THREADS (default 2) BLAS threads, so results do not depend on this")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  a->rho_opt = cmd->add_option("--rho", a->rho, "ADMM modes: penalty rho of the augmented terms ($.admm.rho)")
-                   ->check(CLI::PositiveNumber);
-  a->gamma_opt = cmd->add_option("--gamma", a->gamma, "jadmm, proxjadmm: multiplier damping gamma ($.admm.gamma)")
-                     ->check(CLI::PositiveNumber);
+  a->rho_opt = cmd->add_option("--rho", a->rho, "ADMM modes: penalty rho > 0 of the augmented terms ($.admm.rho)");
+  a->gamma_opt = cmd->add_option("--gamma", a->gamma, "jadmm, proxjadmm: multiplier damping gamma > 0 ($.admm.gamma)");
   cmd->add_flag("--keep-failed", a->keep_failed, "write the log and frames even when the run fails or is cancelled");
   cmd->add_flag("-q,--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &runner]() { runner = [a]() { run(*a); }; });
