@@ -39,6 +39,8 @@ struct RunArgs {
   bool no_fine_to_coarse = false;
   CLI::Option *link_weight_opt = nullptr;
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
+  double rho = 1, gamma = 1;  // the ADMM modes
+  CLI::Option *rho_opt = nullptr, *gamma_opt = nullptr;
 };
 
 std::atomic<bool> g_cancel{false};
@@ -92,6 +94,8 @@ void run(const RunArgs& a) {
   if (a.angle_opt->count()) config.fold_angle = a.angle;
   if (a.link_weight_opt->count()) config.coarse.link_weight = a.link_weight;
   if (a.no_fine_to_coarse) config.coarse.fine_to_coarse = false;
+  if (a.rho_opt->count()) config.admm.rho = a.rho;
+  if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
 
   // Fail on an unusable output directory before the work, not after it.
@@ -200,10 +204,12 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--mode", a->mode, "solver mode (" + known_modes() + ")")->capture_default_str();
   a->scenario_opt = cmd->add_option("--scenario", a->scenario,
                                     "corners: the thesis protocol (first grid corner held, last one dragged); "
-                                    "fold: every crease folds from flat to --angle; none: only the --config constraints")
-                        ->check(CLI::IsMember({"corners", "fold", "none"}))
+                                    "fold: every crease folds from flat to --angle; none: only the --config constraints; "
+                                    "flatten: start with every crease folded to --angle, one corner held, nothing else "
+                                    "asked (the thesis's ADMM test)")
+                        ->check(CLI::IsMember({"corners", "fold", "none", "flatten"}))
                         ->capture_default_str();
-  a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario (degrees)")
+  a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario, start angle of the flatten scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))
                      ->capture_default_str();
   a->iterations_opt =
@@ -229,6 +235,8 @@ void register_run_command(CLI::App& app, Runner& runner) {
                            ->capture_default_str();
   cmd->add_flag("--no-fine-to-coarse", a->no_fine_to_coarse,
                 "coarse mode: the coarse mesh is not pulled towards the fine one (one-way coupling)");
+  a->rho_opt = cmd->add_option("--rho", a->rho, "ADMM modes: penalty rho > 0 of the augmented terms ($.admm.rho)");
+  a->gamma_opt = cmd->add_option("--gamma", a->gamma, "jadmm, proxjadmm: multiplier damping gamma > 0 ($.admm.gamma)");
   cmd->add_flag("--keep-failed", a->keep_failed, "write the log and frames even when the run fails or is cancelled");
   cmd->add_flag("-q,--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &runner]() { runner = [a]() { run(*a); }; });

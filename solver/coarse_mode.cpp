@@ -20,6 +20,9 @@ CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& 
   if (!scenario.angles.empty())
     throw UsageError("mode coarse does not support dihedral angle constraints yet (scenario '" + scenario.name +
                      "' has " + std::to_string(scenario.angles.size()) + "); use --mode standard");
+  if (scenario.initial.size() > 0)
+    throw UsageError("mode coarse cannot start from a given state yet (scenario '" + scenario.name +
+                     "'): there is no fine-to-coarse restriction of a deformed state; use another mode");
   const FineCoarseMap& map = model.map;
   // The coarse scenario: the same targets on the coarse twins.
   Scenario coarse_scenario = scenario;

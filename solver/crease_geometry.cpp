@@ -18,9 +18,12 @@ CreaseNeighbours crease_neighbours(const CreaseStitching::Curve& curve, int k) {
   return out;
 }
 
-Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const Dofs& x) {
-  const EdgePoint& e = point.copies.front();
+Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x) {
   return e.t * vertex_of(x, e.v1) + (1 - e.t) * vertex_of(x, e.v2);
+}
+
+Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const Dofs& x) {
+  return edge_point_position(point.copies.front(), x);
 }
 
 Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p, const Eigen::Vector3d& f) {

@@ -15,6 +15,9 @@ struct CreaseNeighbours {
 };
 CreaseNeighbours crease_neighbours(const CreaseStitching::Curve& curve, int k);
 
+/// Position of an edge point in x: t p_v1 + (1 - t) p_v2.
+Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x);
+
 /// Position of a crease point (its first copy) in x.
 Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const Dofs& x);
 

@@ -4,13 +4,14 @@
 #include <stdexcept>
 
 #include "geometry/errors.h"
+#include "solver/admm_mode.h"
 #include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
 
 namespace sdog {
 
-std::vector<std::string> mode_names() { return {"standard", "subsolvers", "coarse"}; }
+std::vector<std::string> mode_names() { return {"standard", "subsolvers", "vsadmm", "jadmm", "proxjadmm", "coarse"}; }
 
 std::string known_modes() {
   std::string known;
@@ -34,6 +35,10 @@ std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, co
     if (!model) throw std::logic_error("make_mode: mode coarse needs the model");
     return std::make_unique<CoarseMode>(problem, *model, scenario, config.coarse, config.standard);
   }
+  for (const auto& [admm, variant] : {std::pair{"vsadmm", AdmmVariant::kVariableSplitting},
+                                      std::pair{"jadmm", AdmmVariant::kJacobian},
+                                      std::pair{"proxjadmm", AdmmVariant::kProximalJacobian}})
+    if (name == admm) return std::make_unique<AdmmMode>(problem, scenario, variant, config.admm, config.standard.sqp);
   check_mode_name(name);
   throw std::logic_error("make_mode: mode '" + name + "' is listed but not built");
 }

@@ -6,6 +6,7 @@
 
 #include "geometry/errors.h"
 #include "geometry/text_format.h"
+#include "solver/flatten_scenario.h"
 
 namespace sdog {
 namespace {
@@ -155,6 +156,14 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
   if (f.has("fine_to_coarse")) o.fine_to_coarse = f["fine_to_coarse"].boolean();
 }
 
+void apply_admm(const Field& f, AdmmOptions& o) {
+  f.expect_object({"rho", "gamma", "p", "inner"});
+  if (f.has("rho")) o.rho = f["rho"].positive();
+  if (f.has("gamma")) o.gamma = f["gamma"].positive();
+  if (f.has("p")) o.p = f["p"].non_negative();
+  if (f.has("inner")) o.inner = f["inner"].integer(1);
+}
+
 PositionSpec position_spec(const Field& f) {
   f.expect_object({"vertex", "near", "start", "end", "move"});
   PositionSpec p;
@@ -190,12 +199,12 @@ AngleSpec angle_spec(const Field& f) {
 void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
   root.expect_object(
-      {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "coarse", "positions",
-       "angles"});
+      {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "coarse", "positions", "angles",
+       "admm"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
-    if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none")
-      root["scenario"].fail("expected \"corners\", \"fold\" or \"none\", got \"" + c.scenario + "\"");
+    if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none" && c.scenario != "flatten")
+      root["scenario"].fail("expected \"corners\", \"fold\", \"none\" or \"flatten\", got \"" + c.scenario + "\"");
   }
   if (root.has("iterations")) c.iterations = root["iterations"].integer(0);
   if (root.has("hold")) c.hold = root["hold"].integer(0);
@@ -214,6 +223,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
     c.angles.clear();
     for (size_t i = 0; i < list.array_size(); ++i) c.angles.push_back(angle_spec(list[i]));
   }
+  if (root.has("admm")) apply_admm(root["admm"], c.admm);
   validate_run_config(c, source);
 }
 
@@ -237,6 +247,8 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
   if (const std::string m = c.standard.validate(); !m.empty()) throw InputError(source + ": $.solver: " + m);
   if (const std::string m = c.subsolvers.validate(); !m.empty())
     throw InputError(source + ": $.patch_solver: " + m);
+  if (const std::string m = c.admm.validate(); !m.empty()) throw InputError(source + ": $.admm." + m);
+  if (const std::string m = c.coarse.validate(); !m.empty()) throw InputError(source + ": $.coarse." + m);
 }
 
 Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
@@ -244,6 +256,7 @@ Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
   if (c.scenario == "corners") s = corners_scenario(mesh, c.iterations, c.hold);
   if (c.scenario == "fold") s = fold_scenario(mesh, c.fold_angle, c.iterations, c.hold);
   if (c.scenario == "none") s.name = "none";
+  if (c.scenario == "flatten") s = flatten_scenario(mesh, c.weights, c.standard, c.fold_angle, c.iterations, c.hold);
   s.iterations = c.iterations;
   s.hold = c.hold;
   for (const auto& p : c.positions) {
@@ -361,7 +374,12 @@ nlohmann::json to_json(const RunConfig& c) {
           {"coarse",
            {{"link_weight", c.coarse.link_weight}, {"fine_to_coarse", c.coarse.fine_to_coarse}, {"prolongate", c.coarse.prolongate}}},
           {"positions", positions},
-          {"angles", angles}};
+          {"angles", angles},
+          {"admm",
+           {{"rho", c.admm.rho},
+            {"gamma", c.admm.gamma},
+            {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
+            {"inner", c.admm.inner}}}};
 }
 
 }  // namespace sdog

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/admm_mode.h"
 #include "solver/scenario.h"
 #include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
@@ -36,7 +37,7 @@ struct AngleSpec {
 };
 
 struct RunConfig {
-  std::string scenario = "corners";  ///< corners | fold | none (only the listed constraints)
+  std::string scenario = "corners";  ///< corners | fold | none (only the listed constraints) | flatten
   int iterations = 250;              ///< iterations over which targets move
   int hold = 50;                     ///< iterations with the final targets
   double fold_angle = 90;            ///< degrees, the fold scenario's final dihedral angle
@@ -46,6 +47,7 @@ struct RunConfig {
   CoarseOptions coarse;         ///< the coarse mode
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
+  AdmmOptions admm;  ///< the ADMM modes (vsadmm, jadmm, proxjadmm)
 };
 
 /// Overrides the fields present in `json` (an object); `source` names the file in messages.

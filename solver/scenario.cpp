@@ -60,6 +60,7 @@ double crease_tangent_angle(const DogMesh& mesh, int point) {
 }
 
 void Scenario::install(DogProblem& problem) const {
+  if (!keeps_folds) problem.weights.fold_bias = 0;  // nothing may push the creases to stay folded
   problem.positions.clear();
   for (const auto& pc : positions) problem.positions.add({{pc.vertex, 1.0}}, pc.start);
   problem.angles.clear();
@@ -89,7 +90,9 @@ double Scenario::time_of(int iteration) const {
   return iterations <= 0 ? 1.0 : std::min(1.0, static_cast<double>(iteration) / iterations);
 }
 
-Dofs Scenario::start(const DogMesh& mesh) const { return fold_seed(mesh, curve_signs); }
+Dofs Scenario::start(const DogMesh& mesh) const {
+  return initial.size() > 0 ? initial : fold_seed(mesh, curve_signs);
+}
 
 Scenario corners_scenario(const DogMesh& mesh, int iterations, int hold) {
   Scenario s;

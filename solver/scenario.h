@@ -31,14 +31,21 @@ struct Scenario {
   /// Fold direction per crease curve for the start state (+1 valley, -1 mountain, 0 none); see
   /// fold_seed.h.
   std::vector<double> curve_signs;
+  /// The start state, if not the flat mesh (flatten_scenario.h); empty: start from the flat mesh.
+  Dofs initial;
+  /// False when the scenario unfolds the creases: install() sets the fold-bias weight to 0 and the
+  /// standard mode's folding mode (fold check and retries) is off.
+  bool keeps_folds = true;
 
-  /// Creates the problem's position and angle blocks (once; it fixes the sparsity pattern).
+  /// Creates the problem's position and angle blocks (once; it fixes the sparsity pattern); zeroes
+  /// the fold-bias weight unless keeps_folds.
   void install(DogProblem& problem) const;
   /// Sets the targets for time t in [0, 1].
   void apply(DogProblem& problem, double t) const;
   /// t before iteration `k` (1-based): min(1, k / iterations).
   double time_of(int iteration) const;
-  /// The state a run starts from: the flat mesh, tilted towards curve_signs (fold_seed.h).
+  /// The state a run starts from: `initial` if given, else the flat mesh tilted towards
+  /// curve_signs (fold_seed.h).
   Dofs start(const DogMesh& mesh) const;
 };
 

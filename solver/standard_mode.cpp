@@ -13,6 +13,7 @@ std::string StandardOptions::validate() const {
 StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
     : problem_(problem), scenario_(scenario), options_(options), base_fold_bias_(problem.weights.fold_bias) {
   scenario_.install(problem_);
+  if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;
   sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(), problem_.dog,
                                      options_.sqp);

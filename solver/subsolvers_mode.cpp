@@ -1,8 +1,8 @@
 #include "solver/subsolvers_mode.h"
 
 #include "geometry/errors.h"
-#include "solver/blas_threads.h"
 #include "solver/crease_geometry.h"
+#include "solver/patch_round.h"
 
 namespace sdog {
 
@@ -48,27 +48,7 @@ StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   StepReport report;
   const Dofs x0 = x;
   refresh_targets(x);
-  // Parallelism comes from the patches (TBB): the factorisations inside run on one BLAS thread
-  // each (measured at 81x81: 2 patch threads x 2 BLAS threads oversubscribe 2 cores, 159 ms per
-  // iteration; with 1 BLAS thread 73 ms).
-  set_blas_threads(1);
-  report.patches = step_patches(patches_, x, last);
-  if (!x.allFinite()) {
-    x = x0;
-    report.failed = true;
-    report.failure = "a patch solve produced NaN or infinity";
-    return report;
-  }
-  for (const auto& p : report.patches) {
-    report.sqp_steps += p.inner;
-    report.factor_ms += p.linear_ms;  // summed over patches: CPU time, not wall time
-    report.factorizations += p.factorizations;
-    if (!p.converged && !report.failed) {
-      report.failed = true;
-      report.failure = "the step of patch " + std::to_string(p.patch) + " failed";
-    }
-  }
-  if (report.failed) {
+  if (!step_patch_round(patches_, x, last, report)) {
     x = x0;
     return report;
   }
