@@ -1,5 +1,6 @@
 #include "solver/run_config.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -186,8 +187,9 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
       {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "positions", "angles"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
-    if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none")
-      root["scenario"].fail("expected \"corners\", \"fold\" or \"none\", got \"" + c.scenario + "\"");
+    const auto names = scenario_names();
+    if (std::find(names.begin(), names.end(), c.scenario) == names.end())
+      root["scenario"].fail("expected one of " + join(names, ", ") + ", got \"" + c.scenario + "\"");
   }
   if (root.has("iterations")) c.iterations = root["iterations"].integer(0);
   if (root.has("hold")) c.hold = root["hold"].integer(0);
@@ -228,6 +230,24 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
   if (const std::string m = c.standard.validate(); !m.empty()) throw InputError(source + ": $.solver: " + m);
   if (const std::string m = c.subsolvers.validate(); !m.empty())
     throw InputError(source + ": $.patch_solver: " + m);
+}
+
+std::vector<std::string> scenario_names() { return {"corners", "fold", "none"}; }
+
+void check_scenario_name(const std::string& name, const std::string& what) {
+  const auto names = scenario_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw UsageError(what + "unknown scenario '" + name + "' (known: " + join(names, ", ") + ")");
+}
+
+void check_scenario_targets(const Scenario& s, const RunConfig& c, const std::string& where) {
+  if (!s.positions.empty() || !s.angles.empty()) return;
+  if (c.scenario == "fold")
+    throw UsageError("the fold scenario found no fold sites in " + where +
+                     " (crease points strictly inside a grid edge between two patches; creases through grid "
+                     "vertices only have none: try another resolution)");
+  throw UsageError("the run has no targets: scenario '" + c.scenario +
+                   "' and no position or angle constraints in the configuration");
 }
 
 Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
