@@ -127,7 +127,9 @@ std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mo
   for (const auto& [name, resolutions] : grid) {
     const std::string path = dir + "/" + name + ".svg";
     if (!std::filesystem::exists(path))
-      throw InputError(path + ": thesis pattern not found (pass the folder with --patterns)");
+      throw InputError(path +
+                       ": thesis pattern not found (pass the folder of the thesis patterns: --patterns of sdog bench, "
+                       "--patterns-dir of sdog compare)");
     for (const char* res : resolutions) cases.push_back({path, res, mode});
   }
   return cases;
