@@ -26,6 +26,10 @@ Resolution resolve_resolution(const std::string& text, const CreasePattern& patt
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
 DogModel build_model(const PatternOptions& o);
 
+/// argv as one line (for the records a command writes); arguments with spaces, quotes or `$` in
+/// single quotes, as a POSIX shell reads them.
+std::string command_line_text(int argc, char** argv);
+
 /// Seconds since `start` (steady clock).
 double seconds_since(std::chrono::steady_clock::time_point start);
 

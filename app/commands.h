@@ -4,6 +4,7 @@
 // codes).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace sdog::cli {
 
@@ -13,5 +14,7 @@ void register_mesh_command(CLI::App& app, Runner& run);
 void register_render_command(CLI::App& app, Runner& run);
 void register_run_command(CLI::App& app, Runner& run);
 void register_bench_command(CLI::App& app, Runner& run);
+/// `command_line`: the whole command line as typed, recorded in compare.json.
+void register_compare_command(CLI::App& app, Runner& run, const std::string& command_line);
 
 }  // namespace sdog::cli

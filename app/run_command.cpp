@@ -105,14 +105,7 @@ void run(const RunArgs& a) {
   const DogModel model = build_model(a.pattern);
   DogProblem problem(model.fine, model.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, model.fine);
-  if (scenario.positions.empty() && scenario.angles.empty())
-    throw UsageError(config.scenario == "fold"
-                         ? "the fold scenario found no fold sites in " + a.pattern.pattern + " at " +
-                               model.fine_res.str() +
-                               " (crease points strictly inside a grid edge between two patches; creases "
-                               "through grid vertices only have none: try another resolution)"
-                         : "the run has no targets: scenario '" + config.scenario +
-                               "' and no position or angle constraints in the configuration");
+  check_scenario_targets(scenario, config, a.pattern.pattern + " at " + model.fine_res.str());
   std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config, &model);
   Dofs x = scenario.start(model.fine);
   const int total = scenario.iterations + scenario.hold;
@@ -207,7 +200,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                                     "fold: every crease folds from flat to --angle; none: only the --config constraints; "
                                     "flatten: start with every crease folded to --angle, one corner held, nothing else "
                                     "asked (the thesis's ADMM test)")
-                        ->check(CLI::IsMember({"corners", "fold", "none", "flatten"}))
+                        ->check(CLI::IsMember(scenario_names()))
                         ->capture_default_str();
   a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario, start angle of the flatten scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))

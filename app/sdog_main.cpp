@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "app/cli_common.h"
 #include "app/commands.h"
 #include "geometry/errors.h"
 
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   sdog::cli::register_render_command(app, run);
   sdog::cli::register_run_command(app, run);
   sdog::cli::register_bench_command(app, run);
+  sdog::cli::register_compare_command(app, run, sdog::cli::command_line_text(argc, argv));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

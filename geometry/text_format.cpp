@@ -14,4 +14,10 @@ std::string format_point(const Eigen::Vector2d& p) {
   return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ")";
 }
 
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i) out += (i ? separator : "") + items[i];
+  return out;
+}
+
 }  // namespace sdog

@@ -2,6 +2,7 @@
 // Number and point formatting for user-facing messages (short, locale independent).
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace sdog {
 
@@ -9,5 +10,7 @@ namespace sdog {
 std::string format_number(double v);
 /// "(x, y)" with format_number.
 std::string format_point(const Eigen::Vector2d& p);
+/// The items separated by `separator`: join({"a", "b"}, ", ") is "a, b".
+std::string join(const std::vector<std::string>& items, const std::string& separator);
 
 }  // namespace sdog

@@ -16,17 +16,44 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+bool in_timing_window(int iteration) { return iteration >= 10 && iteration <= 240; }
+
+double median_iteration_ms(const std::vector<double>& iteration_ms) {
+  std::vector<double> window;
+  for (size_t k = 0; k < iteration_ms.size(); ++k)
+    if (in_timing_window(static_cast<int>(k) + 1)) window.push_back(iteration_ms[k]);
+  return median(window.empty() ? iteration_ms : window);
+}
+
+DogModel build_case_model(const BenchCase& c) {
+  MeshOptions mesh_options;
+  mesh_options.build_coarse = mode_needs_coarse(c.mode);
+  return build_dog_model(read_crease_pattern(c.pattern), parse_resolution(c.res), mesh_options);
+}
+
+RunSummary run_case(const DogModel& model, const std::string& mode_name, const RunConfig& config,
+                    const std::vector<RunObserver*>& observers) {
+  DogProblem problem(model.fine, model.fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model.fine);
+  check_scenario_targets(scenario, config, model.pattern.source + " at " + model.fine_res.str());
+  auto mode = make_mode(mode_name, problem, scenario, config, &model);
+  Dofs x = scenario.start(model.fine);
+  return run_scenario(*mode, problem, scenario, x, observers);
+}
+
 namespace {
 
 struct Recorder : RunObserver {
   int repeat = 0, total = 0;
-  std::vector<double> window_ms;
+  std::vector<double> iteration_ms;
   double factor_ms = 0, sqp_steps = 0, factorizations = 0, worst_dog = 0;
+  int window = 0;
   const std::function<void(int, int, int)>* progress = nullptr;
   void on_iteration(const IterationReport& r, const Dofs&) override {
     worst_dog = std::max(worst_dog, r.diagnostics.dog_max);
-    if (r.iteration >= 10 && r.iteration <= 240) {
-      window_ms.push_back(r.iteration_ms);
+    iteration_ms.push_back(r.iteration_ms);
+    if (in_timing_window(r.iteration)) {
+      ++window;
       factor_ms += r.step.factor_ms;
       sqp_steps += r.step.sqp_steps;
       factorizations += r.step.factorizations;
@@ -39,9 +66,7 @@ struct Recorder : RunObserver {
 
 BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
                           const std::function<void(int, int, int)>& progress) {
-  MeshOptions mesh_options;
-  mesh_options.build_coarse = mode_needs_coarse(c.mode);
-  const DogModel model = build_dog_model(read_crease_pattern(c.pattern), parse_resolution(c.res), mesh_options);
+  const DogModel model = build_case_model(c);
   RunConfig config;
   config.iterations = options.iterations;
   config.hold = options.iterations / 5;
@@ -54,21 +79,17 @@ BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
   double factor_ms = 0, sqp_steps = 0, factorizations = 0;
   int window = 0;
   for (int k = 0; k < std::max(1, options.repeat); ++k) {
-    DogProblem problem(model.fine, model.fine_topology, config.weights);
-    const Scenario scenario = make_scenario(config, model.fine);
-    auto mode = make_mode(c.mode, problem, scenario, config, &model);
-    Dofs x = scenario.start(model.fine);
     Recorder rec;
     rec.repeat = k;
-    rec.total = scenario.iterations + scenario.hold;
+    rec.total = config.iterations + config.hold;
     rec.progress = &progress;
-    const RunSummary s = run_scenario(*mode, problem, scenario, x, {&rec});
+    const RunSummary s = run_case(model, c.mode, config, {&rec});
     if (s.failed) throw SolverError(result.pattern + " " + c.res + " " + c.mode + ": " + s.failure);
-    result.run_medians.push_back(median(rec.window_ms));
+    result.run_medians.push_back(median_iteration_ms(rec.iteration_ms));
     factor_ms += rec.factor_ms;
     sqp_steps += rec.sqp_steps;
     factorizations += rec.factorizations;
-    window += static_cast<int>(rec.window_ms.size());
+    window += rec.window;
     result.final_objective = s.last.diagnostics.objective;
     result.dog_max = s.last.diagnostics.dog_max;
     result.dog_max_over_run = std::max(result.dog_max_over_run, rec.worst_dog);
@@ -106,7 +127,9 @@ std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mo
   for (const auto& [name, resolutions] : grid) {
     const std::string path = dir + "/" + name + ".svg";
     if (!std::filesystem::exists(path))
-      throw InputError(path + ": thesis pattern not found (pass the folder with --patterns)");
+      throw InputError(path +
+                       ": thesis pattern not found (pass the folder of the thesis patterns: --patterns of sdog bench, "
+                       "--patterns-dir of sdog compare)");
     for (const char* res : resolutions) cases.push_back({path, res, mode});
   }
   return cases;

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "geometry/dog_model.h"
+#include "solver/run.h"
+#include "solver/run_config.h"
 
 namespace sdog {
 
@@ -38,6 +40,24 @@ struct BenchResult {
 
 /// The median (upper median for even sizes; 0 when empty).
 double median(std::vector<double> values);
+
+/// The thesis's timing of a run from its per-iteration times (iteration 1 first): the median over
+/// iterations 10-240, which leaves out the first iterations (symbolic analysis, warm caches) and
+/// the hold; over every iteration when the run has fewer than 10.
+double median_iteration_ms(const std::vector<double>& iteration_ms);
+/// True for the iterations inside that window.
+bool in_timing_window(int iteration);
+
+/// The model a case runs on: the pattern meshed at the case's resolution, with the coarse mesh
+/// and the map when the mode needs them. Throws the library errors (UsageError for a resolution
+/// the mode cannot use).
+DogModel build_case_model(const BenchCase& c);
+
+/// One run of `mode` over the configuration's scenario on the model's fine mesh, from the
+/// scenario's start state, reported to the observers. Throws UsageError when the mode or the
+/// scenario cannot run on this model; a diverging run returns with `failed` set.
+RunSummary run_case(const DogModel& model, const std::string& mode, const RunConfig& config,
+                    const std::vector<RunObserver*>& observers);
 
 /// Runs one case; `progress(repeat, iteration, total)` is called after every iteration.
 BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,

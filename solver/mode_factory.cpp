@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "geometry/errors.h"
+#include "geometry/text_format.h"
 #include "solver/admm_mode.h"
 #include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
@@ -13,11 +14,7 @@ namespace sdog {
 
 std::vector<std::string> mode_names() { return {"standard", "subsolvers", "vsadmm", "jadmm", "proxjadmm", "coarse"}; }
 
-std::string known_modes() {
-  std::string known;
-  for (const auto& n : mode_names()) known += (known.empty() ? "" : ", ") + n;
-  return known;
-}
+std::string known_modes() { return join(mode_names(), ", "); }
 
 void check_mode_name(const std::string& name, const std::string& what) {
   const auto names = mode_names();

@@ -1,5 +1,6 @@
 #include "solver/run_config.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -203,8 +204,9 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
        "admm"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
-    if (c.scenario != "corners" && c.scenario != "fold" && c.scenario != "none" && c.scenario != "flatten")
-      root["scenario"].fail("expected \"corners\", \"fold\", \"none\" or \"flatten\", got \"" + c.scenario + "\"");
+    const auto names = scenario_names();
+    if (std::find(names.begin(), names.end(), c.scenario) == names.end())
+      root["scenario"].fail("expected one of " + join(names, ", ") + ", got \"" + c.scenario + "\"");
   }
   if (root.has("iterations")) c.iterations = root["iterations"].integer(0);
   if (root.has("hold")) c.hold = root["hold"].integer(0);
@@ -249,6 +251,24 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
     throw InputError(source + ": $.patch_solver: " + m);
   if (const std::string m = c.admm.validate(); !m.empty()) throw InputError(source + ": $.admm." + m);
   if (const std::string m = c.coarse.validate(); !m.empty()) throw InputError(source + ": $.coarse." + m);
+}
+
+std::vector<std::string> scenario_names() { return {"corners", "fold", "none", "flatten"}; }
+
+void check_scenario_name(const std::string& name, const std::string& what) {
+  const auto names = scenario_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw UsageError(what + "unknown scenario '" + name + "' (known: " + join(names, ", ") + ")");
+}
+
+void check_scenario_targets(const Scenario& s, const RunConfig& c, const std::string& where) {
+  if (!s.positions.empty() || !s.angles.empty()) return;
+  if (c.scenario == "fold")
+    throw UsageError("the fold scenario found no fold sites in " + where +
+                     " (crease points strictly inside a grid edge between two patches; creases through grid "
+                     "vertices only have none: try another resolution)");
+  throw UsageError("the run has no targets: scenario '" + c.scenario +
+                   "' and no position or angle constraints in the configuration");
 }
 
 Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {

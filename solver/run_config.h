@@ -36,8 +36,14 @@ struct AngleSpec {
   double end_degrees = 0;
 };
 
+/// The scenario names `make_scenario` knows (`sdog run --scenario`, `sdog compare --scenario`, the
+/// "scenario" key of a configuration file), in the order of the documentation.
+std::vector<std::string> scenario_names();
+/// Throws UsageError "`what`unknown scenario 'name' (known: ...)" unless `name` is a scenario.
+void check_scenario_name(const std::string& name, const std::string& what = "");
+
 struct RunConfig {
-  std::string scenario = "corners";  ///< corners | fold | none (only the listed constraints) | flatten
+  std::string scenario = "corners";  ///< one of scenario_names(); none: only the listed constraints
   int iterations = 250;              ///< iterations over which targets move
   int hold = 50;                     ///< iterations with the final targets
   double fold_angle = 90;            ///< degrees, the fold scenario's final dihedral angle
@@ -60,6 +66,10 @@ void validate_run_config(const RunConfig& config, const std::string& source);
 /// The scenario on a fine mesh: the named one plus the listed constraints. Throws InputError for
 /// vertex or crease-point indices that do not exist (naming the JSON path).
 Scenario make_scenario(const RunConfig& config, const DogMesh& mesh);
+
+/// Throws UsageError when the scenario has no targets (the fold scenario on a pattern without fold
+/// sites at this resolution, `none` without constraints); `where` names the pattern and resolution.
+void check_scenario_targets(const Scenario& scenario, const RunConfig& config, const std::string& where);
 
 /// Every parameter as JSON (for run.json).
 nlohmann::json to_json(const RunConfig& config);

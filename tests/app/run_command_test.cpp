@@ -16,46 +16,15 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/app/csv.h"
 #include "tests/app/run_sdog.h"
 
 namespace sdog {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<std::string> split(const std::string& line, char sep = ',') {
-  std::vector<std::string> out;
-  std::stringstream s(line);
-  for (std::string field; std::getline(s, field, sep);) out.push_back(field);
-  return out;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream s(text);
-  for (std::string line; std::getline(s, line);)
-    if (!line.empty()) out.push_back(line);
-  return out;
-}
-
-// A CSV as header + rows of fields.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  int column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
-  }
-};
-
-Csv read_csv(const std::string& path) {
-  Csv csv;
-  const auto lines = lines_of(test::slurp(path));
-  if (lines.empty()) return csv;
-  csv.header = split(lines[0]);
-  for (size_t i = 1; i < lines.size(); ++i) csv.rows.push_back(split(lines[i]));
-  return csv;
-}
+using test::Csv;
+using test::read_csv;
 
 const std::string kPattern = test::dataset("one_curve.svg");
 const std::string kSmallRun = "run '" + kPattern + "' --res 21x15 --iters 20 --hold 5 -q";
@@ -213,12 +182,7 @@ TEST(RunCommand, UsageErrorsExitWithTwo) {
 }
 
 TEST(RunCommand, UnwritableOutputFailsBeforeTheWork) {
-  const std::string dir = test::temp_dir("run_unwritable");
-  test::write_file(dir, "file", "x");
-  const auto r = test::run_sdog(kSmallRun + " --out " + dir + "/file/sub");
-  EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(dir + "/file"), std::string::npos) << r.err;
+  test::expect_unwritable_output_fails(kSmallRun, "run_unwritable");
 }
 
 TEST(BenchCommand, WritesTheTableAsCsv) {

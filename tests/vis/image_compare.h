@@ -8,6 +8,8 @@
 #include <vtkPNGReader.h>
 #include <vtkSmartPointer.h>
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -19,6 +21,21 @@ inline vtkSmartPointer<vtkImageData> read_png(const std::string& path) {
   r->SetFileName(path.c_str());
   r->Update();
   return r->GetOutput();
+}
+
+/// Number of pixels within a small distance (sum of channel differences below 12) of an RGB
+/// colour with components in [0, 1].
+inline int pixels_near(vtkImageData* img, const std::array<double, 3>& c) {
+  int dims[3];
+  img->GetDimensions(dims);
+  int count = 0;
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x) {
+      double d = 0;
+      for (int k = 0; k < 3; ++k) d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
+      count += d < 12;
+    }
+  return count;
 }
 
 /// Returns an empty string when the image matches its baseline within `threshold` (mean

@@ -16,20 +16,7 @@
 namespace sdog {
 namespace {
 
-// Number of pixels within a small distance of an RGB colour.
-int pixels_near(vtkImageData* img, const vis::Rgb& c) {
-  int dims[3];
-  img->GetDimensions(dims);
-  int count = 0;
-  for (int y = 0; y < dims[1]; ++y)
-    for (int x = 0; x < dims[0]; ++x) {
-      double d = 0;
-      for (int k = 0; k < 3; ++k)
-        d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
-      count += d < 12;
-    }
-  return count;
-}
+using test::pixels_near;
 
 TEST(VertexTypePicture, ShowsEveryVertexTypeAndMatchesBaseline) {
   const DogModel m =

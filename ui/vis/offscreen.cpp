@@ -3,22 +3,55 @@
 #include <vtkPNGWriter.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <mutex>
 #include <regex>
+#include <thread>
 
 #include "geometry/errors.h"
 #include "ui/vis/vtk_meshes.h"
 
-namespace sdog::vis {
+// Last: Xlib defines macros (Status, Success, None) that clash with other headers.
+#include <X11/Xlib.h>
 
-vtkSmartPointer<vtkRenderWindow> offscreen_window(const ImageSize& size) {
+namespace sdog::vis {
+namespace {
+
+// One connection to the X server for the whole process, handed to every window. VTK would open
+// its own and abort the process when that fails, which happens now and then when several
+// programs connect to the same Xvfb at once; here a failed connection is retried and then
+// reported as an error.
+Display* x_display() {
+  static std::mutex mutex;
+  static Display* display = nullptr;
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (int attempt = 0; !display && attempt < 10; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(100 * attempt));
+    display = XOpenDisplay(nullptr);
+  }
+  if (!display)
+    throw OutputError(std::string("cannot connect to the X display ") + std::getenv("DISPLAY") +
+                      " (is the X server or xvfb-run still running?)");
+  return display;
+}
+
+}  // namespace
+
+void require_display() {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
     throw OutputError(
         "rendering needs an X display (VTK 9.1 on Debian renders through X11); run the command "
-        "under xvfb-run, e.g. `xvfb-run -a sdog render ...`");
+        "under xvfb-run, e.g. `xvfb-run -a sdog render ...` or `xvfb-run -a sdog compare ...`");
+  x_display();
+}
+
+vtkSmartPointer<vtkRenderWindow> offscreen_window(const ImageSize& size) {
+  require_display();
   take_vtk_error();  // installs the capturing output window
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetDisplayId(x_display());
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);  // deterministic pixels for regression images
   window->SetSize(size.width, size.height);

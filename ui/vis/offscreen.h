@@ -12,6 +12,11 @@ struct ImageSize {
   int width = 1600, height = 800;
 };
 
+/// Throws OutputError (saying to use xvfb-run) when there is no X display to render with or no
+/// connection to it; commands that render at the end of a long computation call it before the
+/// work.
+void require_display();
+
 /// An offscreen render window of the given size; throws OutputError when there is no X display.
 vtkSmartPointer<vtkRenderWindow> offscreen_window(const ImageSize& size);
 

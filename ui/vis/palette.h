@@ -27,4 +27,14 @@ inline constexpr Rgb kSurfaceColor{0.94, 0.94, 0.94};
 inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
 inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};
 
+/// Colours of the lines of a chart, told apart also by colour-blind readers (the Okabe-Ito
+/// palette without its yellow, which is too faint on white): blue, vermillion, bluish green,
+/// reddish purple, orange, sky blue, black; then again from the start.
+inline Rgb series_color(int index) {
+  static constexpr Rgb colors[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65},
+                                   {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91}, {0.00, 0.00, 0.00}};
+  constexpr int n = sizeof colors / sizeof colors[0];
+  return colors[((index % n) + n) % n];
+}
+
 }  // namespace sdog::vis

@@ -1,0 +1,164 @@
+#include "solver/comparison.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "geometry/errors.h"
+
+namespace sdog {
+namespace {
+
+// The series and the timing of one run.
+struct SeriesRecorder : RunObserver {
+  std::vector<ComparePoint> points;
+  std::vector<double> iteration_ms;
+  double worst_dog = 0;
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    const Diagnostics& d = r.diagnostics;
+    points.push_back({r.iteration, d.objective, r.iteration_ms, d.dog_max, d.stitch_gap_max});
+    iteration_ms.push_back(r.iteration_ms);
+    worst_dog = std::max(worst_dog, d.dog_max);
+  }
+};
+
+CompareRow skipped(CompareRow row, const std::string& why) {
+  row.status = CompareStatus::Skipped;
+  row.note = why;
+  row.series.clear();
+  return row;
+}
+
+std::string number(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string optional_number(const std::optional<double>& v, int digits) {
+  return v ? number(*v, digits) : std::string();
+}
+
+}  // namespace
+
+const char* to_string(CompareStatus s) {
+  switch (s) {
+    case CompareStatus::Completed:
+      return "completed";
+    case CompareStatus::Failed:
+      return "failed";
+    case CompareStatus::Skipped:
+      return "skipped";
+  }
+  return "?";
+}
+
+CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
+                            const std::vector<RunObserver*>& observers) {
+  CompareRow row;
+  row.pattern = std::filesystem::path(c.pattern).stem().string();
+  row.res = c.res;
+  row.mode = c.mode;
+  std::optional<DogModel> model;
+  try {
+    model = build_case_model(c);
+  } catch (const UsageError& e) {
+    return skipped(row, e.what());
+  }
+  row.vertices = model->fine.vertex_count();
+  row.dof = 3 * row.vertices;
+  std::vector<double> run_medians;
+  for (int k = 0; k < std::max(1, repeat); ++k) {
+    SeriesRecorder recorder;
+    std::vector<RunObserver*> all = observers;
+    all.push_back(&recorder);
+    RunSummary s;
+    try {
+      s = run_case(*model, c.mode, config, all);
+    } catch (const UsageError& e) {
+      return skipped(row, e.what());
+    } catch (const SolverError& e) {
+      return skipped(row, e.what());
+    }
+    row.series = std::move(recorder.points);
+    row.iterations = s.iterations;
+    row.final_objective = s.last.diagnostics.objective;
+    row.dog_max = s.last.diagnostics.dog_max;
+    row.stitch_gap_max = s.last.diagnostics.stitch_gap_max;
+    row.folded = s.last.step.folded;
+    row.dog_max_run = std::max(row.dog_max_run, recorder.worst_dog);
+    run_medians.push_back(median_iteration_ms(recorder.iteration_ms));
+    row.median_ms = median(run_medians);
+    if (s.failed) {
+      row.status = CompareStatus::Failed;
+      row.note = s.failure;
+      return row;
+    }
+  }
+  return row;
+}
+
+void relate_to_standard(std::vector<CompareRow>& rows) {
+  std::map<std::pair<std::string, std::string>, const CompareRow*> standard;
+  for (const auto& r : rows)
+    if (r.mode == "standard" && r.completed()) standard[{r.pattern, r.res}] = &r;
+  for (auto& r : rows) {
+    r.objective_ratio.reset();
+    r.speedup.reset();
+    const auto it = standard.find({r.pattern, r.res});
+    if (!r.completed() || it == standard.end()) continue;
+    const CompareRow& s = *it->second;
+    r.objective_ratio = r.final_objective / s.final_objective;
+    r.speedup = s.median_ms / r.median_ms;
+  }
+}
+
+std::vector<std::string> compare_columns() {
+  return {"pattern", "res",     "mode",        "vertices",       "dof",    "iterations",
+          "final_objective", "objective_ratio", "median_ms", "speedup", "dog_max", "dog_max_run",
+          "stitch_gap_max", "folded", "status", "note"};
+}
+
+std::vector<std::string> compare_fields(const CompareRow& r) {
+  std::vector<std::string> f{r.pattern, r.res, r.mode};
+  if (r.status == CompareStatus::Skipped) {
+    f.resize(compare_columns().size() - 2);
+  } else {
+    f.insert(f.end(), {std::to_string(r.vertices), std::to_string(r.dof), std::to_string(r.iterations),
+                       number(r.final_objective, 9), optional_number(r.objective_ratio, 9), number(r.median_ms, 4),
+                       optional_number(r.speedup, 4), number(r.dog_max, 3), number(r.dog_max_run, 3),
+                       number(r.stitch_gap_max, 3), r.folded ? "1" : "0"});
+  }
+  f.push_back(to_string(r.status));
+  f.push_back(r.note);
+  return f;
+}
+
+std::string series_csv_header() { return "pattern,res,mode,iteration,objective,ms,dog_max,stitch_gap_max\n"; }
+
+std::string series_csv_rows(const CompareRow& r) {
+  std::string out;
+  for (const auto& p : r.series)
+    out += csv_line({r.pattern, r.res, r.mode, std::to_string(p.iteration), number(p.objective, 9), number(p.ms, 4),
+                     number(p.dog_max, 3), number(p.stitch_gap_max, 3)});
+  return out;
+}
+
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::string line;
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const std::string& f = fields[i];
+    if (i) line += ',';
+    if (f.find_first_of(",\"\n") == std::string::npos) {
+      line += f;
+      continue;
+    }
+    line += '"';
+    for (char ch : f) line += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    line += '"';
+  }
+  return line + "\n";
+}
+
+}  // namespace sdog
