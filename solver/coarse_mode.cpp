@@ -1,9 +1,9 @@
 #include "solver/coarse_mode.h"
 
 #include "geometry/errors.h"
-#include "solver/blas_threads.h"
 #include "solver/crease_geometry.h"
 #include "solver/curve_interpolation.h"
+#include "solver/patch_round.h"
 #include "solver/patch_sqp.h"
 
 namespace sdog {
@@ -118,22 +118,11 @@ StepReport CoarseMode::iterate(Dofs& x, bool last) {
   set_crease_targets();
   set_fine_link_targets();
   if (options_.prolongate) prolongate(x);
-  set_blas_threads(1);  // parallelism over patches, see subsolvers_mode.cpp
   frozen_ = x;
-  report.patches = step_patches(patches_, x, last);
-  for (const auto& p : report.patches) {
-    report.sqp_steps += p.inner;
-    report.factor_ms += p.linear_ms;
-    if (!p.converged && !report.failed) {
-      report.failed = true;
-      report.failure = "the fine step of patch " + std::to_string(p.patch) + " failed";
-    }
-  }
-  if (report.failed || !x.allFinite()) {
+  if (!step_patch_round(patches_, x, last, report)) {
     x = x0;
     coarse_x_ = coarse0;
-    report.failed = true;
-    if (report.failure.empty()) report.failure = "a fine patch step produced NaN or infinity";
+    report.failure = "fine step: " + report.failure;
     return report;
   }
   report.folded = check_folded(model_.fine, fine_.sites, x).folded;

@@ -42,10 +42,10 @@ class CoarseMode : public Mode {
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
   const Dofs& coarse_state() const { return coarse_x_; }
-  void prolongate(Dofs& x) const;
 
  private:
   void set_crease_targets();
+  void prolongate(Dofs& x) const;
   void set_fine_link_targets();
   void set_coarse_link_targets(const Dofs& x);
   DogProblem& fine_;

@@ -1,6 +1,16 @@
 #include "solver/patch_term.h"
 
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
 namespace sdog {
+
+namespace {
+// Split blocks are evaluated on the stack (the SQP assembly calls them every step): fold-bias
+// blocks have 8 vertices and 1 row, angle blocks 4 vertices and 1 row.
+constexpr int kMaxSplitVertices = 16, kMaxSplitRows = 8;
+}  // namespace
 
 PatchTerm::PatchTerm(const Term& term, int begin, int end, const Dofs* frozen) : term_(term), frozen_(frozen) {
   std::vector<int> local;
@@ -19,6 +29,8 @@ PatchTerm::PatchTerm(const Term& term, int begin, int end, const Dofs* frozen) :
       inside_slots_.resize(first_slot);
       continue;
     }
+    if (!whole && (size > kMaxSplitVertices || term.residual_count(b) > kMaxSplitRows))
+      throw std::logic_error(std::string("PatchTerm: a split block of ") + term.name() + " is larger than supported");
     split_count_ += !whole;
     add_block(local.data(), static_cast<int>(local.size()), term.residual_count(b));
     source_.push_back(b);
@@ -37,10 +49,10 @@ void PatchTerm::evaluate(int b, const Eigen::Vector3d* p, double* r, double* J) 
   if (!is_split(b)) return term_.evaluate(source_[b], p, r, J);
   const int s = source_[b];
   const int size = term_.block_size(s), rows = term_.residual_count(s);
-  std::vector<Eigen::Vector3d> full(size);
+  std::array<Eigen::Vector3d, kMaxSplitVertices> full;
   gather_full(b, p, full.data());
   if (!J) return term_.evaluate(s, full.data(), r, nullptr);
-  std::vector<double> full_J(static_cast<size_t>(rows) * 3 * size);
+  std::array<double, kMaxSplitRows * 3 * kMaxSplitVertices> full_J;
   term_.evaluate(s, full.data(), r, full_J.data());
   const int inside = inside_offsets_[b + 1] - inside_offsets_[b];
   for (int i = 0; i < rows; ++i)
@@ -53,10 +65,11 @@ void PatchTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* 
   if (!is_split(b)) return term_.add_second_order(source_[b], p, y, H);
   const int s = source_[b];
   const int size = term_.block_size(s);
-  std::vector<Eigen::Vector3d> full(size);
+  std::array<Eigen::Vector3d, kMaxSplitVertices> full;
   gather_full(b, p, full.data());
   const int n = 3 * size;
-  std::vector<double> full_H(static_cast<size_t>(n) * n, 0.0);
+  std::array<double, 9 * kMaxSplitVertices * kMaxSplitVertices> full_H;
+  std::fill(full_H.begin(), full_H.begin() + n * n, 0.0);
   term_.add_second_order(s, full.data(), y, full_H.data());
   const int inside = inside_offsets_[b + 1] - inside_offsets_[b];
   const int m = 3 * inside;

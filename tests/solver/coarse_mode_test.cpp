@@ -19,12 +19,7 @@ const DogModel& model() {
   return m;
 }
 
-RunConfig short_run() {
-  RunConfig config;
-  config.iterations = 12;
-  config.hold = 3;
-  return config;
-}
+RunConfig short_run() { return test::short_run(12, 3); }
 
 // The largest distance between a fine link vertex and its coarse twin.
 double link_distance(const Dofs& fine, const Dofs& coarse) {
@@ -57,11 +52,7 @@ TEST(CoarseMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const CoarseRun r = run_coarse(short_run());
   ASSERT_FALSE(r.result.summary.failed) << r.result.summary.failure;
   ASSERT_EQ(r.result.reports.size(), 15u);
-  for (const auto& rep : r.result.reports) {
-    EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
-    ASSERT_EQ(static_cast<int>(rep.step.patches.size()), model().fine.patch_count());
-    for (const auto& p : rep.step.patches) EXPECT_TRUE(p.converged) << "iteration " << rep.iteration;
-  }
+  test::expect_dog_and_patch_reports(r.result, model().fine.patch_count());
   // The standard solver's end bar is 1e-6; the last polish of one patch here stops at 3.6e-6
   // (an open point of issue 4, see README "Coarse mode").
   EXPECT_LT(r.result.reports.back().diagnostics.dog_max, 1e-5);
