@@ -29,10 +29,6 @@ AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant va
       variant_(variant),
       options_(options),
       rows_(problem.mesh()) {
-  if (!scenario.angles.empty())
-    throw UsageError(std::string("mode ") + name() +
-                     " does not support dihedral angle constraints (scenario '" + scenario.name +
-                     "' has " + std::to_string(scenario.angles.size()) + "); use --mode standard");
   if (const std::string m = options_.validate(); !m.empty()) throw UsageError("admm options: " + m);
   scenario_.install(problem_);
   const DogMesh& mesh = problem_.mesh();
@@ -53,7 +49,8 @@ AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant va
         {&proximal_, 0.5 * options_.rho * options_.proximal_weight(mesh.patch_count()), false});
   }
   for (int p = 0; p < mesh.patch_count(); ++p)
-    patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp));
+    patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp,
+                                                  PatchCoupling{&frozen_, {&problem_.fold_bias, &problem_.angles}}));
 }
 
 const char* AdmmMode::name() const {
@@ -120,6 +117,7 @@ StepReport AdmmMode::iterate(Dofs& x, bool last) {
   const bool started0 = started_;
   for (int round = 0; round < options_.inner; ++round) {
     set_targets(x);
+    frozen_ = x;
     if (!step_patch_round(patches_, x, last && round + 1 == options_.inner, report)) {
       x = x0;
       lambda_ = lambda0;

@@ -20,7 +20,9 @@
 // The augmented terms are soft linear targets on each own copy (weight rho/2: the objective of a
 // term is weight x |r|^2); the proximal term one target per vertex at x^k (weight rho p / 2).
 //
-// Dihedral angle constraints couple patches and are refused (UsageError), as in subsolvers.
+// The fold bias and dihedral angle constraints couple two patches: each patch keeps their blocks
+// with the other patch's vertices frozen at the round's start (patch_term.h), a Jacobi splitting
+// of those terms next to the ADMM splitting of the stitching rows.
 #include <memory>
 #include <vector>
 
@@ -58,6 +60,7 @@ class AdmmMode : public Mode {
 
  private:
   void set_targets(const Dofs& x);
+  Dofs frozen_;  // the state the round started from
   void update_multipliers(const Dofs& x);
   DogProblem& problem_;
   Scenario scenario_;

@@ -6,15 +6,7 @@ namespace sdog {
 
 namespace {
 
-bool inside(const Term& t, int b, int begin, int end) {
-  for (int j = 0; j < t.block_size(b); ++j) {
-    const int v = t.block_vertices(b)[j];
-    if (v < begin || v >= end) return false;
-  }
-  return true;
-}
-
-// Residuals of block b at positions read by `position(v)`.
+// Residuals of block b of a patch term at the patch positions read by `position(v)` (local v).
 template <class Position>
 Eigen::VectorXd block_residual(const Term& t, int b, Position position) {
   std::vector<Eigen::Vector3d> p(t.block_size(b));
@@ -36,13 +28,12 @@ std::string PatchOptions::validate() const {
   return "";
 }
 
-PatchSolver::PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
-                         const DogConstraints& dog, const PatchOptions& options)
+PatchSolver::PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
+                         const PatchOptions& options, const PatchCoupling& coupling)
     : patch_(patch),
       begin_(mesh.patch_begin[patch]),
       end_(mesh.patch_begin[patch + 1]),
       options_(options),
-      dog_(dog),
       local_(3 * static_cast<size_t>(end_ - begin_)),
       mu_(options.initial_penalty) {
   ceres::Problem::Options po;
@@ -52,36 +43,31 @@ PatchSolver::PatchSolver(const DogMesh& mesh, int patch, const std::vector<Weigh
   std::vector<double*> params;
   auto parameters = [&](const Term& t, int b) {
     params.clear();
-    for (int j = 0; j < t.block_size(b); ++j) params.push_back(&local_[3 * (t.block_vertices(b)[j] - begin_)]);
+    for (int j = 0; j < t.block_size(b); ++j) params.push_back(&local_[3 * t.block_vertices(b)[j]]);
     return params;
   };
   term_costs_.resize(terms.size());
   for (size_t k = 0; k < terms.size(); ++k) {
-    const Term& t = *terms[k].term;
-    objective_blocks_.push_back({&t, {}});
+    terms_.push_back(std::make_unique<PatchTerm>(*terms[k].term, begin_, end_, coupling.frozen_for(terms[k].term)));
+    const Term& t = *terms_.back();
     weights_.push_back(terms[k].weight);
     for (int b = 0; b < t.block_count(); ++b) {
-      if (!inside(t, b, begin_, end_)) continue;
-      objective_blocks_.back().second.push_back(b);
       auto* cost = new TermCost(t, b, terms[k].weight);
       term_costs_[k].push_back(cost);
       problem_->AddResidualBlock(cost, nullptr, parameters(t, b));
     }
   }
+  dog_ = std::make_unique<PatchTerm>(dog, begin_, end_);
   int rows = 0;
-  for (int b = 0; b < dog.block_count(); ++b)
-    if (inside(dog, b, begin_, end_)) {
-      dog_blocks_.push_back(b);
-      rows += dog.residual_count(b);
-    }
+  for (int b = 0; b < dog_->block_count(); ++b) rows += dog_->residual_count(b);
   lambda_ = Eigen::VectorXd::Zero(rows);
   offset_ = Eigen::VectorXd::Zero(rows);
   int row = 0;
-  for (int b : dog_blocks_) {
-    auto* cost = new TermCost(dog, b, mu_, offset_.data() + row);
+  for (int b = 0; b < dog_->block_count(); ++b) {
+    auto* cost = new TermCost(*dog_, b, mu_, offset_.data() + row);
     dog_costs_.push_back(cost);
-    problem_->AddResidualBlock(cost, nullptr, parameters(dog, b));
-    row += dog.residual_count(b);
+    problem_->AddResidualBlock(cost, nullptr, parameters(*dog_, b));
+    row += dog_->residual_count(b);
   }
 }
 
@@ -96,26 +82,26 @@ void PatchSolver::load(const Dofs& x) {
 
 double PatchSolver::constraint_max_local() {
   double m = 0;
-  auto position = [&](int v) { return Eigen::Vector3d(&local_[3 * (v - begin_)]); };
-  for (int b : dog_blocks_) m = std::max(m, block_residual(dog_, b, position).lpNorm<Eigen::Infinity>());
+  auto position = [&](int v) { return Eigen::Vector3d(&local_[3 * v]); };
+  for (int b = 0; b < dog_->block_count(); ++b)
+    m = std::max(m, block_residual(*dog_, b, position).lpNorm<Eigen::Infinity>());
   return m;
 }
 
 double PatchSolver::dog_max(const Dofs& x) const {
   double m = 0;
-  for (int b : dog_blocks_)
-    m = std::max(m, block_residual(dog_, b, [&](int v) { return Eigen::Vector3d(vertex_of(x, v)); })
-                        .lpNorm<Eigen::Infinity>());
+  auto position = [&](int v) { return Eigen::Vector3d(vertex_of(x, v + begin_)); };
+  for (int b = 0; b < dog_->block_count(); ++b)
+    m = std::max(m, block_residual(*dog_, b, position).lpNorm<Eigen::Infinity>());
   return m;
 }
 
 double PatchSolver::objective(const Dofs& x) const {
   double f = 0;
-  for (size_t k = 0; k < objective_blocks_.size(); ++k)
-    for (int b : objective_blocks_[k].second)
-      f += weights_[k] *
-           block_residual(*objective_blocks_[k].first, b, [&](int v) { return Eigen::Vector3d(vertex_of(x, v)); })
-               .squaredNorm();
+  auto position = [&](int v) { return Eigen::Vector3d(vertex_of(x, v + begin_)); };
+  for (size_t k = 0; k < terms_.size(); ++k)
+    for (int b = 0; b < terms_[k]->block_count(); ++b)
+      f += weights_[k] * block_residual(*terms_[k], b, position).squaredNorm();
   return f;
 }
 
@@ -153,9 +139,9 @@ PatchReport PatchSolver::solve(Dofs& x) {
     // The multiplier update, from the constraint values at the new point.
     int row = 0;
     double new_max = 0;
-    auto position = [&](int v) { return Eigen::Vector3d(&local_[3 * (v - begin_)]); };
-    for (int b : dog_blocks_) {
-      const Eigen::VectorXd c = block_residual(dog_, b, position);
+    auto position = [&](int v) { return Eigen::Vector3d(&local_[3 * v]); };
+    for (int b = 0; b < dog_->block_count(); ++b) {
+      const Eigen::VectorXd c = block_residual(*dog_, b, position);
       lambda_.segment(row, c.size()) -= mu_ * c;
       new_max = std::max(new_max, c.lpNorm<Eigen::Infinity>());
       row += static_cast<int>(c.size());

@@ -9,9 +9,10 @@
 //                      its previous value
 //
 // until |c|_inf <= constraint_tolerance (the standard solver's per-iteration tolerance by
-// default). Multipliers and the penalty are kept across solves (warm start). Blocks that couple
-// patches (stitching, angles, fold bias) are not part of a patch problem: the multi-patch modes
-// turn them into per-patch targets (edge-point terms) before solving.
+// default). Multipliers and the penalty are kept across solves (warm start). The blocks are those
+// of PatchTerm (patch_term.h): blocks of the coupling's split terms (fold bias, angles) that reach
+// into other patches are kept with those vertices frozen; other cross-patch blocks (stitching) are
+// not part of a patch problem: the multi-patch modes turn them into per-patch targets.
 //
 // Patch problems are independent; solve_patches() runs them in parallel with TBB (each solve is
 // single threaded), and the result does not depend on the number of threads.
@@ -24,6 +25,7 @@
 #include "solver/ceres_cost.h"
 #include "solver/dog_constraints.h"
 #include "solver/patch_stepper.h"
+#include "solver/patch_term.h"
 #include "solver/sqp_solver.h"
 
 namespace sdog {
@@ -42,10 +44,11 @@ struct PatchOptions {
 
 class PatchSolver : public PatchStepper {
  public:
-  /// Patch `patch` of `mesh`: the blocks of `terms` inside it and the blocks of `dog` inside it.
-  /// The terms and `dog` must outlive the solver; their targets may change between solves.
-  PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const DogConstraints& dog,
-              const PatchOptions& options = {});
+  /// Patch `patch` of `mesh`: the blocks of `terms` inside it (and the coupled ones) and the
+  /// blocks of `dog` inside it. The terms, `dog` and the coupling's frozen state must outlive the
+  /// solver; their targets may change between solves.
+  PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
+              const PatchOptions& options = {}, const PatchCoupling& coupling = {});
   PatchSolver(const PatchSolver&) = delete;
   PatchSolver& operator=(const PatchSolver&) = delete;
 
@@ -65,13 +68,12 @@ class PatchSolver : public PatchStepper {
   double constraint_max_local();  // of local_
   int patch_, begin_, end_;
   PatchOptions options_;
-  const DogConstraints& dog_;
   std::vector<double> local_;  // the patch's coordinates, Ceres' parameter blocks
   std::unique_ptr<ceres::Problem> problem_;
-  std::vector<std::vector<TermCost*>> term_costs_;  // per objective term
-  std::vector<std::pair<const Term*, std::vector<int>>> objective_blocks_;
+  std::vector<std::unique_ptr<PatchTerm>> terms_;   // the objective terms restricted to the patch
+  std::vector<std::vector<TermCost*>> term_costs_;  // per objective term, one per block
   std::vector<double> weights_;
-  std::vector<int> dog_blocks_;
+  std::unique_ptr<PatchTerm> dog_;
   std::vector<TermCost*> dog_costs_;
   Eigen::VectorXd lambda_;  // per patch constraint row
   Eigen::VectorXd offset_;  // lambda / mu, the augmented terms' offsets

@@ -1,7 +1,5 @@
 #include "solver/patch_sqp.h"
 
-#include <algorithm>
-
 #include "solver/stopwatch.h"
 
 namespace sdog {
@@ -11,8 +9,7 @@ PatchSqp::PatchSqp(const DogMesh& mesh, int patch, const std::vector<WeightedTer
     : patch_(patch), begin_(mesh.patch_begin[patch]), end_(mesh.patch_begin[patch + 1]) {
   std::vector<WeightedTerm> local;
   for (const auto& t : terms) {
-    const bool split = std::find(coupling.split.begin(), coupling.split.end(), t.term) != coupling.split.end();
-    terms_.push_back(std::make_unique<PatchTerm>(*t.term, begin_, end_, split ? coupling.frozen : nullptr));
+    terms_.push_back(std::make_unique<PatchTerm>(*t.term, begin_, end_, coupling.frozen_for(t.term)));
     local.push_back({terms_.back().get(), t.weight, t.exact_hessian});
   }
   dog_ = std::make_unique<PatchTerm>(dog, begin_, end_);

@@ -12,13 +12,6 @@
 
 namespace sdog {
 
-/// Cross-patch terms of a patch problem: the blocks of the `split` terms that reach into other
-/// patches are kept with those vertices read from `frozen` (patch_term.h).
-struct PatchCoupling {
-  const Dofs* frozen = nullptr;
-  std::vector<const Term*> split;
-};
-
 class PatchSqp : public PatchStepper {
  public:
   /// The terms, `dog` and the coupling's frozen state must outlive the stepper; their targets may

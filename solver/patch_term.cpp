@@ -6,6 +6,10 @@
 
 namespace sdog {
 
+const Dofs* PatchCoupling::frozen_for(const Term* term) const {
+  return std::find(split.begin(), split.end(), term) != split.end() ? frozen : nullptr;
+}
+
 namespace {
 // Split blocks are evaluated on the stack (the SQP assembly calls them every step): fold-bias
 // blocks have 8 vertices and 1 row, angle blocks 4 vertices and 1 row.

@@ -7,9 +7,20 @@
 // vertices are read from the frozen state (the other patches' previous iterate, block-Jacobi
 // style) and only the inside vertices are unknowns. This splits cross-patch terms (fold bias,
 // dihedral angles) into one-sided halves against the other patch's frozen edge.
+#include <vector>
+
 #include "solver/term.h"
 
 namespace sdog {
+
+/// Cross-patch terms of a patch problem: the blocks of the `split` terms that reach into other
+/// patches are kept with those vertices read from `frozen`.
+struct PatchCoupling {
+  const Dofs* frozen = nullptr;
+  std::vector<const Term*> split;
+  /// The frozen state for `term` if it is split, else nullptr.
+  const Dofs* frozen_for(const Term* term) const;
+};
 
 class PatchTerm : public Term {
  public:

@@ -14,9 +14,6 @@ std::string SubsolverOptions::validate() const {
 SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
                                const SqpOptions& sqp)
     : problem_(problem), scenario_(scenario), options_(options) {
-  if (!scenario.angles.empty())
-    throw UsageError("mode subsolvers does not support dihedral angle constraints yet (scenario '" + scenario.name +
-                     "' has " + std::to_string(scenario.angles.size()) + "); use --mode standard");
   scenario_.install(problem_);
   const DogMesh& mesh = problem_.mesh();
   for (const auto& pair : mesh.stitching.pairs) {
@@ -28,12 +25,13 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
     }
   }
   std::vector<WeightedTerm> terms = problem_.objective_terms();
-  terms.push_back({&targets_, 0.5 * problem_.weights.stitching, false});
+  terms.push_back({&targets_, problem_.weights.stitching, false});
+  const PatchCoupling coupling{&frozen_, {&problem_.fold_bias, &problem_.angles}};
   for (int p = 0; p < mesh.patch_count(); ++p) {
     if (options_.backend == "ceres")
-      patches_.push_back(std::make_unique<PatchSolver>(mesh, p, terms, problem_.dog, options_.patch));
+      patches_.push_back(std::make_unique<PatchSolver>(mesh, p, terms, problem_.dog, options_.patch, coupling));
     else
-      patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp));
+      patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp, coupling));
   }
 }
 
@@ -48,6 +46,7 @@ StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   StepReport report;
   const Dofs x0 = x;
   refresh_targets(x);
+  frozen_ = x;
   if (!step_patch_round(patches_, x, last, report)) {
     x = x0;
     return report;

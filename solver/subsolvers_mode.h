@@ -5,9 +5,9 @@
 // iterate (weight 0.5 x the stitching weight: the stitching residual split into two one-sided
 // halves). All patches are solved in parallel (TBB), then the targets are refreshed.
 //
-// Dihedral angle constraints couple two patches and are not supported by this mode yet: a
-// scenario with angle constraints is refused with a UsageError. The fold check is reported, the
-// fold bias is not used.
+// The fold bias and dihedral angle constraints couple two patches: each patch keeps their blocks
+// with the other patch's vertices frozen at the state the round started from (patch_term.h), so a
+// fixed point of the iteration is a stationary point of the whole objective's fold and angle parts.
 #include <memory>
 
 #include "solver/dog_problem.h"
@@ -39,6 +39,7 @@ class SubsolversMode : public Mode {
   SubsolverOptions options_;
   LinearPointTerm targets_{"stitch_targets"};  // one block per copy and stitching pair
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
+  Dofs frozen_;                                // the state the round started from
   std::vector<std::unique_ptr<PatchStepper>> patches_;
 };
 

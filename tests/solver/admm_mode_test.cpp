@@ -123,14 +123,8 @@ TEST(AdmmMode, ThreeRowsPerStitchingPair) {
   }
 }
 
-TEST(AdmmMode, RefusesAngleConstraints) {
-  RunConfig config;
-  config.scenario = "fold";
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  ASSERT_FALSE(scenario.angles.empty());
-  for (const char* name : kAdmmModes)
-    EXPECT_THROW(make_mode(name, problem, scenario, config), UsageError) << name;
+TEST(AdmmMode, FollowAngleConstraints) {
+  for (const char* name : kAdmmModes) test::expect_follows_angles(name, model());
 }
 
 TEST(FlattenScenario, StartsFoldedAndTheStandardModeFlattensIt) {

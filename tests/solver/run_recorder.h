@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/dog_model.h"
+#include "solver/diagnostics.h"
 #include "solver/mode_factory.h"
 #include "solver/run.h"
 #include "solver/run_config.h"
@@ -61,6 +62,47 @@ inline void expect_dog_and_patch_reports(const RunResult& r, int patch_count) {
       EXPECT_GT(p.ms, 0);
     }
   }
+}
+
+/// A patch mode follows dihedral angle constraints across patches (their blocks are kept with the
+/// other patch frozen): on the fold scenario the angle residual ends far below that of the same run
+/// with the angle weight 0, and the DOG constraints hold every iteration.
+inline void expect_follows_angles(const std::string& mode_name, const DogModel& model) {
+  RunConfig config = short_run(20, 10);
+  config.scenario = "fold";
+  config.fold_angle = 60;
+  const RunResult with = run_mode(mode_name, model, config);
+  ASSERT_FALSE(with.summary.failed) << mode_name << ": " << with.summary.failure;
+  for (const auto& rep : with.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << mode_name << " " << rep.iteration;
+  config.weights.angles = 0;
+  const RunResult without = run_mode(mode_name, model, config);
+  ASSERT_FALSE(without.summary.failed) << mode_name << ": " << without.summary.failure;
+  const double a = with.reports.back().diagnostics.terms[kAngles];
+  EXPECT_LT(a, 0.1 * without.reports.back().diagnostics.terms[kAngles]) << mode_name;
+}
+
+/// A fixed point of a patch mode is a stationary point of the whole objective: started from the
+/// standard solver's end state with the final targets held, `iterations` iterations of the mode
+/// stay within 1% of its objective and its stitching gap.
+inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name, const DogModel& model,
+                                                 int iterations) {
+  const RunConfig config = short_run(60, 40);
+  const Scenario scenario = make_scenario(config, model.fine);
+  const RunResult standard = run_mode("standard", model, config, scenario);
+  ASSERT_FALSE(standard.summary.failed) << standard.summary.failure;
+  DogProblem problem(model.fine, model.fine_topology, config.weights);
+  auto mode = make_mode(mode_name, problem, scenario, config, &model);
+  mode->set_time(1);
+  Dofs x = standard.x;
+  const Diagnostics start = diagnose(problem, x);
+  for (int k = 0; k < iterations; ++k) {
+    const StepReport r = mode->iterate(x, k + 1 == iterations);
+    ASSERT_FALSE(r.failed) << mode_name << " " << k << ": " << r.failure;
+  }
+  const Diagnostics end = diagnose(problem, x);
+  EXPECT_NEAR(end.objective, start.objective, 0.01 * start.objective) << mode_name;
+  EXPECT_NEAR(end.stitch_gap_max, start.stitch_gap_max, 0.01 * start.stitch_gap_max + 1e-4) << mode_name;
+  EXPECT_LT(end.dog_max, 1e-5) << mode_name;
 }
 
 }  // namespace sdog::test
