@@ -92,7 +92,7 @@ void run(const RunArgs& a) {
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
-  if (a.link_weight_opt->count()) config.coarse.link_weight = a.link_weight;
+  if (a.link_weight_opt->count()) config.coarse.link_weight = config.twolevel.link_weight = a.link_weight;
   if (a.no_fine_to_coarse) config.coarse.fine_to_coarse = false;
   if (a.rho_opt->count()) config.admm.rho = a.rho;
   if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
@@ -223,7 +223,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   a->link_weight_opt = cmd->add_option("--link-weight", a->link_weight,
-                                       "coarse mode: weight of the link constraints between fine and coarse twins")
+                                       "coarse, twolevel modes: weight of the link constraints between fine and coarse twins ($.coarse.link_weight, $.twolevel.link_weight)")
                            ->check(CLI::Range(0.0, 1e12))
                            ->capture_default_str();
   cmd->add_flag("--no-fine-to-coarse", a->no_fine_to_coarse,

@@ -11,11 +11,12 @@
 //      its link vertices (link weight);
 //   4. fine to coarse: the coarse link targets of the next iteration are the new fine positions
 //      (off with fine_to_coarse = false).
-// Limitations for now: position constraints must be on link vertices (fine vertices with a coarse
-// twin), and angle constraints are refused; both are usage errors.
+// The coarse mesh and the carrying of position targets to it: coarse_level.h (angle constraints
+// are refused for now, a usage error).
 #include <memory>
 
 #include "geometry/dog_model.h"
+#include "solver/coarse_level.h"
 #include "solver/curve_interpolation.h"
 #include "solver/dog_problem.h"
 #include "solver/mode.h"
@@ -41,23 +42,19 @@ class CoarseMode : public Mode {
   const char* name() const override { return "coarse"; }
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
-  const Dofs& coarse_state() const { return coarse_x_; }
+  const Dofs& coarse_state() const;
+  const CoarseLevel& coarse_level() const { return *coarse_; }
 
  private:
   void set_crease_targets();
-  void prolongate(Dofs& x) const;
   void set_fine_link_targets();
-  void set_coarse_link_targets(const Dofs& x);
   DogProblem& fine_;
   const DogModel& model_;
   Scenario scenario_;
   CoarseOptions options_;
-  std::unique_ptr<DogProblem> coarse_;
-  std::unique_ptr<StandardMode> coarse_mode_;
-  Dofs coarse_x_;
+  std::unique_ptr<CoarseLevel> coarse_;
   LinearPointTerm crease_targets_{"crease_targets"};  // per fine crease point copy
   std::vector<CurveStencil> crease_stencils_;         // per block of crease_targets_
-  std::vector<int> fine_links_, coarse_links_;        // link blocks: fine vertex / coarse vertex
   Dofs frozen_;  // the fine state before the patch step: the other side of cross-patch blocks
   std::vector<std::unique_ptr<PatchStepper>> patches_;
 };

@@ -9,10 +9,11 @@
 #include "solver/coarse_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
+#include "solver/two_level_mode.h"
 
 namespace sdog {
 
-std::vector<std::string> mode_names() { return {"standard", "subsolvers", "vsadmm", "jadmm", "proxjadmm", "coarse"}; }
+std::vector<std::string> mode_names() { return {"standard", "subsolvers", "vsadmm", "jadmm", "proxjadmm", "coarse", "twolevel"}; }
 
 std::string known_modes() { return join(mode_names(), ", "); }
 
@@ -22,7 +23,7 @@ void check_mode_name(const std::string& name, const std::string& what) {
     throw UsageError(what + "unknown mode '" + name + "' (known: " + known_modes() + ")");
 }
 
-bool mode_needs_coarse(const std::string& name) { return name == "coarse"; }
+bool mode_needs_coarse(const std::string& name) { return name == "coarse" || name == "twolevel"; }
 
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
                                 const RunConfig& config, const DogModel* model) {
@@ -31,6 +32,11 @@ std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, co
   if (name == "coarse") {
     if (!model) throw std::logic_error("make_mode: mode coarse needs the model");
     return std::make_unique<CoarseMode>(problem, *model, scenario, config.coarse, config.standard);
+  }
+  if (name == "twolevel") {
+    if (!model) throw std::logic_error("make_mode: mode twolevel needs the model");
+    return std::make_unique<TwoLevelMode>(problem, *model, scenario, config.twolevel, config.standard,
+                                          config.subsolvers);
   }
   for (const auto& [admm, variant] : {std::pair{"vsadmm", AdmmVariant::kVariableSplitting},
                                       std::pair{"jadmm", AdmmVariant::kJacobian},

@@ -157,6 +157,11 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
   if (f.has("fine_to_coarse")) o.fine_to_coarse = f["fine_to_coarse"].boolean();
 }
 
+void apply_twolevel(const Field& f, TwoLevelOptions& o) {
+  f.expect_object({"link_weight"});
+  if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
+}
+
 void apply_admm(const Field& f, AdmmOptions& o) {
   f.expect_object({"rho", "gamma", "p", "inner"});
   if (f.has("rho")) o.rho = f["rho"].positive();
@@ -201,7 +206,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
   root.expect_object(
       {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "coarse", "positions", "angles",
-       "admm"});
+       "admm", "twolevel"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
     const auto names = scenario_names();
@@ -226,6 +231,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
     for (size_t i = 0; i < list.array_size(); ++i) c.angles.push_back(angle_spec(list[i]));
   }
   if (root.has("admm")) apply_admm(root["admm"], c.admm);
+  if (root.has("twolevel")) apply_twolevel(root["twolevel"], c.twolevel);
   validate_run_config(c, source);
 }
 
@@ -251,6 +257,7 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
     throw InputError(source + ": $.patch_solver: " + m);
   if (const std::string m = c.admm.validate(); !m.empty()) throw InputError(source + ": $.admm." + m);
   if (const std::string m = c.coarse.validate(); !m.empty()) throw InputError(source + ": $.coarse." + m);
+  if (const std::string m = c.twolevel.validate(); !m.empty()) throw InputError(source + ": $.twolevel." + m);
 }
 
 std::vector<std::string> scenario_names() { return {"corners", "fold", "none", "flatten"}; }
@@ -399,7 +406,8 @@ nlohmann::json to_json(const RunConfig& c) {
            {{"rho", c.admm.rho},
             {"gamma", c.admm.gamma},
             {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
-            {"inner", c.admm.inner}}}};
+            {"inner", c.admm.inner}}},
+          {"twolevel", {{"link_weight", c.twolevel.link_weight}}}};
 }
 
 }  // namespace sdog

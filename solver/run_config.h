@@ -12,6 +12,7 @@
 #include "solver/admm_mode.h"
 #include "solver/scenario.h"
 #include "solver/coarse_mode.h"
+#include "solver/two_level_mode.h"
 #include "solver/standard_mode.h"
 #include "solver/subsolvers_mode.h"
 
@@ -54,6 +55,7 @@ struct RunConfig {
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
   AdmmOptions admm;  ///< the ADMM modes (vsadmm, jadmm, proxjadmm)
+  TwoLevelOptions twolevel;  ///< the twolevel mode
 };
 
 /// Overrides the fields present in `json` (an object); `source` names the file in messages.

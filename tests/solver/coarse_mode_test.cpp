@@ -7,6 +7,7 @@
 #include "geometry/errors.h"
 #include "solver/coarse_mode.h"
 #include "solver/mode_factory.h"
+#include "solver/two_level_mode.h"
 #include "solver/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
@@ -86,27 +87,44 @@ TEST(CoarseMode, SameResultWhateverTheThreadCount) {
   EXPECT_TRUE(run(1).result.x == run(2).result.x);
 }
 
-TEST(CoarseMode, NeedsTheCoarseMeshAndLinkVertexTargets) {
+TEST(CoarseMode, NeedsTheCoarseMesh) {
   MeshOptions no_coarse;
   no_coarse.build_coarse = false;
   const DogModel fine_only = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {20, 20}, no_coarse);
   RunConfig config = short_run();
   DogProblem problem(fine_only.fine, fine_only.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, fine_only.fine);
-  EXPECT_THROW(make_mode("coarse", problem, scenario, config, &fine_only), UsageError);
+  for (const char* name : {"coarse", "twolevel"})
+    EXPECT_THROW(make_mode(name, problem, scenario, config, &fine_only), UsageError) << name;
+}
 
-  DogProblem p2(model().fine, model().fine_topology, config.weights);
-  Scenario odd = make_scenario(config, model().fine);
-  int not_link = -1;
-  for (int v = 0; v < model().fine.vertex_count() && not_link < 0; ++v)
-    if (model().map.fine_to_coarse[v] < 0) not_link = v;
-  ASSERT_GE(not_link, 0);
-  odd.positions[0].vertex = not_link;
-  try {
-    make_mode("coarse", p2, odd, config, &model());
-    FAIL() << "a target on a fine-only vertex was accepted";
-  } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find(std::to_string(not_link)), std::string::npos) << e.what();
+// A target on a fine vertex without a coarse twin is carried to the coarse mesh through the
+// prolongation: both the fine vertex and the coarse point it is carried from approach the target.
+TEST(CoarseMode, CarriesTargetsOnFineOnlyVertices) {
+  RunConfig config = short_run();
+  Scenario scenario = make_scenario(config, model().fine);
+  int v = -1;  // a fine-only vertex of the first patch, away from the held corner
+  for (int u = model().fine.patch_begin[1] - 1; u >= 0 && v < 0; --u)
+    if (model().map.fine_to_coarse[u] < 0) v = u;
+  ASSERT_GE(v, 0);
+  const double lift = 3;
+  scenario.positions[1].vertex = v;
+  scenario.positions[1].start = model().fine.V.row(v).transpose();
+  scenario.positions[1].end = scenario.positions[1].start + Eigen::Vector3d(0, 0, lift);
+  const Eigen::Vector3d target = scenario.positions[1].end;
+  for (const char* name : {"coarse", "twolevel"}) {
+    DogProblem problem(model().fine, model().fine_topology, config.weights);
+    auto mode = make_mode(name, problem, scenario, config, &model());
+    Dofs x = scenario.start(model().fine);
+    const RunSummary s = run_scenario(*mode, problem, scenario, x, {});
+    ASSERT_FALSE(s.failed) << name << ": " << s.failure;
+    EXPECT_LT((vertex_of(x, v) - target).norm(), 0.5 * lift) << name;
+    const CoarseLevel* level = nullptr;
+    if (auto* c = dynamic_cast<CoarseMode*>(mode.get())) level = &c->coarse_level();
+    if (auto* t = dynamic_cast<TwoLevelMode*>(mode.get())) level = &t->coarse_level();
+    ASSERT_NE(level, nullptr);
+    const Dofs carried = level->prolongation().apply(level->state());
+    EXPECT_LT((vertex_of(carried, v) - target).norm(), 0.5 * lift) << name;
   }
 }
 

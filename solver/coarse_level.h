@@ -1,0 +1,53 @@
+#pragma once
+// The coarse DOG of the two-resolution modes (coarse, twolevel): the fine scenario's position
+// targets carried to the coarse mesh, stepped by the standard solver, its link vertices pulled
+// towards their fine twins.
+//
+// A position target on a fine link vertex becomes a position target on its coarse twin. A target on
+// any other fine vertex becomes a target on the weighted sum of coarse vertices the prolongation
+// gives that vertex (prolongation.h: the coarse edge midpoint, quad centre, ...) with the position
+// weight: the coarse mesh is asked to place the point where the fine vertex would be carried.
+// Angle constraints are not carried yet (a usage error).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/dog_model.h"
+#include "solver/dog_problem.h"
+#include "solver/prolongation.h"
+#include "solver/scenario.h"
+#include "solver/standard_mode.h"
+
+namespace sdog {
+
+class CoarseLevel {
+ public:
+  /// `link_weight` 0: the coarse mesh is not pulled towards the fine one. `mode_name` names the mode
+  /// in usage errors. The model must outlive the level.
+  CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
+              const StandardOptions& standard, const std::string& mode_name);
+  ~CoarseLevel();
+
+  void set_time(double t);
+  /// One standard iteration on the coarse mesh, with the link targets at the fine twins in `fine_x`
+  /// first (when the link weight is positive).
+  StepReport step(const Dofs& fine_x, bool last);
+
+  const Dofs& state() const { return x_; }
+  void set_state(const Dofs& x) { x_ = x; }
+  const Prolongation& prolongation() const { return prolongation_; }
+  /// Link pairs: fine vertex links()[i].first has coarse twin links()[i].second.
+  const std::vector<std::pair<int, int>>& links() const { return links_; }
+
+ private:
+  const DogModel& model_;
+  double link_weight_;
+  Prolongation prolongation_;
+  std::unique_ptr<DogProblem> problem_;
+  std::unique_ptr<StandardMode> mode_;
+  Dofs x_;
+  std::vector<std::pair<int, int>> links_;
+  std::vector<PositionConstraint> carried_;  // targets on fine-only vertices: blocks of edge_points
+};
+
+}  // namespace sdog

@@ -1,0 +1,56 @@
+#include "solver/two_level_mode.h"
+
+#include "geometry/errors.h"
+
+namespace sdog {
+
+std::string TwoLevelOptions::validate() const {
+  if (!(link_weight >= 0)) return "link_weight must be >= 0";
+  return "";
+}
+
+namespace {
+
+const DogModel& with_coarse(const DogModel& model) {
+  if (!model.has_coarse) throw UsageError("mode twolevel needs the coarse mesh (odd resolutions, not --fine-only)");
+  return model;
+}
+
+}  // namespace
+
+TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
+                           const TwoLevelOptions& options, const StandardOptions& standard,
+                           const SubsolverOptions& subsolvers)
+    : coarse_(fine, with_coarse(model), scenario, options.link_weight, standard, "twolevel"),
+      fine_(fine, scenario, subsolvers, standard.sqp) {}
+
+void TwoLevelMode::set_time(double t) {
+  coarse_.set_time(t);
+  fine_.set_time(t);
+}
+
+StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
+  const Dofs x0 = x, c0 = coarse_.state();
+  StepReport coarse = coarse_.step(x, last);
+  if (coarse.failed) {
+    coarse.failure = "coarse step: " + coarse.failure;
+    return coarse;
+  }
+  const Prolongation& P = coarse_.prolongation();
+  x += P.apply(coarse_.state()) - P.apply(c0);
+  StepReport report = fine_.iterate(x, last);
+  if (report.failed) {
+    x = x0;
+    coarse_.set_state(c0);
+    report.failure = "fine step: " + report.failure;
+    return report;
+  }
+  report.sqp_steps += coarse.sqp_steps;
+  report.factorizations += coarse.factorizations;
+  report.restoration_steps += coarse.restoration_steps;
+  report.fold_retries += coarse.fold_retries;
+  report.factor_ms += coarse.factor_ms;
+  return report;
+}
+
+}  // namespace sdog

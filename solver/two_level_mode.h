@@ -1,0 +1,46 @@
+#pragma once
+// The two-level mode ("twolevel", this project's design): block Jacobi over the fine patches with a
+// coarse-grid correction. One iteration =
+//   1. coarse step: one standard iteration on the coarse DOG (coarse_level.h), its link vertices
+//      pulled towards their fine twins (link weight);
+//   2. correction: the fine state moves by the coarse step's displacement carried to the fine mesh,
+//      x += P (c_new - c_old) (prolongation.h);
+//   3. fine step: one block-Jacobi round of the fine patches in parallel (subsolvers_mode.h), which
+//      restores the fine DOG constraints and settles the fine detail, the stitching and the folds.
+// Block Jacobi alone hands a drag on by one patch per iteration and lags far behind moving
+// targets; the correction moves the whole sheet at once. The coarse state enters the fine problem
+// only as a displacement, never as a target, so once the coarse mesh settles the fine iteration is
+// plain block Jacobi, whose fixed points are stationary points of the whole fine objective (the
+// standard solver's; subsolvers_mode.h). The thesis's coarse mode instead pins the fine creases to
+// the coarse curves, and its fine result inherits the coarse mesh's error.
+#include <memory>
+
+#include "geometry/dog_model.h"
+#include "solver/coarse_level.h"
+#include "solver/mode.h"
+#include "solver/subsolvers_mode.h"
+
+namespace sdog {
+
+struct TwoLevelOptions {
+  double link_weight = 0.1;  ///< pull of the coarse link vertices towards their fine twins
+  std::string validate() const;
+};
+
+class TwoLevelMode : public Mode {
+ public:
+  /// The fine problem and the model must outlive the mode.
+  TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario, const TwoLevelOptions& options,
+               const StandardOptions& standard, const SubsolverOptions& subsolvers);
+  const char* name() const override { return "twolevel"; }
+  void set_time(double t) override;
+  StepReport iterate(Dofs& x, bool last) override;
+  const Dofs& coarse_state() const { return coarse_.state(); }
+  const CoarseLevel& coarse_level() const { return coarse_; }
+
+ private:
+  CoarseLevel coarse_;
+  SubsolversMode fine_;
+};
+
+}  // namespace sdog
