@@ -50,7 +50,7 @@ AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant va
   }
   for (int p = 0; p < mesh.patch_count(); ++p)
     patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp,
-                                                  PatchCoupling{&frozen_, {&problem_.fold_bias, &problem_.angles}}));
+                                                  PatchCoupling{&frozen_, problem_.cross_patch_terms()}));
 }
 
 const char* AdmmMode::name() const {

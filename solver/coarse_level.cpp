@@ -3,10 +3,19 @@
 #include "geometry/errors.h"
 
 namespace sdog {
+namespace {
+
+const DogModel& with_coarse(const DogModel& model, const std::string& mode_name) {
+  if (!model.has_coarse)
+    throw UsageError("mode " + mode_name + " needs the coarse mesh (odd resolutions, not --fine-only)");
+  return model;
+}
+
+}  // namespace
 
 CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
                          const StandardOptions& standard, const std::string& mode_name)
-    : model_(model), link_weight_(link_weight), prolongation_(model) {
+    : model_(model), link_weight_(link_weight), prolongation_(with_coarse(model, mode_name)) {
   if (!scenario.angles.empty())
     throw UsageError("mode " + mode_name + " does not support dihedral angle constraints yet (scenario '" +
                      scenario.name + "' has " + std::to_string(scenario.angles.size()) + "); use --mode standard");

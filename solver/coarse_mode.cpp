@@ -1,6 +1,5 @@
 #include "solver/coarse_mode.h"
 
-#include "geometry/errors.h"
 #include "solver/crease_geometry.h"
 #include "solver/curve_interpolation.h"
 #include "solver/patch_round.h"
@@ -16,7 +15,6 @@ std::string CoarseOptions::validate() const {
 CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                        const CoarseOptions& options, const StandardOptions& standard)
     : fine_(fine), model_(model), scenario_(scenario), options_(options) {
-  if (!model.has_coarse) throw UsageError("mode coarse needs the coarse mesh (odd resolutions, not --fine-only)");
   coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario, options.fine_to_coarse ? options.link_weight : 0.0,
                                           standard, "coarse");
   // Fine link blocks (before the solvers fix their patterns): every coarse twin pair.
@@ -35,7 +33,7 @@ CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& 
   terms.push_back({&crease_targets_, 0.5 * fine_.weights.stitching, false});
   for (int p = 0; p < model.fine.patch_count(); ++p)
     patches_.push_back(std::make_unique<PatchSqp>(model.fine, p, terms, fine_.dog, standard.sqp,
-                                                  PatchCoupling{&frozen_, {&fine_.fold_bias, &fine_.angles}}));
+                                                  PatchCoupling{&frozen_, fine_.cross_patch_terms()}));
 }
 
 CoarseMode::~CoarseMode() = default;

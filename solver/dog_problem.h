@@ -56,6 +56,10 @@ class DogProblem {
 
   /// The objective terms (in TermIndex order) with their effective weights.
   std::vector<WeightedTerm> objective_terms() const;
+  /// The objective terms whose blocks join two patches and that a patch problem keeps with the
+  /// other patch frozen (patch_term.h): fold bias and dihedral angles. (Stitching, the other one,
+  /// becomes per-patch targets instead.)
+  std::vector<const Term*> cross_patch_terms() const { return {&fold_bias, &angles}; }
   double effective_weight(int index) const;
 
   Weights weights;

@@ -11,6 +11,7 @@ Prolongation::Prolongation(const DogModel& model) {
   const FineCoarseMap& map = model.map;
   const int n = fine.vertex_count();
   std::vector<std::vector<std::pair<int, double>>> rows(n);
+  std::vector<bool> mapped(n);
   for (int v = 0; v < n; ++v) {
     if (map.fine_to_coarse[v] >= 0) {
       rows[v] = {{map.fine_to_coarse[v], 1.0}};
@@ -19,19 +20,17 @@ Prolongation::Prolongation(const DogModel& model) {
     } else if (map.fine_to_coarse_quad[v] >= 0) {
       for (int k = 0; k < 4; ++k) rows[v].push_back({model.coarse.F(map.fine_to_coarse_quad[v], k), 0.25});
     }
+    mapped[v] = !rows[v].empty();
   }
   for (int p = 0; p < fine.patch_count(); ++p) {
     const int begin = fine.patch_begin[p], end = fine.patch_begin[p + 1];
     for (int v = begin; v < end; ++v) {
-      if (!rows[v].empty()) continue;
+      if (mapped[v]) continue;
       int nearest = -1;
       double best = std::numeric_limits<double>::infinity();
       for (int u = begin; u < end; ++u) {
-        const bool mapped = map.fine_to_coarse[u] >= 0 ||
-                            (map.fine_to_coarse_edge[u][0] >= 0 && map.fine_to_coarse_edge[u][1] >= 0) ||
-                            map.fine_to_coarse_quad[u] >= 0;
         const double d = (fine.V.row(u) - fine.V.row(v)).squaredNorm();
-        if (mapped && d < best) {
+        if (mapped[u] && d < best) {
           best = d;
           nearest = u;
         }

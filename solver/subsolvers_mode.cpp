@@ -26,7 +26,7 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   }
   std::vector<WeightedTerm> terms = problem_.objective_terms();
   terms.push_back({&targets_, problem_.weights.stitching, false});
-  const PatchCoupling coupling{&frozen_, {&problem_.fold_bias, &problem_.angles}};
+  const PatchCoupling coupling{&frozen_, problem_.cross_patch_terms()};
   for (int p = 0; p < mesh.patch_count(); ++p) {
     if (options_.backend == "ceres")
       patches_.push_back(std::make_unique<PatchSolver>(mesh, p, terms, problem_.dog, options_.patch, coupling));

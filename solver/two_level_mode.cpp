@@ -1,7 +1,5 @@
 #include "solver/two_level_mode.h"
 
-#include "geometry/errors.h"
-
 namespace sdog {
 
 std::string TwoLevelOptions::validate() const {
@@ -9,19 +7,10 @@ std::string TwoLevelOptions::validate() const {
   return "";
 }
 
-namespace {
-
-const DogModel& with_coarse(const DogModel& model) {
-  if (!model.has_coarse) throw UsageError("mode twolevel needs the coarse mesh (odd resolutions, not --fine-only)");
-  return model;
-}
-
-}  // namespace
-
 TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                            const TwoLevelOptions& options, const StandardOptions& standard,
                            const SubsolverOptions& subsolvers)
-    : coarse_(fine, with_coarse(model), scenario, options.link_weight, standard, "twolevel"),
+    : coarse_(fine, model, scenario, options.link_weight, standard, "twolevel"),
       fine_(fine, scenario, subsolvers, standard.sqp) {}
 
 void TwoLevelMode::set_time(double t) {
