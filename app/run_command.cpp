@@ -25,6 +25,7 @@ namespace {
 struct RunArgs {
   PatternOptions pattern;
   std::string mode = "standard";
+  std::vector<std::string> switches;  // "ITER:MODE"
   std::string scenario = "corners";
   std::string config;
   std::string out;
@@ -82,6 +83,25 @@ struct Totals : RunObserver {
   double median_ms() const { return median(iteration_ms); }
 };
 
+// "--switch 100:twolevel" (repeatable) as mode switches; UsageError naming the bad one.
+std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
+  std::vector<ModeSwitch> out;
+  for (const std::string& t : texts) {
+    const size_t colon = t.find(':');
+    int k = 0;
+    try {
+      size_t used = 0;
+      if (colon != std::string::npos) k = std::stoi(t.substr(0, colon), &used);
+      if (colon == std::string::npos || used != colon || k < 1) throw std::invalid_argument(t);
+    } catch (const std::exception&) {
+      throw UsageError("--switch: expected ITERATION:MODE with ITERATION >= 1 (e.g. 100:twolevel), got '" + t + "'");
+    }
+    out.push_back({k, t.substr(colon + 1)});
+    check_mode_name(out.back().mode, "--switch " + t + ": ");
+  }
+  return out;
+}
+
 void run(const RunArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   check_mode_name(a.mode, "--mode: ");
@@ -96,6 +116,7 @@ void run(const RunArgs& a) {
   if (a.no_fine_to_coarse) config.coarse.fine_to_coarse = false;
   if (a.rho_opt->count()) config.admm.rho = a.rho;
   if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
+  if (!a.switches.empty()) config.switches = parse_switches(a.switches);
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
 
   // Fail on an unusable output directory before the work, not after it.
@@ -106,6 +127,11 @@ void run(const RunArgs& a) {
   DogProblem problem(model.fine, model.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, model.fine);
   check_scenario_targets(scenario, config, a.pattern.pattern + " at " + model.fine_res.str());
+  check_mode_usable(a.mode, model);
+  for (const ModeSwitch& s : config.switches) {
+    check_mode_name(s.mode, "switch at iteration " + std::to_string(s.iteration) + ": ");
+    check_mode_usable(s.mode, model);
+  }
   std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config, &model);
   Dofs x = scenario.start(model.fine);
   const int total = scenario.iterations + scenario.hold;
@@ -124,7 +150,13 @@ void run(const RunArgs& a) {
 
   g_cancel = false;
   auto previous = std::signal(SIGINT, on_interrupt);
-  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel);
+  size_t next_switch = 0;
+  const ModeSchedule schedule = [&](int k, const Dofs& state) -> Mode* {
+    if (next_switch >= config.switches.size() || config.switches[next_switch].iteration != k) return nullptr;
+    mode = switch_mode(config.switches[next_switch++].mode, problem, scenario, config, model, state);
+    return mode.get();
+  };
+  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel, schedule);
   std::signal(SIGINT, previous);
   progress.finish();
   const bool cancelled = !summary.failed && summary.iterations < total;
@@ -167,7 +199,9 @@ void run(const RunArgs& a) {
                            : " (log and frames up to here written to " + a.out + ")";
     throw SolverError(msg);
   }
-  std::cout << "sdog run: " << summary.iterations << " iterations of " << a.mode << " (" << scenario.name << ") on "
+  std::string modes = a.mode;
+  for (const ModeSwitch& s : config.switches) modes += ", " + s.mode + " from iteration " + std::to_string(s.iteration);
+  std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << scenario.name << ") on "
             << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count() << " vertices) in "
             << format_number(seconds_since(start)) << " s, median " << format_number(totals.median_ms())
             << " ms/iteration\n"
@@ -195,6 +229,9 @@ void register_run_command(CLI::App& app, Runner& runner) {
                                             "write the run log, run.json and VTK frames");
   add_pattern_options(*cmd, a->pattern);
   cmd->add_option("--mode", a->mode, "solver mode (" + known_modes() + ")")->capture_default_str();
+  cmd->add_option("--switch", a->switches,
+                  "ITERATION:MODE: from that iteration on the run continues with MODE (repeatable, ascending; "
+                  "$.switches)");
   a->scenario_opt = cmd->add_option("--scenario", a->scenario,
                                     "corners: the thesis protocol (first grid corner held, last one dragged); "
                                     "fold: every crease folds from flat to --angle; none: only the --config constraints; "

@@ -1,27 +1,40 @@
 #include "solver/coarse_level.h"
 
 #include "geometry/errors.h"
+#include "solver/crease_geometry.h"
+#include "solver/restriction.h"
 
 namespace sdog {
 namespace {
 
-const DogModel& with_coarse(const DogModel& model, const std::string& mode_name) {
-  if (!model.has_coarse)
-    throw UsageError("mode " + mode_name + " needs the coarse mesh (odd resolutions, not --fine-only)");
+// Fine crease point -> the coarse crease point at the same flat position, or -1.
+std::vector<int> coarse_crease_twins(const DogModel& model) {
+  std::vector<int> twin(model.fine.stitching.points.size(), -1);
+  const auto& fine_curves = model.fine.stitching.curves;
+  const auto& coarse_curves = model.coarse.stitching.curves;
+  for (size_t c = 0; c < fine_curves.size() && c < model.map.curves.size() && c < coarse_curves.size(); ++c)
+    for (size_t k = 0; k < fine_curves[c].points.size() && k < model.map.curves[c].size(); ++k) {
+      const int index = model.map.curves[c][k].coarse;
+      if (index >= 0) twin[fine_curves[c].points[k]] = coarse_curves[c].points[index];
+    }
+  return twin;
+}
+
+const DogModel& checked(const DogModel& model, const std::string& mode_name) {
+  CoarseLevel::check_usable(model, mode_name);
   return model;
 }
 
 }  // namespace
 
+void CoarseLevel::check_usable(const DogModel& model, const std::string& mode_name) {
+  if (!model.has_coarse)
+    throw UsageError("mode " + mode_name + " needs the coarse mesh (odd resolutions, not --fine-only)");
+}
+
 CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
                          const StandardOptions& standard, const std::string& mode_name)
-    : model_(model), link_weight_(link_weight), prolongation_(with_coarse(model, mode_name)) {
-  if (!scenario.angles.empty())
-    throw UsageError("mode " + mode_name + " does not support dihedral angle constraints yet (scenario '" +
-                     scenario.name + "' has " + std::to_string(scenario.angles.size()) + "); use --mode standard");
-  if (scenario.initial.size() > 0)
-    throw UsageError("mode " + mode_name + " cannot start from a given state yet (scenario '" + scenario.name +
-                     "'): there is no fine-to-coarse restriction of a deformed state; use another mode");
+    : model_(model), link_weight_(link_weight), prolongation_(checked(model, mode_name)) {
   const FineCoarseMap& map = model.map;
   Scenario coarse_scenario = scenario;
   coarse_scenario.positions.clear();
@@ -30,6 +43,16 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
       coarse_scenario.positions.push_back({map.fine_to_coarse[p.vertex], p.start, p.end});
     else
       carried_.push_back(p);
+  }
+  // An angle constraint at a fine crease point with a coarse twin constrains the twin to the same
+  // dihedral angle (the target cosine recomputed for the coarse edges' angle to the crease); one at a
+  // fine-only crease point acts on the fine mesh only.
+  coarse_scenario.angles.clear();
+  const std::vector<int> crease_twin = coarse_crease_twins(model);
+  for (const AngleConstraint& a : scenario.angles) {
+    const int c = crease_twin[a.point];
+    if (c < 0 || model.coarse.stitching.points[c].copies.size() != 2) continue;
+    coarse_scenario.angles.push_back(angle_constraint(model.coarse, c, a.start_degrees, a.end_degrees));
   }
   coarse_scenario.curve_signs.resize(model.coarse.stitching.curves.size(), 0.0);  // curves correspond by index
   Weights weights = fine.weights;
@@ -44,8 +67,22 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
       problem_->link.add({{map.fine_to_coarse[v], 1.0}});
     }
   mode_ = std::make_unique<StandardMode>(*problem_, coarse_scenario, standard);
-  x_ = coarse_scenario.start(model.coarse);
   set_time(0);
+  if (scenario.initial.size() > 0)
+    start_from(scenario.initial);
+  else
+    x_ = coarse_scenario.start(model.coarse);
+}
+
+void CoarseLevel::start_from(const Dofs& fine_x) {
+  x_ = restrict_to_coarse(model_, fine_x);
+  mode_->start_from(x_);
+  mode_->sqp().restore_constraints(x_);  // the restriction is close to a DOG, not on it
+  // At slightly folded creases the restriction can leave coarse fold sites on the wrong side (the
+  // fold test reads the crease's osculating plane from second differences of crease points 2 fine
+  // cells apart); the fold bias then makes the coarse step fail. The coarse mesh then follows the
+  // fine folds through the link targets instead of folding on its own.
+  if (!check_folded(model_.coarse, problem_->sites, x_).folded) mode_->set_folding(false);
 }
 
 CoarseLevel::~CoarseLevel() = default;

@@ -7,7 +7,11 @@
 // any other fine vertex becomes a target on the weighted sum of coarse vertices the prolongation
 // gives that vertex (prolongation.h: the coarse edge midpoint, quad centre, ...) with the position
 // weight: the coarse mesh is asked to place the point where the fine vertex would be carried.
-// Angle constraints are not carried yet (a usage error).
+// An angle constraint at a fine crease point that has a coarse twin (a crease point at the same flat
+// position) becomes the same dihedral angle constraint at the twin; the others act on the fine mesh
+// only. A run that starts from a given fine state
+// (scenario.initial) or takes over from another mode starts the coarse mesh from its restriction,
+// with the coarse folding mode off when the restriction is not folded (see start_from).
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,13 +31,21 @@ class CoarseLevel {
   CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
               const StandardOptions& standard, const std::string& mode_name);
   ~CoarseLevel();
+  /// Throws the UsageError the constructor would throw: the model has no coarse mesh.
+  static void check_usable(const DogModel& model, const std::string& mode_name);
 
   void set_time(double t);
   /// One standard iteration on the coarse mesh, with the link targets at the fine twins in `fine_x`
   /// first (when the link weight is positive).
   StepReport step(const Dofs& fine_x, bool last);
 
+  /// The coarse state for a fine state that did not come from this level (restriction.h), and a
+  /// fresh start of the coarse solver.
+  void start_from(const Dofs& fine_x);
+
   const Dofs& state() const { return x_; }
+  /// The coarse problem (its targets are those of the last set_time).
+  const DogProblem& problem() const { return *problem_; }
   void set_state(const Dofs& x) { x_ = x; }
   const Prolongation& prolongation() const { return prolongation_; }
   /// Link pairs: fine vertex links()[i].first has coarse twin links()[i].second.

@@ -18,6 +18,7 @@ CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& 
   coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario, options.fine_to_coarse ? options.link_weight : 0.0,
                                           standard, "coarse");
   // Fine link blocks (before the solvers fix their patterns): every coarse twin pair.
+  fine.link.clear();  // a mode that ran on this problem before may have made them
   for (const auto& [v, c] : coarse_->links()) fine.link.add({{v, 1.0}});
   scenario_.install(fine_);
   const auto& fine_curves = model.fine.stitching.curves;
@@ -44,6 +45,8 @@ void CoarseMode::set_time(double t) {
   scenario_.apply(fine_, t);
   coarse_->set_time(t);
 }
+
+void CoarseMode::start_from(const Dofs& x) { coarse_->start_from(x); }
 
 void CoarseMode::set_fine_link_targets() {
   const auto& links = coarse_->links();

@@ -42,6 +42,8 @@ class CoarseMode : public Mode {
   const char* name() const override { return "coarse"; }
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
+  /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
+  void start_from(const Dofs& x) override;
   const Dofs& coarse_state() const;
   const CoarseLevel& coarse_level() const { return *coarse_; }
 

@@ -33,6 +33,11 @@ class Mode {
   /// One iteration on the fine positions x (rolled back on failure). `last`: the run's last
   /// iteration, which ends with the constraints restored to the final tolerance.
   virtual StepReport iterate(Dofs& x, bool last) = 0;
+  /// Takes x as the state the next iteration starts from although the mode did not compute it
+  /// (another mode ran before it): a mode with state of its own besides x (the coarse positions of
+  /// the two-resolution modes) derives that state from x. Fresh modes of the other kinds need
+  /// nothing: their multipliers and targets start from x in their first iteration.
+  virtual void start_from(const Dofs& /*x*/) {}
 };
 
 }  // namespace sdog

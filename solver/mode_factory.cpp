@@ -25,6 +25,19 @@ void check_mode_name(const std::string& name, const std::string& what) {
 
 bool mode_needs_coarse(const std::string& name) { return name == "coarse" || name == "twolevel"; }
 
+void check_mode_usable(const std::string& name, const DogModel& model) {
+  check_mode_name(name);
+  if (mode_needs_coarse(name)) CoarseLevel::check_usable(model, name);
+}
+
+std::unique_ptr<Mode> switch_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
+                                  const RunConfig& config, const DogModel& model, const Dofs& x) {
+  problem.weights = config.weights;
+  auto mode = make_mode(name, problem, scenario, config, &model);
+  mode->start_from(x);
+  return mode;
+}
+
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
                                 const RunConfig& config, const DogModel* model) {
   if (name == "standard") return std::make_unique<StandardMode>(problem, scenario, config.standard);

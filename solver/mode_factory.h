@@ -19,10 +19,21 @@ void check_mode_name(const std::string& name, const std::string& what = "");
 /// True when the mode needs the coarse mesh and the fine-coarse map.
 bool mode_needs_coarse(const std::string& name);
 
+/// Throws UsageError when mode `name` cannot run on the model (unknown name, no coarse mesh for a
+/// coarse mode): the check a run makes before the work for every mode it will use.
+void check_mode_usable(const std::string& name, const DogModel& model);
+
 /// The mode `name` on the problem (which must outlive it) with the config's solver options.
 /// Throws UsageError for unknown names.
 /// `model` (needed by the coarse modes, mode_needs_coarse) must outlive the mode.
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
                                 const RunConfig& config, const DogModel* model = nullptr);
+
+/// A mode taking over a run at state x (`sdog run --switch`, the studio's mode menu): the problem's
+/// weights return to the configuration's (the standard mode raises the fold bias while folding),
+/// the mode is made as by make_mode and derives its own state from x (Mode::start_from). The mode
+/// that ran before must not iterate again: the new one owns the problem's blocks.
+std::unique_ptr<Mode> switch_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
+                                  const RunConfig& config, const DogModel& model, const Dofs& x);
 
 }  // namespace sdog

@@ -5,18 +5,23 @@
 namespace sdog {
 
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
-                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel) {
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel,
+                        const ModeSchedule& schedule) {
+  Mode* current = &mode;
   const auto start = Clock::now();
   RunSummary summary;
   const int total = scenario.iterations + scenario.hold;
   for (int k = 1; k <= total; ++k) {
     if (cancel && cancel->load()) break;
+    if (schedule)
+      if (Mode* next = schedule(k, x)) current = next;
     IterationReport report;
     report.iteration = k;
+    report.mode = current->name();
     report.t = scenario.time_of(k);
-    mode.set_time(report.t);
+    current->set_time(report.t);
     const auto t0 = Clock::now();
-    report.step = mode.iterate(x, k == total);
+    report.step = current->iterate(x, k == total);
     report.iteration_ms = ms_since(t0);
     report.diagnostics = diagnose(problem, x);
     if (report.t < 1) {

@@ -12,6 +12,7 @@ namespace sdog {
 
 struct IterationReport {
   int iteration = 0;  ///< 1-based
+  std::string mode;   ///< the mode that computed it
   double t = 0;       ///< scenario time of the targets
   Diagnostics diagnostics;
   double objective_final_targets = 0;  ///< weighted objective with the targets of t = 1
@@ -34,10 +35,17 @@ struct RunSummary {
   double seconds = 0;
 };
 
+/// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
+/// switch, see switch_mode in mode_factory.h), or nullptr to keep the current one. The returned
+/// mode must stay alive until the run ends or the next switch.
+using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
+
 /// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
 /// problem the diagnostics are measured on (its targets follow the scenario too). Stops at the
-/// first failed iteration (x keeps the last good state) or when `cancel` becomes true.
+/// first failed iteration (x keeps the last good state) or when `cancel` becomes true. `schedule`
+/// may switch modes during the run.
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
-                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr);
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr,
+                        const ModeSchedule& schedule = {});
 
 }  // namespace sdog

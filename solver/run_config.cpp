@@ -206,7 +206,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
   root.expect_object(
       {"scenario", "iterations", "hold", "angle", "weights", "solver", "patch_solver", "coarse", "positions", "angles",
-       "admm", "twolevel"});
+       "admm", "twolevel", "switches"});
   if (root.has("scenario")) {
     c.scenario = root["scenario"].text();
     const auto names = scenario_names();
@@ -232,6 +232,16 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   }
   if (root.has("admm")) apply_admm(root["admm"], c.admm);
   if (root.has("twolevel")) apply_twolevel(root["twolevel"], c.twolevel);
+  if (root.has("switches")) {
+    const Field list = root["switches"];
+    c.switches.clear();
+    for (size_t i = 0; i < list.array_size(); ++i) {
+      const Field s = list[i];
+      s.expect_object({"iteration", "mode"});
+      if (!s.has("iteration") || !s.has("mode")) s.fail("give \"iteration\" (1-based) and \"mode\"");
+      c.switches.push_back({s["iteration"].integer(1), s["mode"].text()});
+    }
+  }
   validate_run_config(c, source);
 }
 
@@ -258,6 +268,15 @@ void validate_run_config(const RunConfig& c, const std::string& source) {
   if (const std::string m = c.admm.validate(); !m.empty()) throw InputError(source + ": $.admm." + m);
   if (const std::string m = c.coarse.validate(); !m.empty()) throw InputError(source + ": $.coarse." + m);
   if (const std::string m = c.twolevel.validate(); !m.empty()) throw InputError(source + ": $.twolevel." + m);
+  for (size_t i = 0; i < c.switches.size(); ++i) {
+    const int k = c.switches[i].iteration;
+    const std::string where = source + ": $.switches[" + std::to_string(i) + "]: ";
+    if (k < 1 || k > c.iterations + c.hold)
+      throw InputError(where + "iteration " + std::to_string(k) + " is not in the run (1 to " +
+                       std::to_string(c.iterations + c.hold) + ")");
+    if (i > 0 && k <= c.switches[i - 1].iteration)
+      throw InputError(where + "switches must be in ascending order of iteration");
+  }
 }
 
 std::vector<std::string> scenario_names() { return {"corners", "fold", "none", "flatten"}; }
@@ -338,7 +357,8 @@ Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
 nlohmann::json to_json(const RunConfig& c) {
   const SqpOptions& s = c.standard.sqp;
   const Weights& w = c.weights;
-  json positions = json::array(), angles = json::array();
+  json positions = json::array(), angles = json::array(), switches = json::array();
+  for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", s.mode}});
   for (const auto& p : c.positions) {
     json e;
     if (p.vertex) e["vertex"] = *p.vertex;
@@ -407,7 +427,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"gamma", c.admm.gamma},
             {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
             {"inner", c.admm.inner}}},
-          {"twolevel", {{"link_weight", c.twolevel.link_weight}}}};
+          {"twolevel", {{"link_weight", c.twolevel.link_weight}}},
+          {"switches", switches}};
 }
 
 }  // namespace sdog

@@ -37,6 +37,12 @@ struct AngleSpec {
   double end_degrees = 0;
 };
 
+/// From iteration `iteration` on (1-based), mode `mode` computes the run (`sdog run --switch`).
+struct ModeSwitch {
+  int iteration = 1;
+  std::string mode;
+};
+
 /// The scenario names `make_scenario` knows (`sdog run --scenario`, `sdog compare --scenario`, the
 /// "scenario" key of a configuration file), in the order of the documentation.
 std::vector<std::string> scenario_names();
@@ -56,6 +62,7 @@ struct RunConfig {
   std::vector<AngleSpec> angles;
   AdmmOptions admm;  ///< the ADMM modes (vsadmm, jadmm, proxjadmm)
   TwoLevelOptions twolevel;  ///< the twolevel mode
+  std::vector<ModeSwitch> switches;  ///< mode switches during the run, by ascending iteration
 };
 
 /// Overrides the fields present in `json` (an object); `source` names the file in messages.

@@ -16,7 +16,7 @@ std::string number(double v) {
 std::string run_csv_header() {
   return "iteration,t,objective,bending,isometry,positions,edge_points,stitching,angles,fold_bias,"
          "objective_final_targets,dog_max,dog_l2,stitch_gap_max,edge_strain_max,sqp_steps,step_length,"
-         "fold_retries,folded,iteration_ms,factor_ms,link,factorizations,restoration_steps\n";
+         "fold_retries,folded,iteration_ms,factor_ms,link,factorizations,restoration_steps,mode\n";
 }
 
 std::vector<std::string> run_csv_time_columns() { return {"iteration_ms", "factor_ms"}; }
@@ -32,7 +32,7 @@ std::string run_csv_row(const IterationReport& r) {
   row += "," + std::to_string(s.sqp_steps) + "," + number(s.step_length) + "," + std::to_string(s.fold_retries) + "," +
          (s.folded ? "1" : "0") + "," + number(r.iteration_ms) + "," + number(s.factor_ms) + "," +
          number(d.terms[kLink]) + "," + std::to_string(s.factorizations) + "," +
-         std::to_string(s.restoration_steps) + "\n";
+         std::to_string(s.restoration_steps) + "," + r.mode + "\n";
   return row;
 }
 

@@ -3,7 +3,7 @@
 //   iteration, t, objective, bending, isometry, positions, edge_points, stitching, angles,
 //   fold_bias, objective_final_targets, dog_max, dog_l2, stitch_gap_max, edge_strain_max,
 //   sqp_steps, step_length, fold_retries, folded, iteration_ms, factor_ms, link,
-//   factorizations, restoration_steps
+//   factorizations, restoration_steps, mode
 // Term columns are unweighted sums of squared residuals; `objective` is weighted with the weights
 // of that iteration (an escalated fold bias included). Times are the only columns that may differ
 // between two runs with the same inputs.

@@ -430,6 +430,17 @@ SqpReport SqpSolver::solve_iteration(Dofs& x, bool last) {
   return report;
 }
 
+SqpReport SqpSolver::restore_constraints(Dofs& x) {
+  SqpReport report;
+  factored_ = false;  // the factor of an earlier state does not fit x
+  Eigen::VectorXd c = constraint_values(x);
+  if (!c.allFinite() || !restore(x, c, options_.constraint_tolerance, options_.max_restoration_steps, report)) {
+    report.failed = true;
+    if (report.failure.empty()) report.failure = "the DOG constraints are not finite";
+  }
+  return report;
+}
+
 bool SqpSolver::restore(Dofs& x, Eigen::VectorXd& c, double tolerance, int max_steps, SqpReport& report) {
   enum Kind { kChord, kLocal, kGlobal };
   // Polishing restores with a weaker metric term: H then barely resists the last, small corrections.

@@ -109,6 +109,11 @@ class SqpSolver {
   /// of a run (tighter constraint tolerance).
   SqpReport iterate(Dofs& x, bool last = false);
 
+  /// Only restoration steps (no objective step): moves x onto the constraints until |c| is within
+  /// the constraint tolerance or max_restoration_steps are taken. For a state this solver did not
+  /// compute (a mode switch), whose constraint residual may be far above the tolerance.
+  SqpReport restore_constraints(Dofs& x);
+
   void set_weight(size_t term, double weight);
   double weight(size_t term) const { return objective_[term].weight; }
   const Eigen::VectorXd& multipliers() const { return lambda_; }

@@ -46,7 +46,7 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
   // As in the reference: an escalated bias stays for the next iteration and returns to its base
   // value once an iteration ends folded.
   double weight = problem_.weights.fold_bias;
-  while (!report.folded && weight * 10 <= options_.max_fold_bias) {
+  while (!report.folded && weight > 0 && weight * 10 <= options_.max_fold_bias) {
     x = x0;
     sqp_->set_multipliers(lambda0);
     set_fold_bias(weight *= 10);
@@ -56,6 +56,16 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
   }
   if (report.folded && report.fold_retries == 0) set_fold_bias(base_fold_bias_);
   return report;
+}
+
+void StandardMode::start_from(const Dofs&) {
+  sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
+  if (options_.folding) set_fold_bias(base_fold_bias_);
+}
+
+void StandardMode::set_folding(bool on) {
+  options_.folding = on;
+  set_fold_bias(on ? base_fold_bias_ : 0.0);
 }
 
 void StandardMode::set_fold_bias(double weight) {

@@ -24,6 +24,10 @@ class StandardMode : public Mode {
   const char* name() const override { return "standard"; }
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
+  /// Zero multipliers and the base fold bias: a fresh start from x.
+  void start_from(const Dofs& x) override;
+  /// Folding mode on (fold bias at its base weight, fold check and retries) or off (no fold bias).
+  void set_folding(bool on);
   SqpSolver& sqp() { return *sqp_; }
 
  private:

@@ -18,6 +18,8 @@ void TwoLevelMode::set_time(double t) {
   fine_.set_time(t);
 }
 
+void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
+
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
   StepReport coarse = coarse_.step(x, last);

@@ -35,6 +35,8 @@ class TwoLevelMode : public Mode {
   const char* name() const override { return "twolevel"; }
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
+  /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
+  void start_from(const Dofs& x) override;
   const Dofs& coarse_state() const { return coarse_.state(); }
   const CoarseLevel& coarse_level() const { return coarse_; }
 

@@ -53,7 +53,11 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
   for (size_t i = 0; i < csv.rows.size(); ++i) {
     ASSERT_EQ(csv.rows[i].size(), csv.header.size()) << "row " << i;
     EXPECT_EQ(std::stoi(csv.rows[i][csv.column("iteration")]), static_cast<int>(i) + 1);
-    for (const auto& field : csv.rows[i]) EXPECT_TRUE(std::isfinite(std::stod(field))) << field;
+    for (size_t c = 0; c < csv.header.size(); ++c)
+      if (csv.header[c] == "mode")
+        EXPECT_EQ(csv.rows[i][c], "standard");
+      else
+        EXPECT_TRUE(std::isfinite(std::stod(csv.rows[i][c]))) << csv.header[c] << " " << csv.rows[i][c];
     EXPECT_LT(std::stod(csv.rows[i][csv.column("dog_max")]), 1e-4);
   }
   EXPECT_DOUBLE_EQ(std::stod(csv.rows.back()[csv.column("t")]), 1.0);
@@ -150,7 +154,12 @@ INSTANTIATE_TEST_SUITE_P(
                                  {"$.positions[0].end"}},
                       ConfigCase{"bad_crease_point", R"({"angles": [{"crease_point": 100000, "end": 30}]})",
                                  {"$.angles[0]", "100000"}},
-                      ConfigCase{"bad_scenario", R"({"scenario": "twist"})", {"$.scenario", "twist"}}));
+                      ConfigCase{"bad_scenario", R"({"scenario": "twist"})", {"$.scenario", "twist"}},
+                      ConfigCase{"switch_outside_run", R"({"switches": [{"iteration": 26, "mode": "subsolvers"}]})",
+                                 {"$.switches[0]", "iteration 26"}},
+                      ConfigCase{"switches_unordered",
+                                 R"({"switches": [{"iteration": 9, "mode": "subsolvers"}, {"iteration": 4, "mode": "standard"}]})",
+                                 {"$.switches[1]", "ascending"}}));
 
 TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   const std::string dir = test::temp_dir("config_good");
@@ -172,6 +181,25 @@ TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   EXPECT_LT(std::stod(csv.rows.back()[csv.column("positions")]), 0.1);
 }
 
+// --switch: the run changes mode where asked; run.csv says which mode computed each iteration.
+TEST(RunCommand, SwitchesModesDuringTheRun) {
+  const std::string dir = test::temp_dir("run_switch");
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 --iters 12 --hold 3 -q --frames-every 0 "
+                                "--switch 5:subsolvers --switch 11:standard --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("standard, subsolvers from iteration 5, standard from iteration 11"), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir + "/run.csv");
+  ASSERT_EQ(csv.rows.size(), 15u);
+  for (size_t i = 0; i < csv.rows.size(); ++i) {
+    const int k = static_cast<int>(i) + 1;
+    EXPECT_EQ(csv.rows[i][csv.column("mode")], k >= 5 && k < 11 ? "subsolvers" : "standard") << "iteration " << k;
+    EXPECT_LT(std::stod(csv.rows[i][csv.column("dog_max")]), 1e-4) << "iteration " << k;
+  }
+  const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
+  ASSERT_EQ(j.at("config").at("switches").size(), 2u);
+  EXPECT_EQ(j.at("config").at("switches")[0].at("mode"), "subsolvers");
+}
+
 TEST(RunCommand, UsageErrorsExitWithTwo) {
   auto r = test::run_sdog(kSmallRun + " --mode warp");
   EXPECT_EQ(r.code, 2) << r.err;
@@ -179,6 +207,16 @@ TEST(RunCommand, UsageErrorsExitWithTwo) {
   r = test::run_sdog("run '" + test::dataset("diagonal_fold.svg") + "' --res 21x21 -q --scenario fold");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("no fold sites"), std::string::npos) << r.err;
+  r = test::run_sdog(kSmallRun + " --switch 5:warp");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--switch 5:warp: unknown mode 'warp'"), std::string::npos) << r.err;
+  r = test::run_sdog(kSmallRun + " --switch five:subsolvers");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("ITERATION:MODE"), std::string::npos) << r.err;
+  // A coarse mode needs the coarse mesh: refused before the run, not at the switch.
+  r = test::run_sdog("run '" + kPattern + "' --res 20x14 --fine-only --iters 20 --hold 5 -q --switch 5:twolevel");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("twolevel needs the coarse mesh"), std::string::npos) << r.err;
 }
 
 TEST(RunCommand, UnwritableOutputFailsBeforeTheWork) {

@@ -49,6 +49,31 @@ CoarseRun run_coarse(const RunConfig& config) {
   return r;
 }
 
+// The angle targets reach the fine patches through their cross-patch angle blocks, and the coarse
+// mesh at the crease points both meshes share.
+TEST(CoarseMode, FollowsAngleConstraints) { test::expect_follows_angles("coarse", model()); }
+
+TEST(CoarseMode, CarriesAngleConstraintsToTheCoarseTwins) {
+  RunConfig config = test::short_run(20, 10);
+  config.scenario = "fold";
+  config.fold_angle = 60;
+  auto coarse_angle_residual = [&](double angle_weight) {
+    RunConfig c = config;
+    c.weights.angles = angle_weight;
+    DogProblem problem(model().fine, model().fine_topology, c.weights);
+    const Scenario scenario = make_scenario(c, model().fine);
+    CoarseMode mode(problem, model(), scenario, c.coarse, c.standard);
+    Dofs x = scenario.start(model().fine);
+    EXPECT_FALSE(run_scenario(mode, problem, scenario, x, {}).failed);
+    const DogProblem& coarse = mode.coarse_level().problem();
+    EXPECT_GT(coarse.angles.block_count(), 0);
+    EXPECT_LT(coarse.angles.block_count(), static_cast<int>(scenario.angles.size()));  // not every fine site has a twin
+    return diagnose(coarse, mode.coarse_state()).terms[kAngles];
+  };
+  const double with = coarse_angle_residual(1000), without = coarse_angle_residual(0);
+  EXPECT_LT(with, 0.1 * without) << with << " against " << without;
+}
+
 TEST(CoarseMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const CoarseRun r = run_coarse(short_run());
   ASSERT_FALSE(r.result.summary.failed) << r.result.summary.failure;

@@ -22,6 +22,8 @@ test::RunResult run(const std::string& mode, const RunConfig& config, int thread
   return test::run_mode(mode, model(), config);
 }
 
+TEST(TwoLevelMode, FollowsAngleConstraints) { test::expect_follows_angles("twolevel", model()); }
+
 TEST(TwoLevelMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const test::RunResult r = run("twolevel", test::short_run(12, 3), 2);
   ASSERT_FALSE(r.summary.failed) << r.summary.failure;

@@ -1,0 +1,113 @@
+// Switching modes in the middle of a run (switch_mode, run_scenario's schedule): every mode takes
+// over the state another one left without a jump and keeps the DOG constraints; the coarse modes
+// derive their coarse mesh from the state they take over.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "geometry/dog_model.h"
+#include "solver/mode_factory.h"
+#include "tests/solver/run_recorder.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+const DogModel& model() {
+  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  return m;
+}
+
+struct SwitchedRun {
+  test::RunResult result;
+  std::vector<double> step;  ///< per iteration: largest vertex displacement
+};
+
+SwitchedRun run_with_switches(const RunConfig& config, const std::string& first) {
+  DogProblem problem(model().fine, model().fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model().fine);
+  std::unique_ptr<Mode> mode = make_mode(first, problem, scenario, config, &model());
+  SwitchedRun out;
+  out.result.x = scenario.start(model().fine);
+  Dofs previous = out.result.x;
+  struct StepRecorder : test::Recorder {
+    Dofs* previous;
+    std::vector<double>* step;
+    void on_iteration(const IterationReport& r, const Dofs& x) override {
+      test::Recorder::on_iteration(r, x);
+      step->push_back((x - *previous).lpNorm<Eigen::Infinity>());  // coordinates: a bound on vertex moves
+      *previous = x;
+    }
+  } recorder;
+  recorder.previous = &previous;
+  recorder.step = &out.step;
+  size_t next = 0;
+  const ModeSchedule schedule = [&](int k, const Dofs& x) -> Mode* {
+    if (next >= config.switches.size() || config.switches[next].iteration != k) return nullptr;
+    mode = switch_mode(config.switches[next++].mode, problem, scenario, config, model(), x);
+    return mode.get();
+  };
+  out.result.summary = run_scenario(*mode, problem, scenario, out.result.x, {&recorder}, nullptr, schedule);
+  out.result.reports = recorder.reports;
+  return out;
+}
+
+// Every mode takes over from another and hands over to the next; the standard mode finishes.
+TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
+  RunConfig config = test::short_run(100, 30);
+  config.switches = {{16, "twolevel"}, {31, "coarse"}, {46, "subsolvers"}, {61, "vsadmm"},
+                     {71, "jadmm"},    {76, "proxjadmm"}, {81, "standard"}};
+  const SwitchedRun s = run_with_switches(config, "standard");
+  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  ASSERT_EQ(s.result.reports.size(), 130u);
+
+  std::map<int, std::string> expected_mode;
+  std::string current = "standard";
+  size_t next = 0;
+  for (int k = 1; k <= 130; ++k) {
+    if (next < config.switches.size() && config.switches[next].iteration == k) current = config.switches[next++].mode;
+    expected_mode[k] = current;
+  }
+  for (const auto& r : s.result.reports) {
+    EXPECT_EQ(r.mode, expected_mode[r.iteration]) << "iteration " << r.iteration;
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration << " (" << r.mode << ")";
+  }
+  // No jump where a mode takes over: the switch iteration moves the sheet no more than the
+  // iterations of the target drag do (about 0.1 mesh units each here).
+  double typical = 0;
+  for (int k = 2; k <= 15; ++k) typical = std::max(typical, s.step[k - 1]);
+  for (const ModeSwitch& sw : config.switches)
+    EXPECT_LT(s.step[sw.iteration - 1], 4 * typical)
+        << "iteration " << sw.iteration << " (" << sw.mode << " takes over): " << s.step[sw.iteration - 1]
+        << " against " << typical;
+
+  // The standard mode's last iteration polishes the constraints as in a run of its own. (It does
+  // not refold creases the patch modes left unfolded: the fold bias has risen to its cap by then.)
+  EXPECT_LT(s.result.reports.back().diagnostics.dog_max, 1e-6);
+  EXPECT_TRUE(std::isfinite(s.result.reports.back().diagnostics.terms[kBending]));
+}
+
+// The coarse modes derive the coarse mesh from the state they take over: a switch into twolevel at a
+// deformed state continues smoothly, and a coarse run can start from a given state (flatten).
+TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
+  RunConfig config = test::short_run(60, 10);
+  config.switches = {{41, "twolevel"}};
+  const SwitchedRun s = run_with_switches(config, "standard");
+  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  // Iteration 41 moves no more than the standard iterations before it; a coarse mesh left flat
+  // would drag the sheet back by its whole deformation.
+  double before = 0;
+  for (int k = 30; k <= 40; ++k) before = std::max(before, s.step[k - 1]);
+  EXPECT_LT(s.step[40], 3 * before) << s.step[40] << " against " << before;
+  for (const auto& r : s.result.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+
+  RunConfig flatten = test::short_run(8, 2);
+  flatten.scenario = "flatten";
+  flatten.fold_angle = 30;
+  const test::RunResult r = test::run_mode("coarse", model(), flatten);
+  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+}
+
+}  // namespace
+}  // namespace sdog
