@@ -4,6 +4,27 @@
 
 namespace sdog {
 
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
+                              bool last) {
+  IterationReport report;
+  report.iteration = iteration;
+  report.mode = mode.name();
+  report.t = scenario.time_of(iteration);
+  mode.set_time(report.t);
+  const auto t0 = Clock::now();
+  report.step = mode.iterate(x, last);
+  report.iteration_ms = ms_since(t0);
+  report.diagnostics = diagnose(problem, x);
+  if (report.t < 1) {
+    scenario.apply(problem, 1.0);
+    report.objective_final_targets = weighted_objective(problem, x);
+    scenario.apply(problem, report.t);
+  } else {
+    report.objective_final_targets = report.diagnostics.objective;
+  }
+  return report;
+}
+
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
                         const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel,
                         const ModeSchedule& schedule) {
@@ -15,22 +36,7 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     if (cancel && cancel->load()) break;
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
-    IterationReport report;
-    report.iteration = k;
-    report.mode = current->name();
-    report.t = scenario.time_of(k);
-    current->set_time(report.t);
-    const auto t0 = Clock::now();
-    report.step = current->iterate(x, k == total);
-    report.iteration_ms = ms_since(t0);
-    report.diagnostics = diagnose(problem, x);
-    if (report.t < 1) {
-      scenario.apply(problem, 1.0);
-      report.objective_final_targets = weighted_objective(problem, x);
-      scenario.apply(problem, report.t);
-    } else {
-      report.objective_final_targets = report.diagnostics.objective;
-    }
+    const IterationReport report = run_iteration(*current, problem, scenario, x, k, k == total);
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {

@@ -35,6 +35,11 @@ struct RunSummary {
   double seconds = 0;
 };
 
+/// Iteration `iteration` (1-based) of a run: the targets of its scenario time, one iteration of
+/// the mode on x, the diagnostics on `problem`.
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
+                              bool last);
+
 /// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
 /// switch, see switch_mode in mode_factory.h), or nullptr to keep the current one. The returned
 /// mode must stay alive until the run ends or the next switch.

@@ -245,16 +245,18 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   validate_run_config(c, source);
 }
 
-void read_run_config(const std::string& path, RunConfig& config) {
+nlohmann::json read_json_file(const std::string& path, const std::string& what) {
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the configuration file");
-  json j;
+  if (!in) throw InputError(path + ": cannot open the " + what);
   try {
-    j = json::parse(in);
+    return json::parse(in);
   } catch (const json::parse_error& e) {
     throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
-  apply_run_config(j, path, config);
+}
+
+void read_run_config(const std::string& path, RunConfig& config) {
+  apply_run_config(read_json_file(path, "configuration file"), path, config);
 }
 
 void validate_run_config(const RunConfig& c, const std::string& source) {

@@ -67,6 +67,8 @@ struct RunConfig {
 
 /// Overrides the fields present in `json` (an object); `source` names the file in messages.
 void apply_run_config(const nlohmann::json& json, const std::string& source, RunConfig& config);
+/// Parses a JSON file; InputError "path: cannot open the <what>" or "path: not valid JSON (...)".
+nlohmann::json read_json_file(const std::string& path, const std::string& what);
 /// Reads and applies a JSON file.
 void read_run_config(const std::string& path, RunConfig& config);
 /// Checks the values (InputError naming the field).

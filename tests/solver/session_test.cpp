@@ -1,0 +1,178 @@
+// The interactive session (session.h) and workspaces (workspace.h): stepping, handles dragged by
+// program, angle constraints added and removed, undo and redo, mode switches, and a workspace saved
+// and loaded back.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "geometry/dog_model.h"
+#include "geometry/errors.h"
+#include "solver/session.h"
+#include "solver/workspace.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+const DogModel& model() {
+  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  return m;
+}
+
+RunConfig interactive() {
+  RunConfig c;
+  c.scenario = "none";  // only the user's constraints
+  return c;
+}
+
+TEST(Session, StepsTheBaseScenario) {
+  Session s(model(), RunConfig{}, "standard");
+  const Dofs start = s.positions();
+  for (int k = 0; k < 5; ++k) {
+    const IterationReport r = s.step();
+    ASSERT_FALSE(r.step.failed) << r.step.failure;
+    EXPECT_EQ(r.iteration, k + 1);
+    EXPECT_EQ(r.mode, "standard");
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4);
+  }
+  EXPECT_EQ(s.iteration(), 5);
+  EXPECT_GT((s.positions() - start).norm(), 1e-3);
+  s.reset();
+  EXPECT_EQ(s.iteration(), 0);
+  EXPECT_EQ(s.positions(), start);
+}
+
+TEST(Session, DraggedHandleLeadsTheSheetAndUndoRestoresIt) {
+  Session s(model(), interactive(), "standard");
+  const int last = model().fine.vertex_count() - 1;
+  EXPECT_EQ(s.add_handle(0), 0);
+  EXPECT_EQ(s.add_handle(last), 1);
+  const Eigen::Vector3d rest = vertex_of(s.positions(), last);
+  const Eigen::Vector3d lifted = rest + Eigen::Vector3d(0, 0, 3);
+  s.move_handle(1, lifted);
+  for (int k = 0; k < 30; ++k) ASSERT_FALSE(s.step().step.failed);
+  EXPECT_LT((vertex_of(s.positions(), last) - lifted).norm(), 0.5);
+  EXPECT_LT(vertex_of(s.positions(), 0).norm(), 0.5);  // the held corner stays
+  EXPECT_EQ(s.scenario().positions.size(), 2u);
+
+  ASSERT_TRUE(s.undo());  // the move
+  EXPECT_EQ(s.constraints().handles[1].target, rest);
+  ASSERT_TRUE(s.undo());  // the second handle
+  EXPECT_EQ(s.constraints().handles.size(), 1u);
+  EXPECT_EQ(s.scenario().positions.size(), 1u);
+  ASSERT_TRUE(s.redo());
+  ASSERT_TRUE(s.redo());
+  EXPECT_FALSE(s.can_redo());
+  EXPECT_EQ(s.constraints().handles[1].target, lifted);
+  s.remove_handle(0);
+  EXPECT_EQ(s.constraints().handles.size(), 1u);
+  EXPECT_EQ(s.constraints().handles[0].vertex, last);
+  EXPECT_THROW(s.add_handle(model().fine.vertex_count()), InputError);
+  EXPECT_THROW(s.move_handle(5, lifted), InputError);
+}
+
+TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
+  const auto& points = model().fine.stitching.points;
+  int site = -1;
+  for (size_t p = 0; p < points.size() && site < 0; ++p)
+    if (points[p].copies.size() == 2 && p > points.size() / 3) site = static_cast<int>(p);
+  ASSERT_GE(site, 0);
+  auto angle_term_after = [&](bool with_angle) {
+    auto s = std::make_unique<Session>(model(), interactive(), "standard");
+    s->add_handle(0);
+    if (with_angle) EXPECT_EQ(s->add_angle(site, 60), 0);
+    for (int k = 0; k < 25; ++k) EXPECT_FALSE(s->step().step.failed);
+    return s;
+  };
+  const auto with_session = angle_term_after(true);
+  Session& with = *with_session;
+  EXPECT_EQ(with.scenario().angles.size(), 1u);
+  EXPECT_LT(with.problem().angles.block_count(), 2);
+  // The constrained crease point bends: its sheet leaves the plane.
+  double lift = 0;
+  for (int v = 0; v < model().fine.vertex_count(); ++v) lift = std::max(lift, std::abs(with.positions()[3 * v + 2]));
+  EXPECT_GT(lift, 0.5);
+  with.remove_angle(0);
+  EXPECT_TRUE(with.scenario().angles.empty());
+  ASSERT_TRUE(with.undo());
+  EXPECT_EQ(with.scenario().angles.size(), 1u);
+  EXPECT_THROW(with.add_angle(static_cast<int>(points.size()), 30), InputError);
+  EXPECT_THROW(with.add_angle(site, 200), InputError);
+}
+
+TEST(Session, ModeSwitchKeepsThePositions) {
+  Session s(model(), RunConfig{}, "standard");
+  for (int k = 0; k < 10; ++k) ASSERT_FALSE(s.step().step.failed);
+  const Dofs before = s.positions();
+  s.set_mode("twolevel");
+  EXPECT_EQ(s.positions(), before);
+  EXPECT_EQ(s.mode(), "twolevel");
+  const IterationReport r = s.step();
+  ASSERT_FALSE(r.step.failed) << r.step.failure;
+  EXPECT_EQ(r.mode, "twolevel");
+  EXPECT_EQ(r.iteration, 11);
+  EXPECT_LT(r.diagnostics.dog_max, 1e-4);
+  EXPECT_THROW(s.set_mode("warp"), UsageError);
+}
+
+TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
+  RunConfig config = interactive();
+  config.weights.bending = 2;
+  Session s(model(), config, "standard");
+  s.add_handle(0);
+  s.add_handle(7);
+  s.move_handle(1, Eigen::Vector3d(1, 2, 3));
+  for (int k = 0; k < 3; ++k) ASSERT_FALSE(s.step().step.failed);
+  const std::string dir = test::temp_dir("workspace");
+  const nlohmann::json camera = {{"position", {1, 2, 3}}, {"focal_point", {0, 0, 0}}};
+  save_workspace(workspace_of(s, "../somewhere/four_corner_arcs.svg", "21x21", camera), dir + "/w.json");
+  const Workspace w = load_workspace(dir + "/w.json");
+  EXPECT_EQ(w.pattern, (std::filesystem::path(dir) / "../somewhere/four_corner_arcs.svg").lexically_normal().string());
+  EXPECT_EQ(w.resolution, "21x21");
+  EXPECT_EQ(w.mode, "standard");
+  EXPECT_EQ(w.iteration, 3);
+  EXPECT_EQ(w.camera, camera);
+  EXPECT_EQ(w.config.weights.bending, 2);
+  EXPECT_EQ(w.config.scenario, "none");
+  ASSERT_EQ(w.constraints.handles.size(), 2u);
+  EXPECT_EQ(w.constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
+  EXPECT_LT((w.positions - s.positions()).lpNorm<Eigen::Infinity>(), 1e-12);
+
+  Session back(model(), w.config, w.mode);
+  back.set_constraints(w.constraints);
+  back.set_positions(w.positions, w.iteration);
+  EXPECT_EQ(back.scenario().positions.size(), 2u);
+  EXPECT_EQ(back.iteration(), 3);
+  // The same next iteration as the saved session's after a restart of its solver (a loaded
+  // session's solver starts with zero multipliers).
+  s.set_mode("standard");
+  const IterationReport a = s.step(), b = back.step();
+  EXPECT_NEAR(a.diagnostics.objective, b.diagnostics.objective, 1e-9 * (1 + a.diagnostics.objective));
+  EXPECT_THROW(back.set_positions(Dofs::Zero(6), 0), InputError);
+}
+
+TEST(Workspace, BadFilesAreErrorsNamingThePath) {
+  const std::string dir = test::temp_dir("workspace_bad");
+  auto error_of = [&](const std::string& text) {
+    const std::string path = test::write_file(dir, "w.json", text);
+    try {
+      load_workspace(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("{").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(error_of(R"({"format": "x"})").find("$.format"), std::string::npos);
+  const std::string head = R"({"format": "sdog-workspace", "version": 1, "pattern": "p.svg", "resolution": "21x21", "mode": "standard", )";
+  EXPECT_NE(error_of(head + R"("handles": [{"vertex": 1, "target": [1, 2]}]})").find("$.handles[0].target"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + R"("colour": 1})").find("$.colour"), std::string::npos);
+  EXPECT_NE(error_of(head + R"("config": {"weights": {"bending": -1}}})").find("bending"), std::string::npos);
+  EXPECT_EQ(error_of(head + R"("positions": []})"), "no error");
+  EXPECT_THROW(save_workspace(Workspace{}, "/proc/forbidden/w.json"), OutputError);
+}
+
+}  // namespace
+}  // namespace sdog
