@@ -43,6 +43,7 @@ class CoarseMode : public Mode {
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
   const Dofs& coarse_state() const;
+  const Dofs* coarse_positions() const override { return &coarse_state(); }
   const CoarseLevel& coarse_level() const { return *coarse_; }
 
  private:

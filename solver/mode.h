@@ -33,6 +33,9 @@ class Mode {
   /// One iteration on the fine positions x (rolled back on failure). `last`: the run's last
   /// iteration, which ends with the constraints restored to the final tolerance.
   virtual StepReport iterate(Dofs& x, bool last) = 0;
+  /// The coarse DOG's current state for modes that step a coarse mesh (coarse, twolevel), else
+  /// nullptr; pictures and the studio show it next to the fine mesh.
+  virtual const Dofs* coarse_positions() const { return nullptr; }
 };
 
 }  // namespace sdog

@@ -36,6 +36,7 @@ class TwoLevelMode : public Mode {
   void set_time(double t) override;
   StepReport iterate(Dofs& x, bool last) override;
   const Dofs& coarse_state() const { return coarse_.state(); }
+  const Dofs* coarse_positions() const override { return &coarse_.state(); }
   const CoarseLevel& coarse_level() const { return coarse_; }
 
  private:
