@@ -69,6 +69,12 @@ void merge_bounds(Bounds& into, const double* b) {
   }
 }
 
+std::vector<double> quad_patches(const DogMesh& mesh) {
+  std::vector<double> patch(mesh.quad_count());
+  for (int q = 0; q < mesh.quad_count(); ++q) patch[q] = mesh.vertex_patch[mesh.F(q, 0)];
+  return patch;
+}
+
 void check_size(size_t got, int expected, const char* what) {
   if (static_cast<int>(got) != expected)
     throw std::invalid_argument(std::string("scene state: ") + what + " has " + std::to_string(got) +
@@ -223,6 +229,9 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
                     Legend::categories("creases", {{"crease", kCreaseLineColor}, {"crease point", kCreasePointColor}}));
   for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
 
+  // Patches do not change: their cell arrays are set once.
+  set_array(fine_->grid()->GetCellData(), "patch", quad_patches(model.fine));
+  if (coarse_) set_array(coarse_->grid()->GetCellData(), "patch", quad_patches(model.coarse));
   for (Layer l : all_layers()) on_[l] = false;
   update(rest_scene_state(model));
   apply_view();
@@ -265,11 +274,7 @@ void Scene::refresh() {
   set_array(pd, "dog_residual", state_.fields.dog_residual);
   set_array(pd, "log10_dog_residual", log10_residuals(state_.fields.dog_residual));
   set_array(pd, "bending", state_.fields.bending);
-  vtkCellData* cd = fine_->grid()->GetCellData();
-  std::vector<double> patch(model_.fine.quad_count());
-  for (int q = 0; q < model_.fine.quad_count(); ++q) patch[q] = model_.fine.vertex_patch[model_.fine.F(q, 0)];
-  set_array(cd, "patch", patch);
-  set_array(cd, "edge_strain", state_.fields.edge_strain);
+  set_array(fine_->grid()->GetCellData(), "edge_strain", state_.fields.edge_strain);
   const auto bending = robust_range(state_.fields.bending);
   o.bending_lut->SetTableRange(bending[0], bending[1]);
   const auto strain = robust_range(state_.fields.edge_strain);
@@ -279,10 +284,6 @@ void Scene::refresh() {
   if (coarse_) {
     coarse_x = flat || state_.coarse.rows() == 0 ? &model_.coarse.V : &state_.coarse;
     coarse_->set_positions(*coarse_x);
-    std::vector<double> coarse_patch(model_.coarse.quad_count());
-    for (int q = 0; q < model_.coarse.quad_count(); ++q)
-      coarse_patch[q] = model_.coarse.vertex_patch[model_.coarse.F(q, 0)];
-    set_array(coarse_->grid()->GetCellData(), "patch", coarse_patch);
 
     const double dx = coarse_offset();
     vtkPoints* lp = o.links->GetPoints();

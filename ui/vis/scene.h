@@ -11,6 +11,8 @@
 //   coarse mesh's edges over the fine mesh;
 // - side-by-side: the fine mesh (left) and the coarse mesh (right, moved by 1.12 sheet widths),
 //   current positions, top camera, a title above each.
+// A scene belongs to the thread that renders (VTK is not thread safe): a solver thread hands over
+// SceneState values, it never touches the scene.
 // Coarse positions are those of a mode that steps a coarse mesh (SceneState::coarse), otherwise
 // its rest state. Layers that only exist on the fine mesh (residuals, strain, bending, stitch gap,
 // handles) are drawn on the fine mesh only.
