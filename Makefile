@@ -44,7 +44,7 @@ build: configure
 demo: build
 	@rm -rf out/demo.tmp && mkdir -p out
 	$(SDOG) mesh $(DEMO_PATTERN) --res $(DEMO_RES) --out out/demo.tmp
-	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res $(DEMO_RES) --overlay vertex-types --size 1600x800 --out out/demo.tmp/vertex_types.png
+	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res $(DEMO_RES) --size 1600x800 --out out/demo.tmp/vertex_types.png
 	$(SDOG) run $(DEMO_PATTERN) --res $(DEMO_RES) --scenario corners --frames-every 10 --out out/demo.tmp/run
 	@rm -rf out/demo && mv out/demo.tmp out/demo
 	@echo ""; echo "Demo results in out/demo/:"; ls -1 out/demo | sed 's/^/  out\/demo\//'; \
@@ -61,12 +61,13 @@ fuzz: fuzz-deps deps
 	$(FUZZ_BUILD)/tests/fuzz/fuzz_svg_pattern -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=tests/fuzz/svg.dict -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/svg
 
-# Regenerates the dataset previews (datasets/README.md) and the README picture.
+# Regenerates the dataset previews (datasets/README.md) and the README pictures.
 previews: build
 	@mkdir -p docs/datasets
 	@for f in datasets/*.svg; do n=$$(basename $$f .svg); \
 	  $(XVFB) $(SDOG) render $$f --size 1200x600 --out docs/datasets/$$n.png || exit 1; done
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 21x21 --size 1600x800 --out docs/vertex_types.png
+	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 41x41 --iters 60 --overlay dog-residual,handles,crease-curves --view 3d --size 1600x900 --out docs/dog_residual.png
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD) out

@@ -45,6 +45,7 @@ class CoarseMode : public Mode {
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
   void start_from(const Dofs& x) override;
   const Dofs& coarse_state() const;
+  const Dofs* coarse_positions() const override { return &coarse_state(); }
   const CoarseLevel& coarse_level() const { return *coarse_; }
 
  private:

@@ -91,6 +91,14 @@ Fields fields(const DogProblem& problem, const Dofs& x) {
       const double len0 = (vertex_of(rest, a) - vertex_of(rest, b)).norm();
       out.edge_strain[q] = std::max(out.edge_strain[q], std::abs(len / len0 - 1));
     }
+  const CreaseStitching& st = mesh.stitching;
+  out.stitch_gap.assign(st.points.size(), 0.0);
+  const Eigen::MatrixX3d X = to_positions(x);
+  for (const auto& pair : st.pairs) {
+    const auto& copies = st.points[pair.point].copies;
+    const double gap = (DogMesh::position(X, copies[pair.a]) - DogMesh::position(X, copies[pair.b])).norm();
+    out.stitch_gap[pair.point] = std::max(out.stitch_gap[pair.point], gap);
+  }
   return out;
 }
 

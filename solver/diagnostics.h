@@ -28,6 +28,9 @@ struct Fields {
   std::vector<double> bending;            ///< per vertex: |r|^2 of its bending block
   std::vector<double> position_residual;  ///< per vertex: distance to its target (0 if free)
   std::vector<double> edge_strain;        ///< per quad: largest |length / rest - 1| of its edges
+  /// per crease point: max over its stitching pairs (a, b) of |p_a - p_b|, p = t x_v1 + (1 - t) x_v2
+  /// the position of a copy (its largest value is Diagnostics::stitch_gap_max)
+  std::vector<double> stitch_gap;
 };
 Fields fields(const DogProblem& problem, const Dofs& x);
 

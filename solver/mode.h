@@ -38,6 +38,9 @@ class Mode {
   /// the two-resolution modes) derives that state from x. Fresh modes of the other kinds need
   /// nothing: their multipliers and targets start from x in their first iteration.
   virtual void start_from(const Dofs& /*x*/) {}
+  /// The coarse DOG's current state for modes that step a coarse mesh (coarse, twolevel), else
+  /// nullptr; pictures and the studio show it next to the fine mesh.
+  virtual const Dofs* coarse_positions() const { return nullptr; }
 };
 
 }  // namespace sdog

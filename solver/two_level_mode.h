@@ -38,6 +38,7 @@ class TwoLevelMode : public Mode {
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
   void start_from(const Dofs& x) override;
   const Dofs& coarse_state() const { return coarse_.state(); }
+  const Dofs* coarse_positions() const override { return &coarse_.state(); }
   const CoarseLevel& coarse_level() const { return coarse_; }
 
  private:

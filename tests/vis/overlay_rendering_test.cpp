@@ -1,0 +1,162 @@
+// Every overlay rendered offscreen through sdog::vis (run under xvfb-run) and compared with its
+// baseline in tests/baselines/ (overlay_NAME.png, 640x360); see tests/baselines/README.md.
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "tests/test_support.h"
+#include "tests/vis/image_compare.h"
+#include "tests/vis/scene_fixture.h"
+#include "ui/vis/palette.h"
+#include "ui/vis/picture.h"
+
+namespace sdog {
+namespace {
+
+using test::pixels_near;
+
+enum class Run { Rest, RestWithTargets, Standard, TwoLevel };
+
+struct OverlayCase {
+  const char* baseline;
+  std::vector<vis::Layer> layers;
+  vis::View view;
+  bool coarse;
+  Run run;
+};
+
+std::ostream& operator<<(std::ostream& os, const OverlayCase& c) { return os << c.baseline; }
+
+const vis::SceneState& state_of(Run run) {
+  static const vis::SceneState rest = vis::rest_scene_state(test::arcs_model());
+  switch (run) {
+    case Run::Standard:
+      return test::arcs_standard_state();
+    case Run::TwoLevel:
+      return test::arcs_twolevel_state();
+    case Run::RestWithTargets:
+      return test::arcs_rest_state_with_targets();
+    default:
+      return rest;
+  }
+}
+
+std::string render(const OverlayCase& c, const std::string& file, bool transparent = false) {
+  vis::PictureOptions options;
+  options.layers = c.layers;
+  options.scene = {c.view, c.coarse, 0};
+  options.size = {640, 360};
+  options.transparent = transparent;
+  const std::string path = test::temp_dir(std::string("overlay_") + c.baseline) + "/" + file;
+  vis::render_picture(test::arcs_model(), state_of(c.run), options, path);
+  return path;
+}
+
+using vis::Layer;
+using vis::View;
+
+// Each overlay alone (plus crease curves where the picture needs them to be read), in the view
+// where it says the most.
+const OverlayCase kCases[] = {
+    {"overlay_vertex_types", {Layer::VertexTypes, Layer::CreaseCurves, Layer::Wireframe}, View::SideBySide, false, Run::Rest},
+    {"overlay_links", {Layer::Links, Layer::VertexTypes}, View::ThreeD, true, Run::TwoLevel},
+    {"overlay_patches", {Layer::Patches, Layer::CreaseCurves}, View::Flat, false, Run::Rest},
+    {"overlay_dog_residual", {Layer::DogResidual}, View::ThreeD, false, Run::Standard},
+    {"overlay_edge_strain", {Layer::EdgeStrain}, View::ThreeD, false, Run::Standard},
+    {"overlay_stitch_gap", {Layer::StitchGap, Layer::CreaseCurves}, View::ThreeD, false, Run::Standard},
+    {"overlay_bending", {Layer::Bending}, View::ThreeD, false, Run::Standard},
+    {"overlay_handles", {Layer::Handles, Layer::Wireframe}, View::ThreeD, false, Run::RestWithTargets},
+    {"overlay_crease_curves", {Layer::CreaseCurves}, View::ThreeD, false, Run::Standard},
+    {"overlay_wireframe", {Layer::Wireframe}, View::ThreeD, false, Run::Standard},
+    {"overlay_patches_side_by_side", {Layer::Patches}, View::SideBySide, false, Run::Rest},
+    {"overlay_dog_residual_flat", {Layer::DogResidual, Layer::CreaseCurves}, View::Flat, false, Run::Standard},
+};
+
+const OverlayCase& find_case(const std::string& baseline) {
+  for (const auto& c : kCases)
+    if (baseline == c.baseline) return c;
+  throw std::logic_error("no case " + baseline);
+}
+
+struct OverlayRendering : ::testing::TestWithParam<OverlayCase> {};
+
+TEST_P(OverlayRendering, MatchesBaseline) {
+  const OverlayCase& c = GetParam();
+  const std::string path = render(c, "picture.png");
+  auto img = test::read_png(path);
+  int dims[3];
+  img->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 640);
+  EXPECT_EQ(dims[1], 360);
+  const std::string msg = test::compare_with_baseline(path, c.baseline);
+  EXPECT_TRUE(msg.empty()) << msg;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryOverlay, OverlayRendering, ::testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.baseline).substr(8); });
+
+TEST(OverlayRendering, EveryOverlayHasABaselineCase) {
+  for (Layer l : vis::all_layers()) {
+    bool found = false;
+    for (const auto& c : kCases) found |= c.layers.front() == l;
+    EXPECT_TRUE(found) << vis::layer_name(l);
+  }
+}
+
+TEST(OverlayRendering, LayerColoursAppear) {
+  const std::string types = render(find_case("overlay_vertex_types"), "types.png");
+  auto img = test::read_png(types);
+  for (VertexType t : {VertexType::Link, VertexType::I, VertexType::X, VertexType::CoarseOnly})
+    EXPECT_GT(pixels_near(img, vis::vertex_type_color(t)), 20) << to_string(t);
+  EXPECT_GT(pixels_near(img, vis::kCreasePointColor), 20);
+  auto handles = test::read_png(render(find_case("overlay_handles"), "handles.png"));
+  EXPECT_GT(pixels_near(handles, vis::kHandleColor), 10);
+  EXPECT_GT(pixels_near(handles, vis::kAngleSiteColor), 10);
+  auto patches = test::read_png(render(find_case("overlay_patches"), "patches.png"));
+  for (int p = 0; p < test::arcs_model().fine.patch_count(); ++p)
+    EXPECT_GT(pixels_near(patches, vis::patch_color(p)), 200) << "patch " << p;
+}
+
+// The comparison must be able to fail: a picture with a different colour layer, one with the
+// handles missing and one with only the thin crease lines missing do not pass as the baseline;
+// the new image and the difference are kept.
+TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
+  namespace fs = std::filesystem;
+  if (const char* update = std::getenv("SDOG_UPDATE_BASELINES"); update && std::string(update) == "1")
+    GTEST_SKIP() << "SDOG_UPDATE_BASELINES=1: every comparison passes";
+  const std::string dir = test::temp_dir("wrong_picture");
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_dog_residual.png", dir + "/overlay_dog_residual.png");
+  OverlayCase bending = find_case("overlay_bending");
+  const std::string msg = test::compare_with_baseline(render(bending, "bending.png"), "overlay_dog_residual", {}, dir);
+  EXPECT_FALSE(msg.empty());
+  EXPECT_TRUE(fs::exists(dir + "/overlay_dog_residual.new.png"));
+  EXPECT_TRUE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
+
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_handles.png", dir + "/overlay_handles.png");
+  OverlayCase no_handles = find_case("overlay_handles");
+  no_handles.layers = {Layer::Wireframe};
+  EXPECT_FALSE(test::compare_with_baseline(render(no_handles, "no_handles.png"), "overlay_handles", {}, dir).empty());
+
+  // A thin layer missing (the crease lines and points of the vertex-type picture) is caught too.
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_stitch_gap.png", dir + "/overlay_stitch_gap.png");
+  OverlayCase no_creases = find_case("overlay_stitch_gap");
+  no_creases.layers = {Layer::StitchGap};
+  EXPECT_FALSE(test::compare_with_baseline(render(no_creases, "no_creases.png"), "overlay_stitch_gap", {}, dir).empty());
+
+  // The same picture again passes and clears what a failure kept.
+  EXPECT_EQ(test::compare_with_baseline(render(find_case("overlay_dog_residual"), "residual.png"), "overlay_dog_residual", {}, dir), "");
+  EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.new.png"));
+  EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
+}
+
+TEST(OverlayRendering, TransparentBackground) {
+  auto img = test::read_png(render(find_case("overlay_dog_residual"), "transparent.png", true));
+  ASSERT_EQ(img->GetNumberOfScalarComponents(), 4);
+  EXPECT_EQ(img->GetScalarComponentAsDouble(2, 2, 0, 3), 0);
+}
+
+}  // namespace
+}  // namespace sdog

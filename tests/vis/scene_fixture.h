@@ -1,0 +1,54 @@
+#pragma once
+// The model and states the scene tests draw, computed once per test executable:
+// four_corner_arcs.svg at 21x21 at rest (also with the run's constraints), after 40 iterations of the standard mode (corners
+// scenario plus a 60 degree fold of crease 0, so that handles and angle sites show), and after 40
+// iterations of the twolevel mode (a moving coarse mesh for the links).
+#include "geometry/dog_model.h"
+#include "solver/run_config.h"
+#include "tests/test_support.h"
+#include "ui/vis/scene_state.h"
+
+namespace sdog::test {
+
+inline const DogModel& arcs_model() {
+  static const DogModel model = build_dog_model(read_crease_pattern(dataset("four_corner_arcs.svg")), {21, 21});
+  return model;
+}
+
+inline RunConfig arcs_run_config() {
+  RunConfig config;
+  config.scenario = "corners";
+  config.iterations = 40;
+  config.hold = 0;
+  AngleSpec fold;
+  fold.path = "test";
+  fold.curve = 0;
+  fold.end_degrees = 60;
+  config.angles.push_back(fold);
+  return config;
+}
+
+inline const vis::SceneState& arcs_standard_state() {
+  static const vis::SceneState state = vis::run_scene_state(arcs_model(), "standard", arcs_run_config());
+  return state;
+}
+
+/// The flat sheet with the constraints of the standard run at their final targets.
+inline const vis::SceneState& arcs_rest_state_with_targets() {
+  static const vis::SceneState state = [] {
+    const Scenario scenario = make_scenario(arcs_run_config(), arcs_model().fine);
+    return vis::rest_scene_state(arcs_model(), &scenario);
+  }();
+  return state;
+}
+
+inline const vis::SceneState& arcs_twolevel_state() {
+  static const vis::SceneState state = [] {
+    RunConfig config = arcs_run_config();
+    config.angles.clear();  // the coarse level does not carry angle constraints
+    return vis::run_scene_state(arcs_model(), "twolevel", config);
+  }();
+  return state;
+}
+
+}  // namespace sdog::test

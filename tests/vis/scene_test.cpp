@@ -1,0 +1,288 @@
+// The data behind the scene's layers (no picture is rendered here): one line per link vertex, the
+// log-scaled residuals, the stitch gaps, the handles, one colour layer at a time, legends that
+// follow their layers, updates that keep the actors.
+#include <gtest/gtest.h>
+#include <vtkActor2DCollection.h>
+#include <vtkActorCollection.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProp.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/errors.h"
+#include "solver/diagnostics.h"
+#include "tests/vis/scene_fixture.h"
+#include "ui/vis/camera.h"
+#include "ui/vis/layers.h"
+#include "ui/vis/mesh_view.h"
+#include "ui/vis/scene.h"
+
+namespace sdog {
+namespace {
+
+using test::arcs_model;
+using test::arcs_standard_state;
+using test::arcs_twolevel_state;
+
+struct SceneTest : ::testing::Test {
+  vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
+};
+
+TEST_F(SceneTest, LinksLayerHasOneLinePerLinkVertexFromFineToCoarseTwin) {
+  const DogModel& m = arcs_model();
+  vis::Scene scene(m, renderer, {vis::View::ThreeD, true});
+  scene.update(arcs_twolevel_state());
+  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Links));
+  ASSERT_NE(links, nullptr);
+  ASSERT_EQ(links->GetNumberOfLines(), m.map.link_count);
+  const auto& s = arcs_twolevel_state();
+  ASSERT_EQ(s.coarse.rows(), m.coarse.vertex_count());
+  int k = 0;
+  double moved = 0;
+  for (int v = 0; v < m.fine.vertex_count(); ++v) {
+    const int c = m.map.fine_to_coarse[v];
+    if (c < 0) continue;
+    double a[3], b[3];
+    links->GetPoint(2 * k, a);
+    links->GetPoint(2 * k + 1, b);
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_DOUBLE_EQ(a[d], s.fine(v, d));
+      EXPECT_DOUBLE_EQ(b[d], s.coarse(c, d));
+    }
+    moved = std::max(moved, (Eigen::Vector3d(a[0], a[1], a[2]) - Eigen::Vector3d(b[0], b[1], b[2])).norm());
+    ++k;
+  }
+  EXPECT_GT(moved, 1e-3) << "the twolevel run should leave fine and coarse twins apart";
+}
+
+TEST_F(SceneTest, SideBySideLinksEndOnTheShiftedCoarseMesh) {
+  const DogModel& m = arcs_model();
+  vis::Scene scene(m, renderer, {vis::View::SideBySide, false});
+  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Links));
+  const double shift = 1.12 * (m.fine.xs.back() - m.fine.xs.front());
+  double a[3], b[3];
+  links->GetPoint(0, a);
+  links->GetPoint(1, b);
+  EXPECT_NEAR(b[0] - a[0], shift, 1e-9);  // at rest a link vertex and its twin coincide
+  EXPECT_NEAR(b[1], a[1], 1e-12);
+}
+
+TEST_F(SceneTest, LogResidualArrayIsLog10OfTheResiduals) {
+  const DogModel& m = arcs_model();
+  vis::Scene scene(m, renderer);
+  const vis::SceneState& s = arcs_standard_state();
+  scene.update(s);
+  vtkDataArray* log_r = scene.layer_data(vis::Layer::DogResidual)->GetPointData()->GetArray("log10_dog_residual");
+  ASSERT_NE(log_r, nullptr);
+  ASSERT_EQ(log_r->GetNumberOfTuples(), m.fine.vertex_count());
+  int above_floor = 0;
+  for (int v = 0; v < m.fine.vertex_count(); ++v) {
+    const double r = s.fields.dog_residual[v];
+    if (r >= vis::kResidualFloor) {
+      EXPECT_NEAR(log_r->GetTuple1(v), std::log10(r), 1e-12) << v;
+      ++above_floor;
+    } else {
+      EXPECT_EQ(log_r->GetTuple1(v), -10) << v;
+    }
+  }
+  EXPECT_GT(above_floor, m.fine.vertex_count() / 4) << "a run mid-way leaves residuals above 1e-10";
+  EXPECT_EQ(vis::log10_residuals({1e-3, 0, 1e-12, 2.0}), (std::vector<double>{-3, -10, -10, std::log10(2.0)}));
+}
+
+TEST_F(SceneTest, StitchGapPerCreasePointIsTheDistanceBetweenCopies) {
+  const DogModel& m = arcs_model();
+  const vis::SceneState& s = arcs_standard_state();
+  ASSERT_EQ(s.fields.stitch_gap.size(), m.fine.stitching.points.size());
+  // The largest per-point gap is the run's stitch_gap_max.
+  DogProblem problem(m.fine, m.fine_topology);
+  const Dofs x = to_dofs(s.fine);
+  const double gap_max = *std::max_element(s.fields.stitch_gap.begin(), s.fields.stitch_gap.end());
+  EXPECT_NEAR(gap_max, diagnose(problem, x).stitch_gap_max, 1e-12);
+  EXPECT_GT(gap_max, 1e-4);
+  // Point by point, against the copies' positions.
+  for (size_t k = 0; k < m.fine.stitching.points.size(); ++k) {
+    const auto& copies = m.fine.stitching.points[k].copies;
+    double worst = 0;
+    for (size_t i = 0; i + 1 < copies.size(); ++i)
+      worst = std::max(worst, (DogMesh::position(s.fine, copies[i]) - DogMesh::position(s.fine, copies[i + 1])).norm());
+    EXPECT_NEAR(s.fields.stitch_gap[k], worst, 1e-12) << k;
+  }
+  vis::Scene scene(m, renderer);
+  scene.update(s);
+  vtkDataSet* glyphs = scene.layer_data(vis::Layer::StitchGap);
+  ASSERT_EQ(glyphs->GetNumberOfPoints(), static_cast<vtkIdType>(m.fine.stitching.points.size()));
+  vtkDataArray* radius = glyphs->GetPointData()->GetArray("radius");
+  for (size_t k = 0; k < s.fields.stitch_gap.size(); ++k)
+    EXPECT_NEAR(radius->GetTuple1(k), 0.15 + 0.45 * s.fields.stitch_gap[k] / gap_max, 1e-12);
+}
+
+TEST_F(SceneTest, HandlesJoinEachHandleToItsTarget) {
+  const DogModel& m = arcs_model();
+  const vis::SceneState& s = arcs_standard_state();
+  ASSERT_EQ(s.constraints.handles.size(), 2u);  // the corners scenario: a held, c dragged
+  EXPECT_GT(s.constraints.angle_sites.size(), 0u);
+  vis::Scene scene(m, renderer);
+  scene.update(s);
+  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Handles));
+  ASSERT_EQ(lines->GetNumberOfLines(), 2);
+  for (int k = 0; k < 2; ++k) {
+    double h[3], t[3];
+    lines->GetPoint(2 * k, h);
+    lines->GetPoint(2 * k + 1, t);
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_DOUBLE_EQ(h[d], s.fine(s.constraints.handles[k].vertex, d));
+      EXPECT_DOUBLE_EQ(t[d], s.constraints.handles[k].target[d]);
+    }
+  }
+}
+
+TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {
+  vis::Scene scene(arcs_model(), renderer);
+  scene.set_layer(vis::Layer::DogResidual, true);
+  scene.set_layer(vis::Layer::Handles, true);
+  scene.set_layer(vis::Layer::StitchGap, true);
+  EXPECT_EQ(scene.colour_layer(), vis::Layer::DogResidual);
+  scene.set_layer(vis::Layer::Bending, true);
+  EXPECT_FALSE(scene.layer_on(vis::Layer::DogResidual));
+  EXPECT_TRUE(scene.layer_on(vis::Layer::Bending));
+  EXPECT_TRUE(scene.layer_on(vis::Layer::Handles));  // not colour layers: untouched
+  EXPECT_TRUE(scene.layer_on(vis::Layer::StitchGap));
+  EXPECT_EQ(scene.colour_layer(), vis::Layer::Bending);
+  EXPECT_FALSE(scene.legend_prop(vis::Layer::DogResidual)->GetVisibility());
+  EXPECT_TRUE(scene.legend_prop(vis::Layer::Bending)->GetVisibility());
+  scene.set_layer(vis::Layer::Bending, false);
+  EXPECT_FALSE(scene.colour_layer().has_value());
+  EXPECT_EQ(scene.layers_on(), (std::vector<vis::Layer>{vis::Layer::StitchGap, vis::Layer::Handles}));
+}
+
+TEST_F(SceneTest, EveryLayerButWireframeHasALegendShownWithIt) {
+  vis::Scene scene(arcs_model(), renderer);
+  for (vis::Layer l : vis::all_layers()) {
+    vtkProp* legend = scene.legend_prop(l);
+    if (l == vis::Layer::Wireframe) {
+      EXPECT_EQ(legend, nullptr);
+      continue;
+    }
+    ASSERT_NE(legend, nullptr) << vis::layer_name(l);
+    EXPECT_FALSE(legend->GetVisibility()) << vis::layer_name(l);
+    scene.set_layer(l, true);
+    EXPECT_TRUE(legend->GetVisibility()) << vis::layer_name(l);
+    scene.set_layer(l, false);
+    EXPECT_FALSE(legend->GetVisibility()) << vis::layer_name(l);
+  }
+}
+
+TEST_F(SceneTest, UpdateKeepsTheActorsAndMovesThePoints) {
+  const DogModel& m = arcs_model();
+  vis::Scene scene(m, renderer, {vis::View::ThreeD, true});
+  for (vis::Layer l : {vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::StitchGap, vis::Layer::Links})
+    scene.set_layer(l, true);
+  const int actors = renderer->GetActors()->GetNumberOfItems();
+  const int props2d = renderer->GetActors2D()->GetNumberOfItems();
+  vtkDataSet* grid = scene.layer_data(vis::Layer::Wireframe);
+  for (int i = 0; i < 3; ++i) {
+    scene.update(i % 2 ? vis::rest_scene_state(m) : arcs_standard_state());
+    EXPECT_EQ(renderer->GetActors()->GetNumberOfItems(), actors);
+    EXPECT_EQ(renderer->GetActors2D()->GetNumberOfItems(), props2d);
+    EXPECT_EQ(scene.layer_data(vis::Layer::Wireframe), grid);
+  }
+  double p[3];
+  grid->GetPoint(m.fine.vertex_count() - 1, p);
+  EXPECT_DOUBLE_EQ(p[2], arcs_standard_state().fine(m.fine.vertex_count() - 1, 2));
+  // The flat view draws the rest positions whatever the state.
+  scene.set_options({vis::View::Flat, false});
+  grid->GetPoint(m.fine.vertex_count() - 1, p);
+  EXPECT_DOUBLE_EQ(p[2], 0);
+}
+
+TEST_F(SceneTest, SceneRemovesItsActorsWhenDestroyed) {
+  {
+    vis::Scene scene(arcs_model(), renderer);
+    EXPECT_GT(renderer->GetActors()->GetNumberOfItems(), 0);
+  }
+  EXPECT_EQ(renderer->GetActors()->GetNumberOfItems(), 0);
+  EXPECT_EQ(renderer->GetActors2D()->GetNumberOfItems(), 0);
+}
+
+TEST_F(SceneTest, StateOfTheWrongSizeIsRejected) {
+  vis::Scene scene(arcs_model(), renderer);
+  vis::SceneState s = vis::rest_scene_state(arcs_model());
+  s.fields.bending.pop_back();
+  EXPECT_THROW(scene.update(s), std::invalid_argument);
+  s = vis::rest_scene_state(arcs_model());
+  s.constraints.handles.push_back({arcs_model().fine.vertex_count(), Eigen::Vector3d::Zero()});
+  EXPECT_THROW(scene.update(s), std::invalid_argument);
+}
+
+TEST(Layers, NamesParseAndUnknownOnesListTheKnown) {
+  EXPECT_EQ(vis::all_layers().size(), 10u);
+  for (vis::Layer l : vis::all_layers()) EXPECT_EQ(vis::parse_layers(vis::layer_name(l)), std::vector<vis::Layer>{l});
+  EXPECT_EQ(vis::parse_layers("dog-residual,handles,links"),
+            (std::vector<vis::Layer>{vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::Links}));
+  try {
+    vis::parse_layers("vertex-types,residual");
+    FAIL() << "no exception";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown overlay 'residual'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(vis::known_layers()), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(vis::parse_layers("bending,patches"), UsageError);  // two colour layers
+  EXPECT_THROW(vis::parse_layers("links,links"), UsageError);
+  EXPECT_THROW(vis::parse_layers(""), UsageError);
+  EXPECT_EQ(vis::parse_view("side-by-side"), vis::View::SideBySide);
+  EXPECT_THROW(vis::parse_view("top"), UsageError);
+}
+
+TEST(Camera, DefaultCamerasAreFixedFunctionsOfTheBounds) {
+  const vis::Bounds b{0, 20, 0, 10, 0, 0};
+  const vis::CameraPose top = vis::top_view_camera(b, 2.0);
+  EXPECT_TRUE(top.parallel);
+  EXPECT_EQ(top.focal_point, Eigen::Vector3d(10, 5, 0));
+  EXPECT_EQ(top.view_up, Eigen::Vector3d(0, 1, 0));
+  // 20 units wide in 90% of the drawing area (0.75 of a viewport twice as wide as high).
+  EXPECT_NEAR(top.parallel_scale, 20 / (2 * 0.9 * 2.0 * 0.75), 1e-12);
+  const vis::CameraPose d3 = vis::three_d_camera(b, 2.0);
+  EXPECT_FALSE(d3.parallel);
+  const Eigen::Vector3d dir = (d3.position - d3.focal_point).normalized();
+  EXPECT_NEAR((dir - Eigen::Vector3d(0.9, -1.2, 1).normalized()).norm(), 0, 1e-12);
+}
+
+TEST(Camera, SavedCameraLoadsBackAndBadFilesSayWhy) {
+  const std::string dir = test::temp_dir("camera");
+  vis::CameraPose pose = vis::three_d_camera({0, 20, 0, 10, 0, 3}, 1.5);
+  pose.view_angle = 25;
+  vis::save_camera(pose, dir + "/camera.json");
+  const vis::CameraPose back = vis::load_camera(dir + "/camera.json");
+  EXPECT_EQ(back.position, pose.position);
+  EXPECT_EQ(back.focal_point, pose.focal_point);
+  EXPECT_EQ(back.view_up, pose.view_up);
+  EXPECT_EQ(back.view_angle, 25);
+  EXPECT_EQ(back.parallel, pose.parallel);
+  EXPECT_EQ(back.window_center, pose.window_center);
+  // Applied to a VTK camera and read back.
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  vis::apply_camera_pose(back, renderer->GetActiveCamera());
+  const vis::CameraPose read = vis::camera_pose(renderer->GetActiveCamera());
+  EXPECT_NEAR((read.position - pose.position).norm(), 0, 1e-9);
+  EXPECT_NEAR(read.window_center.x(), pose.window_center.x(), 1e-12);
+
+  const std::string bad = test::write_file(dir, "bad.json", R"({"position": [0, 0, 1]})");
+  try {
+    vis::load_camera(bad);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad + ": $.focal_point: missing"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(vis::load_camera(test::write_file(dir, "text.json", "not json")), InputError);
+  EXPECT_THROW(vis::load_camera(dir + "/missing.json"), InputError);
+  EXPECT_THROW(vis::save_camera(pose, test::write_file(dir, "file", "x") + "/sub/camera.json"), OutputError);
+}
+
+}  // namespace
+}  // namespace sdog

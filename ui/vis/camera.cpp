@@ -1,0 +1,142 @@
+#include "ui/vis/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "geometry/atomic_output.h"
+#include "geometry/errors.h"
+#include "ui/vis/legends.h"
+
+namespace sdog::vis {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The drawing area: the viewport left of the legend column, its centre in viewport units [-1, 1].
+constexpr double kDrawingWidth = kLegendColumnLeft;
+const Eigen::Vector2d kDrawingCentre{kDrawingWidth - 1, 0};
+
+Eigen::Vector3d centre(const Bounds& b) { return {0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])}; }
+
+// The camera's window centre that puts the focal point in the middle of the drawing area.
+Eigen::Vector2d drawing_window_center() { return -kDrawingCentre; }
+
+Eigen::Vector3d vector3(const nlohmann::json& json, const char* key, const std::string& source) {
+  const auto& v = json.at(key);
+  if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+    throw InputError(source + ": $." + key + ": expected an array of 3 numbers");
+  return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+}
+
+}  // namespace
+
+CameraPose top_view_camera(const Bounds& b, double aspect) {
+  CameraPose pose;
+  const Eigen::Vector3d c = centre(b);
+  const double w = std::max(b[1] - b[0], 1e-9), h = std::max(b[3] - b[2], 1e-9);
+  pose.parallel = true;
+  pose.parallel_scale = std::max(h / (2 * 0.85), w / (2 * 0.9 * aspect * kDrawingWidth));
+  pose.focal_point = c;
+  pose.position = c + Eigen::Vector3d(0, 0, 4 * std::max({w, h, b[5] - b[4]}));
+  pose.view_up = {0, 1, 0};
+  pose.window_center = drawing_window_center();
+  return pose;
+}
+
+CameraPose three_d_camera(const Bounds& b, double aspect) {
+  CameraPose pose;
+  const Eigen::Vector3d c = centre(b);
+  const double radius = std::max(0.5 * Eigen::Vector3d(b[1] - b[0], b[3] - b[2], b[5] - b[4]).norm(), 1e-9);
+  const double half_y = 0.5 * pose.view_angle * kPi / 180;
+  const double half_x = std::atan(std::tan(half_y) * aspect * kDrawingWidth);
+  const double distance = 1.02 * radius / std::sin(std::min(half_x, half_y));
+  pose.focal_point = c;
+  pose.position = c + distance * Eigen::Vector3d(0.9, -1.2, 1).normalized();
+  pose.view_up = {0, 0, 1};
+  pose.window_center = drawing_window_center();
+  return pose;
+}
+
+CameraPose camera_pose(vtkCamera* camera) {
+  CameraPose pose;
+  camera->GetPosition(pose.position.data());
+  camera->GetFocalPoint(pose.focal_point.data());
+  camera->GetViewUp(pose.view_up.data());
+  pose.view_angle = camera->GetViewAngle();
+  pose.parallel = camera->GetParallelProjection() != 0;
+  pose.parallel_scale = camera->GetParallelScale();
+  camera->GetWindowCenter(pose.window_center.data());
+  return pose;
+}
+
+void apply_camera_pose(const CameraPose& pose, vtkCamera* camera) {
+  camera->SetFocalPoint(pose.focal_point.data());
+  camera->SetPosition(pose.position.data());
+  camera->SetViewUp(pose.view_up.data());
+  camera->SetViewAngle(pose.view_angle);
+  camera->SetParallelProjection(pose.parallel);
+  camera->SetParallelScale(pose.parallel_scale);
+  camera->SetWindowCenter(pose.window_center.x(), pose.window_center.y());
+  camera->OrthogonalizeViewUp();
+}
+
+nlohmann::json to_json(const CameraPose& p) {
+  auto array = [](const auto& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
+    return a;
+  };
+  return {{"position", array(p.position)},      {"focal_point", array(p.focal_point)},
+          {"view_up", array(p.view_up)},        {"view_angle", p.view_angle},
+          {"parallel", p.parallel},             {"parallel_scale", p.parallel_scale},
+          {"window_center", array(p.window_center)}};
+}
+
+CameraPose camera_pose_from_json(const nlohmann::json& json, const std::string& source) {
+  if (!json.is_object()) throw InputError(source + ": expected a JSON object with the camera's keys");
+  for (const char* key :
+       {"position", "focal_point", "view_up", "view_angle", "parallel", "parallel_scale", "window_center"})
+    if (!json.contains(key)) throw InputError(source + ": $." + key + ": missing");
+  CameraPose p;
+  p.position = vector3(json, "position", source);
+  p.focal_point = vector3(json, "focal_point", source);
+  p.view_up = vector3(json, "view_up", source);
+  if (!json["view_angle"].is_number() || !(json["view_angle"].get<double>() > 0 && json["view_angle"].get<double>() < 180))
+    throw InputError(source + ": $.view_angle: expected degrees between 0 and 180");
+  p.view_angle = json["view_angle"].get<double>();
+  if (!json["parallel"].is_boolean()) throw InputError(source + ": $.parallel: expected true or false");
+  p.parallel = json["parallel"].get<bool>();
+  if (!json["parallel_scale"].is_number() || !(json["parallel_scale"].get<double>() > 0))
+    throw InputError(source + ": $.parallel_scale: expected a positive number");
+  p.parallel_scale = json["parallel_scale"].get<double>();
+  const auto& wc = json["window_center"];
+  if (!wc.is_array() || wc.size() != 2 || !wc[0].is_number() || !wc[1].is_number())
+    throw InputError(source + ": $.window_center: expected an array of 2 numbers");
+  p.window_center = {wc[0].get<double>(), wc[1].get<double>()};
+  if ((p.position - p.focal_point).norm() == 0)
+    throw InputError(source + ": $.position: the camera sits on its focal point");
+  if (p.view_up.norm() == 0) throw InputError(source + ": $.view_up: must not be zero");
+  return p;
+}
+
+void save_camera(const CameraPose& pose, const std::string& path) {
+  const std::filesystem::path target(path);
+  OutputSet out(target.has_parent_path() ? target.parent_path().string() : ".");
+  out.write_text(target.filename().string(), to_json(pose).dump(2) + "\n");
+  out.commit();
+}
+
+CameraPose load_camera(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot read the camera file");
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path + ": not JSON (" + e.what() + ")");
+  }
+  return camera_pose_from_json(json, path);
+}
+
+}  // namespace sdog::vis

@@ -1,0 +1,57 @@
+#pragma once
+// The legends of the layers, stacked from the top of a column at the right edge of the view: a
+// scalar bar for a scalar layer, a titled box of coloured squares for a categorical one.
+#include <vtkActor2D.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkScalarsToColors.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+
+#include <string>
+#include <vector>
+
+#include "ui/vis/palette.h"
+
+namespace sdog::vis {
+
+/// The legend column: normalized viewport x from `left` to 0.99.
+inline constexpr double kLegendColumnLeft = 0.75;
+
+struct LegendEntry {
+  std::string label;
+  Rgb color;
+};
+
+class Legend {
+ public:
+  /// A scalar bar of `lut` (shared: later changes of its range show) under `title`.
+  static Legend scalar_bar(const std::string& title, vtkScalarsToColors* lut);
+  /// Coloured squares with labels under `title`.
+  static Legend categories(const std::string& title, const std::vector<LegendEntry>& entries);
+
+  void add_to(vtkRenderer* renderer) const;
+  void remove_from(vtkRenderer* renderer) const;
+  void set_visible(bool visible) const;
+  bool visible() const;
+  /// Height in pixels at the font size (points = pixels here).
+  double height_pixels(int font) const;
+  /// Places the legend with its top edge at normalized viewport height `top` in the legend column
+  /// of a viewport `viewport_height` pixels high.
+  void place(double top, int viewport_height, int font) const;
+  vtkScalarBarActor* bar() const { return bar_; }
+  vtkLegendBoxActor* box() const { return box_; }
+
+ private:
+  vtkSmartPointer<vtkTextActor> title_;       // categories only
+  vtkSmartPointer<vtkLegendBoxActor> box_;    // categories only
+  vtkSmartPointer<vtkScalarBarActor> bar_;    // scalar bars only
+  int entries_ = 0;
+};
+
+/// Stacks the visible legends from the top of the column, in the order given; shrinks them
+/// evenly when they do not fit.
+void stack_legends(const std::vector<const Legend*>& legends, int viewport_height, int font);
+
+}  // namespace sdog::vis

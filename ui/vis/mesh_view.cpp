@@ -1,0 +1,194 @@
+#include "ui/vis/mesh_view.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+
+#include "ui/vis/palette.h"
+#include "ui/vis/vtk_meshes.h"
+
+namespace sdog::vis {
+namespace {
+
+vtkSmartPointer<vtkCellArray> vertex_cells(vtkIdType n) {
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  for (vtkIdType i = 0; i < n; ++i) verts->InsertNextCell(1, &i);
+  return verts;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& color) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(data);
+  mapper->SetColorModeToDirectScalars();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  actor->GetProperty()->SetLighting(false);
+  return actor;
+}
+
+std::vector<Eigen::Vector3d> crease_point_positions(const DogMesh& mesh, const Eigen::MatrixX3d& X) {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(mesh.stitching.points.size());
+  for (const auto& p : mesh.stitching.points) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto& c : p.copies) sum += DogMesh::position(X, c);
+    out.push_back(sum / static_cast<double>(p.copies.size()));
+  }
+  return out;
+}
+
+MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vtkRenderer* renderer)
+    : mesh_(mesh), renderer_(renderer) {
+  grid_ = quad_grid(mesh.V, mesh.F, {});
+  points_ = grid_->GetPoints();
+  surface_mapper_ = vtkSmartPointer<vtkDataSetMapper>::New();
+  surface_mapper_->SetInputData(grid_);
+  surface_mapper_->ScalarVisibilityOff();
+  surface_mapper_->InterpolateScalarsBeforeMappingOn();
+  surface_ = vtkSmartPointer<vtkActor>::New();
+  surface_->SetMapper(surface_mapper_);
+  surface_->GetProperty()->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
+  surface_->GetProperty()->SetEdgeColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
+  surface_->GetProperty()->SetAmbient(0.35);
+  surface_->GetProperty()->SetDiffuse(0.65);
+
+  // Vertex dots share the grid's points, so they follow every position update.
+  vertices_poly_ = vtkSmartPointer<vtkPolyData>::New();
+  vertices_poly_->SetPoints(points_);
+  vertices_poly_->SetVerts(vertex_cells(mesh.vertex_count()));
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("vertex_type_color");
+  rgb->SetNumberOfComponents(3);
+  for (int v = 0; v < mesh.vertex_count(); ++v) {
+    const Rgb c = types ? vertex_type_color((*types)[v]) : Rgb{0.4, 0.4, 0.4};
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+  }
+  vertices_poly_->GetPointData()->SetScalars(rgb);
+  vertex_actor_ = flat_actor(vertices_poly_, {0.4, 0.4, 0.4});
+  vertex_actor_->GetProperty()->RenderPointsAsSpheresOn();
+
+  // Crease lines and crease points share the crease points' coordinates.
+  crease_point_coords_ = vtkSmartPointer<vtkPoints>::New();
+  crease_point_coords_->SetDataTypeToDouble();
+  crease_point_coords_->SetNumberOfPoints(static_cast<vtkIdType>(mesh.stitching.points.size()));
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& c : mesh.stitching.curves) {
+    lines->InsertNextCell(static_cast<int>(c.points.size() + (c.closed && !c.points.empty() ? 1 : 0)));
+    for (int p : c.points) lines->InsertCellPoint(p);
+    if (c.closed && !c.points.empty()) lines->InsertCellPoint(c.points.front());
+  }
+  crease_lines_ = vtkSmartPointer<vtkPolyData>::New();
+  crease_lines_->SetPoints(crease_point_coords_);
+  crease_lines_->SetLines(lines);
+  crease_line_actor_ = flat_actor(crease_lines_, kCreaseLineColor);
+  crease_points_poly_ = vtkSmartPointer<vtkPolyData>::New();
+  crease_points_poly_->SetPoints(crease_point_coords_);
+  crease_points_poly_->SetVerts(vertex_cells(crease_point_coords_->GetNumberOfPoints()));
+  crease_point_actor_ = flat_actor(crease_points_poly_, kCreasePointColor);
+  crease_point_actor_->GetProperty()->RenderPointsAsSpheresOn();
+
+  for (vtkActor* a : actors()) renderer_->AddActor(a);
+  set_positions(mesh.V);
+  set_dot_size(6);
+  apply_visibility();
+}
+
+MeshView::~MeshView() {
+  for (vtkActor* a : actors()) renderer_->RemoveActor(a);
+}
+
+std::vector<vtkActor*> MeshView::actors() const {
+  return {surface_, crease_line_actor_, vertex_actor_, crease_point_actor_};
+}
+
+void MeshView::set_positions(const Eigen::MatrixX3d& X) {
+  for (Eigen::Index i = 0; i < X.rows(); ++i) points_->SetPoint(i, X(i, 0), X(i, 1), X(i, 2));
+  points_->Modified();
+  crease_positions_ = crease_point_positions(mesh_, X);
+  for (size_t k = 0; k < crease_positions_.size(); ++k)
+    crease_point_coords_->SetPoint(static_cast<vtkIdType>(k), crease_positions_[k].data());
+  crease_point_coords_->Modified();
+}
+
+void MeshView::set_offset(double dx) {
+  offset_ = dx;
+  for (vtkActor* a : actors()) a->SetPosition(dx, 0, 0);
+}
+
+void MeshView::set_filled(bool filled, const std::array<double, 3>& edge_color) {
+  filled_ = filled;
+  vtkProperty* p = surface_->GetProperty();
+  if (filled) {
+    p->SetRepresentationToSurface();
+    p->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
+    p->SetEdgeColor(edge_color[0], edge_color[1], edge_color[2]);
+    p->SetLighting(true);
+  } else {
+    p->SetRepresentationToWireframe();
+    p->SetColor(edge_color[0], edge_color[1], edge_color[2]);
+    p->SetLineWidth(2);
+    p->SetLighting(false);
+  }
+  apply_visibility();
+}
+
+void MeshView::set_visible(bool visible) {
+  visible_ = visible;
+  apply_visibility();
+}
+
+void MeshView::color_by(const char* array, bool cell_array, vtkScalarsToColors* lut) {
+  if (!array || !lut || !filled_) {
+    surface_mapper_->ScalarVisibilityOff();
+    return;
+  }
+  surface_mapper_->ScalarVisibilityOn();
+  if (cell_array)
+    surface_mapper_->SetScalarModeToUseCellFieldData();
+  else
+    surface_mapper_->SetScalarModeToUsePointFieldData();
+  surface_mapper_->SelectColorArray(array);
+  surface_mapper_->SetLookupTable(lut);
+  surface_mapper_->UseLookupTableScalarRangeOn();
+}
+
+void MeshView::set_vertices_visible(bool visible) {
+  vertices_ = visible;
+  apply_visibility();
+}
+void MeshView::set_crease_lines_visible(bool visible) {
+  crease_lines_on_ = visible;
+  apply_visibility();
+}
+void MeshView::set_crease_points_visible(bool visible) {
+  crease_points_ = visible;
+  apply_visibility();
+}
+void MeshView::set_edges_visible(bool visible) {
+  edges_ = visible;
+  apply_visibility();
+}
+
+void MeshView::set_dot_size(double pixels) {
+  vertex_actor_->GetProperty()->SetPointSize(static_cast<float>(pixels));
+  crease_point_actor_->GetProperty()->SetPointSize(static_cast<float>(0.8 * pixels));
+  crease_line_actor_->GetProperty()->SetLineWidth(static_cast<float>(std::max(1.5, 0.35 * pixels)));
+}
+
+void MeshView::apply_visibility() {
+  surface_->SetVisibility(visible_);
+  surface_->GetProperty()->SetEdgeVisibility(filled_ && edges_);
+  vertex_actor_->SetVisibility(visible_ && vertices_);
+  crease_line_actor_->SetVisibility(visible_ && crease_lines_on_);
+  crease_point_actor_->SetVisibility(visible_ && crease_points_);
+}
+
+}  // namespace sdog::vis

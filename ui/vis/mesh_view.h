@@ -1,0 +1,77 @@
+#pragma once
+// One DOG mesh in a scene: its surface (coloured by at most one array), its vertices as coloured
+// dots (vertex types), its crease polylines and crease points. Positions change in place
+// (set_positions), so the actors live as long as the view.
+#include <vtkActor.h>
+#include <vtkDataSetMapper.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkScalarsToColors.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "geometry/dog_mesh.h"
+#include "geometry/fine_coarse_map.h"
+
+namespace sdog::vis {
+
+/// An unlit actor drawing the poly data in `color`, or in its own RGB point or cell scalars.
+vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const std::array<double, 3>& color);
+
+/// Position of each crease point: the mean of its copies p = t x_v1 + (1 - t) x_v2 in X.
+std::vector<Eigen::Vector3d> crease_point_positions(const DogMesh& mesh, const Eigen::MatrixX3d& X);
+
+class MeshView {
+ public:
+  /// `types`: the vertex types of the mesh's vertices (nullptr without a map: grey dots). The
+  /// renderer must outlive the view; the actors are removed by the destructor.
+  MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vtkRenderer* renderer);
+  ~MeshView();
+  MeshView(const MeshView&) = delete;
+  MeshView& operator=(const MeshView&) = delete;
+
+  void set_positions(const Eigen::MatrixX3d& X);
+  /// Draws everything moved by (dx, 0, 0) (side-by-side view).
+  void set_offset(double dx);
+  double offset() const { return offset_; }
+  /// Filled surface, or only its edges in `edge_color` (a coarse mesh over the fine one).
+  void set_filled(bool filled, const std::array<double, 3>& edge_color);
+  void set_visible(bool visible);
+
+  /// Colours the surface by a point or cell array of the grid through `lut`; nullptr: plain.
+  void color_by(const char* array, bool cell_array, vtkScalarsToColors* lut);
+  void set_vertices_visible(bool visible);
+  void set_crease_lines_visible(bool visible);
+  void set_crease_points_visible(bool visible);
+  void set_edges_visible(bool visible);
+  /// Pixel size of the vertex and crease-point dots (crease lines follow).
+  void set_dot_size(double pixels);
+
+  vtkUnstructuredGrid* grid() const { return grid_; }
+  vtkPolyData* crease_lines() const { return crease_lines_; }
+  const std::vector<Eigen::Vector3d>& crease_points() const { return crease_positions_; }
+  vtkActor* surface_actor() const { return surface_; }
+  vtkActor* vertex_actor() const { return vertex_actor_; }
+
+ private:
+  std::vector<vtkActor*> actors() const;
+  void apply_visibility();
+  const DogMesh& mesh_;
+  vtkRenderer* renderer_;
+  double offset_ = 0;
+  bool visible_ = true, filled_ = true, vertices_ = false, crease_lines_on_ = false, crease_points_ = false,
+       edges_ = false;
+  vtkSmartPointer<vtkPoints> points_, crease_point_coords_;
+  vtkSmartPointer<vtkUnstructuredGrid> grid_;
+  vtkSmartPointer<vtkDataSetMapper> surface_mapper_;
+  vtkSmartPointer<vtkActor> surface_, vertex_actor_, crease_line_actor_, crease_point_actor_;
+  vtkSmartPointer<vtkPolyData> vertices_poly_, crease_lines_, crease_points_poly_;
+  std::vector<Eigen::Vector3d> crease_positions_;
+};
+
+}  // namespace sdog::vis

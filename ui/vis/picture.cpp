@@ -1,0 +1,40 @@
+#include "ui/vis/picture.h"
+
+#include <vtkRenderer.h>
+
+#include <algorithm>
+
+#include "geometry/errors.h"
+
+namespace sdog::vis {
+
+int picture_font_size(const ImageSize& size) { return std::clamp(size.height / 32, 10, 40); }
+
+void render_picture(const DogModel& model, const SceneState& state, const PictureOptions& options,
+                    const std::string& path) {
+  int colour_layers = 0;
+  for (Layer l : options.layers) colour_layers += is_colour_layer(l);
+  if (colour_layers > 1)
+    throw UsageError("a picture shows at most one of the overlays that colour the mesh (vertex-types, patches, "
+                     "dog-residual, edge-strain, bending)");
+  auto window = offscreen_window(options.size);
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(1, 1, 1);
+  if (options.transparent) renderer->SetBackgroundAlpha(0);
+  window->AddRenderer(renderer);
+
+  SceneOptions scene_options = options.scene;
+  if (scene_options.font_size <= 0) scene_options.font_size = picture_font_size(options.size);
+  Scene scene(model, renderer, scene_options);
+  scene.update(state);
+  for (Layer l : options.layers) scene.set_layer(l, true);
+  scene.set_caption(options.caption);
+  scene.reset_camera();
+  if (options.camera) {
+    apply_camera_pose(*options.camera, renderer->GetActiveCamera());
+    renderer->ResetCameraClippingRange();
+  }
+  save_png(window, path, options.transparent);
+}
+
+}  // namespace sdog::vis

@@ -1,0 +1,499 @@
+#include "ui/vis/scene.h"
+
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkGlyph3D.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/errors.h"
+#include "ui/vis/color_maps.h"
+#include "ui/vis/legends.h"
+#include "ui/vis/mesh_view.h"
+#include "ui/vis/palette.h"
+
+namespace sdog::vis {
+namespace {
+
+constexpr double kLogResidualLow = -10, kLogResidualHigh = -2;  // log10 of 1e-10 and 1e-2
+constexpr double kSideBySideShift = 1.12;                      // sheet widths
+constexpr double kPi = 3.14159265358979323846;
+
+// Replaces (or adds) a double array of the attributes, reusing its storage.
+void set_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values) {
+  auto* array = vtkDoubleArray::SafeDownCast(attributes->GetArray(name));
+  if (!array) {
+    auto fresh = vtkSmartPointer<vtkDoubleArray>::New();
+    fresh->SetName(name);
+    attributes->AddArray(fresh);
+    array = fresh;
+  }
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k) array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  array->Modified();
+}
+
+vtkSmartPointer<vtkPolyData> poly_data() {
+  auto p = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  p->SetPoints(points);
+  return p;
+}
+
+vtkSmartPointer<vtkTextActor> text_actor(int justification) {
+  auto t = vtkSmartPointer<vtkTextActor>::New();
+  t->GetTextProperty()->SetColor(kTextColor[0], kTextColor[1], kTextColor[2]);
+  t->GetTextProperty()->SetJustification(justification);
+  t->GetTextProperty()->SetVerticalJustificationToBottom();
+  return t;
+}
+
+void merge_bounds(Bounds& into, const double* b) {
+  if (b[0] > b[1]) return;  // empty
+  for (int k = 0; k < 3; ++k) {
+    into[2 * k] = std::min(into[2 * k], b[2 * k]);
+    into[2 * k + 1] = std::max(into[2 * k + 1], b[2 * k + 1]);
+  }
+}
+
+std::vector<double> quad_patches(const DogMesh& mesh) {
+  std::vector<double> patch(mesh.quad_count());
+  for (int q = 0; q < mesh.quad_count(); ++q) patch[q] = mesh.vertex_patch[mesh.F(q, 0)];
+  return patch;
+}
+
+void check_size(size_t got, int expected, const char* what) {
+  if (static_cast<int>(got) != expected)
+    throw std::invalid_argument(std::string("scene state: ") + what + " has " + std::to_string(got) +
+                                " entries, the model " + std::to_string(expected));
+}
+
+}  // namespace
+
+const char* view_name(View view) {
+  switch (view) {
+    case View::ThreeD:
+      return "3d";
+    case View::Flat:
+      return "flat";
+    case View::SideBySide:
+      return "side-by-side";
+  }
+  return "?";
+}
+
+View parse_view(const std::string& name) {
+  for (View v : {View::ThreeD, View::Flat, View::SideBySide})
+    if (name == view_name(v)) return v;
+  throw UsageError("unknown view '" + name + "' (known: 3d, flat, side-by-side)");
+}
+
+// The actors of the layers that are not part of a mesh view.
+struct Scene::Overlays {
+  vtkSmartPointer<vtkPolyData> links = poly_data();
+  vtkSmartPointer<vtkActor> links_actor = flat_actor(links, kLinkLineColor);
+
+  vtkSmartPointer<vtkPolyData> gaps = poly_data();
+  vtkSmartPointer<vtkLookupTable> gap_lut = heat_lut(0, 1);
+  vtkSmartPointer<vtkGlyph3D> glyphs = vtkSmartPointer<vtkGlyph3D>::New();
+  vtkSmartPointer<vtkActor> gap_actor;
+
+  // Handles: point 2k is handle k, point 2k + 1 its target; line k joins them.
+  vtkSmartPointer<vtkPolyData> handle_lines = poly_data();
+  vtkSmartPointer<vtkPolyData> handle_points = vtkSmartPointer<vtkPolyData>::New();
+  vtkSmartPointer<vtkPolyData> target_points = vtkSmartPointer<vtkPolyData>::New();
+  vtkSmartPointer<vtkPolyData> angle_sites = poly_data();
+  vtkSmartPointer<vtkActor> residual_actor = flat_actor(handle_lines, kResidualLineColor);
+  vtkSmartPointer<vtkActor> handle_actor = flat_actor(handle_points, kHandleColor);
+  vtkSmartPointer<vtkActor> target_actor = flat_actor(target_points, kTargetColor);
+  vtkSmartPointer<vtkActor> angle_actor = flat_actor(angle_sites, kAngleSiteColor);
+
+  vtkSmartPointer<vtkLookupTable> residual_lut = sequential_lut(kLogResidualLow, kLogResidualHigh);
+  vtkSmartPointer<vtkLookupTable> bending_lut = sequential_lut(0, 1);
+  vtkSmartPointer<vtkLookupTable> strain_lut = sequential_lut(0, 1);
+  vtkSmartPointer<vtkLookupTable> patch_lut;
+
+  vtkSmartPointer<vtkTextActor> fine_title = text_actor(VTK_TEXT_CENTERED);
+  vtkSmartPointer<vtkTextActor> coarse_title = text_actor(VTK_TEXT_CENTERED);
+  vtkSmartPointer<vtkTextActor> caption = text_actor(VTK_TEXT_LEFT);
+
+  std::map<Layer, Legend> legends;
+
+  Overlays() {
+    auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+    sphere->SetThetaResolution(16);
+    sphere->SetPhiResolution(12);
+    sphere->SetRadius(1);
+    glyphs->SetSourceConnection(sphere->GetOutputPort());
+    glyphs->SetInputData(gaps);
+    glyphs->SetScaleModeToScaleByScalar();
+    glyphs->SetColorModeToColorByScalar();
+    glyphs->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "radius");
+    glyphs->SetInputArrayToProcess(3, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "stitch_gap");
+    glyphs->OrientOff();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(glyphs->GetOutputPort());
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray("stitch_gap");
+    mapper->SetLookupTable(gap_lut);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->ScalarVisibilityOn();
+    gap_actor = vtkSmartPointer<vtkActor>::New();
+    gap_actor->SetMapper(mapper);
+    handle_points->SetPoints(handle_lines->GetPoints());
+    target_points->SetPoints(handle_lines->GetPoints());
+    for (vtkActor* a : {handle_actor.Get(), target_actor.Get(), angle_actor.Get()})
+      a->GetProperty()->RenderPointsAsSpheresOn();
+    residual_actor->GetProperty()->SetLineWidth(3);
+    links_actor->GetProperty()->SetLineWidth(1.5);
+    fine_title->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+    coarse_title->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+    caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    caption->SetPosition(0.01, 0.95);
+  }
+
+  std::vector<vtkActor*> actors() const {
+    return {links_actor, gap_actor, residual_actor, handle_actor, target_actor, angle_actor};
+  }
+  std::vector<vtkTextActor*> texts() const { return {fine_title, coarse_title, caption}; }
+};
+
+Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& options)
+    : model_(model), renderer_(renderer), options_(options), overlays_(std::make_unique<Overlays>()) {
+  fine_ = std::make_unique<MeshView>(model.fine, model.has_coarse ? &model.map.fine_type : nullptr, renderer);
+  if (model.has_coarse) coarse_ = std::make_unique<MeshView>(model.coarse, &model.map.coarse_type, renderer);
+  Overlays& o = *overlays_;
+  for (vtkActor* a : o.actors()) renderer_->AddActor(a);
+  for (vtkTextActor* t : o.texts()) renderer_->AddActor2D(t);
+
+  // Link lines: point 2k is fine link vertex k, point 2k + 1 its coarse twin.
+  if (model.has_coarse) {
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    vtkIdType next = 0;
+    for (int v = 0; v < model.fine.vertex_count(); ++v) {
+      if (model.map.fine_to_coarse[v] < 0) continue;
+      const vtkIdType ids[2] = {next, next + 1};
+      lines->InsertNextCell(2, ids);
+      next += 2;
+    }
+    o.links->GetPoints()->SetNumberOfPoints(next);
+    o.links->SetLines(lines);
+  }
+
+  const std::string fine_title = "fine " + model.fine_res.str() + ": " + std::to_string(model.fine.vertex_count()) +
+                                 " vertices, " + std::to_string(model.fine.patch_count()) + " patches";
+  o.fine_title->SetInput(fine_title.c_str());
+  if (model.has_coarse) {
+    const std::string coarse_title = "coarse " + model.coarse_res.str() + ": " +
+                                     std::to_string(model.coarse.vertex_count()) + " vertices";
+    o.coarse_title->SetInput(coarse_title.c_str());
+  }
+
+  o.patch_lut = categorical_lut(model.fine.patch_count());
+  std::vector<LegendEntry> types;
+  if (model.has_coarse)
+    types = {{"link", vertex_type_color(VertexType::Link)},
+             {"I: on a coarse edge", vertex_type_color(VertexType::I)},
+             {"X: in a coarse quad", vertex_type_color(VertexType::X)},
+             {"coarse-only", vertex_type_color(VertexType::CoarseOnly)}};
+  else
+    types = {{"vertex (no coarse mesh)", {0.4, 0.4, 0.4}}};
+  types.push_back({"crease point", kCreasePointColor});
+  std::vector<LegendEntry> patches;
+  for (int p = 0; p < model.fine.patch_count(); ++p) patches.push_back({"patch " + std::to_string(p), patch_color(p)});
+  o.legends.emplace(Layer::VertexTypes, Legend::categories("vertex type", types));
+  o.legends.emplace(Layer::Links, Legend::categories("links", {{"link to coarse twin", kLinkLineColor}}));
+  o.legends.emplace(Layer::Patches, Legend::categories("patches", patches));
+  o.legends.emplace(Layer::DogResidual, Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
+  o.legends.emplace(Layer::EdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
+  o.legends.emplace(Layer::StitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
+  o.legends.emplace(Layer::Bending, Legend::scalar_bar("bending", o.bending_lut));
+  o.legends.emplace(Layer::Handles, Legend::categories("constraints", {{"handle", kHandleColor},
+                                                                        {"target", kTargetColor},
+                                                                        {"handle to target", kResidualLineColor},
+                                                                        {"angle constraint", kAngleSiteColor}}));
+  o.legends.emplace(Layer::CreaseCurves,
+                    Legend::categories("creases", {{"crease", kCreaseLineColor}, {"crease point", kCreasePointColor}}));
+  for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
+
+  // Patches do not change: their cell arrays are set once.
+  set_array(fine_->grid()->GetCellData(), "patch", quad_patches(model.fine));
+  if (coarse_) set_array(coarse_->grid()->GetCellData(), "patch", quad_patches(model.coarse));
+  for (Layer l : all_layers()) on_[l] = false;
+  update(rest_scene_state(model));
+  apply_view();
+}
+
+Scene::~Scene() {
+  for (vtkActor* a : overlays_->actors()) renderer_->RemoveActor(a);
+  for (vtkTextActor* t : overlays_->texts()) renderer_->RemoveActor2D(t);
+  for (const auto& [layer, legend] : overlays_->legends) legend.remove_from(renderer_);
+}
+
+void Scene::update(const SceneState& state) {
+  check_size(state.fine.rows(), model_.fine.vertex_count(), "fine positions");
+  if (state.coarse.rows() > 0) check_size(state.coarse.rows(), model_.coarse.vertex_count(), "coarse positions");
+  check_size(state.fields.dog_residual.size(), model_.fine.vertex_count(), "dog_residual");
+  check_size(state.fields.bending.size(), model_.fine.vertex_count(), "bending");
+  check_size(state.fields.edge_strain.size(), model_.fine.quad_count(), "edge_strain");
+  check_size(state.fields.stitch_gap.size(), static_cast<int>(model_.fine.stitching.points.size()), "stitch_gap");
+  for (const auto& h : state.constraints.handles)
+    if (h.vertex < 0 || h.vertex >= model_.fine.vertex_count())
+      throw std::invalid_argument("scene state: handle on vertex " + std::to_string(h.vertex) + " out of range");
+  for (const auto& a : state.constraints.angle_sites)
+    if (a.point < 0 || a.point >= static_cast<int>(model_.fine.stitching.points.size()))
+      throw std::invalid_argument("scene state: angle site at crease point " + std::to_string(a.point) +
+                                  " out of range");
+  state_ = state;
+  refresh();
+}
+
+double Scene::coarse_offset() const {
+  return options_.view == View::SideBySide ? kSideBySideShift * (model_.fine.xs.back() - model_.fine.xs.front()) : 0;
+}
+
+void Scene::refresh() {
+  Overlays& o = *overlays_;
+  const bool flat = options_.view == View::Flat;
+  const Eigen::MatrixX3d& fine_x = flat ? model_.fine.V : state_.fine;
+  fine_->set_positions(fine_x);
+  vtkPointData* pd = fine_->grid()->GetPointData();
+  set_array(pd, "dog_residual", state_.fields.dog_residual);
+  set_array(pd, "log10_dog_residual", log10_residuals(state_.fields.dog_residual));
+  set_array(pd, "bending", state_.fields.bending);
+  set_array(fine_->grid()->GetCellData(), "edge_strain", state_.fields.edge_strain);
+  const auto bending = robust_range(state_.fields.bending);
+  o.bending_lut->SetTableRange(bending[0], bending[1]);
+  const auto strain = robust_range(state_.fields.edge_strain);
+  o.strain_lut->SetTableRange(strain[0], strain[1]);
+
+  const Eigen::MatrixX3d* coarse_x = nullptr;
+  if (coarse_) {
+    coarse_x = flat || state_.coarse.rows() == 0 ? &model_.coarse.V : &state_.coarse;
+    coarse_->set_positions(*coarse_x);
+
+    const double dx = coarse_offset();
+    vtkPoints* lp = o.links->GetPoints();
+    vtkIdType next = 0;
+    for (int v = 0; v < model_.fine.vertex_count(); ++v) {
+      const int c = model_.map.fine_to_coarse[v];
+      if (c < 0) continue;
+      lp->SetPoint(next++, fine_x(v, 0), fine_x(v, 1), fine_x(v, 2));
+      lp->SetPoint(next++, (*coarse_x)(c, 0) + dx, (*coarse_x)(c, 1), (*coarse_x)(c, 2));
+    }
+    lp->Modified();
+  }
+
+  // Stitch gaps: a sphere at each crease point, radius 0.15 to 0.6 fine grid spacings with the gap.
+  const auto& creases = fine_->crease_points();
+  const auto gap_range = zero_based_range(state_.fields.stitch_gap);
+  o.gap_lut->SetTableRange(gap_range[0], gap_range[1]);
+  vtkPoints* gp = o.gaps->GetPoints();
+  gp->SetNumberOfPoints(static_cast<vtkIdType>(creases.size()));
+  std::vector<double> radius(creases.size());
+  for (size_t k = 0; k < creases.size(); ++k) {
+    gp->SetPoint(static_cast<vtkIdType>(k), creases[k].data());
+    radius[k] = 0.15 + 0.45 * state_.fields.stitch_gap[k] / gap_range[1];
+  }
+  gp->Modified();
+  set_array(o.gaps->GetPointData(), "stitch_gap", state_.fields.stitch_gap);
+  set_array(o.gaps->GetPointData(), "radius", radius);
+
+  // Handles (targets and residual lines only where positions are current: not in the flat view).
+  vtkPoints* hp = o.handle_lines->GetPoints();
+  const auto& handles = state_.constraints.handles;
+  hp->SetNumberOfPoints(static_cast<vtkIdType>(2 * handles.size()));
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto handle_verts = vtkSmartPointer<vtkCellArray>::New();
+  auto target_verts = vtkSmartPointer<vtkCellArray>::New();
+  for (size_t k = 0; k < handles.size(); ++k) {
+    const vtkIdType ids[2] = {static_cast<vtkIdType>(2 * k), static_cast<vtkIdType>(2 * k + 1)};
+    const Eigen::Vector3d handle = fine_x.row(handles[k].vertex).transpose();
+    hp->SetPoint(ids[0], handle.data());
+    hp->SetPoint(ids[1], flat ? handle.data() : handles[k].target.data());
+    lines->InsertNextCell(2, ids);
+    handle_verts->InsertNextCell(1, &ids[0]);
+    target_verts->InsertNextCell(1, &ids[1]);
+  }
+  hp->Modified();
+  o.handle_lines->SetLines(lines);
+  o.handle_points->SetVerts(handle_verts);
+  o.target_points->SetVerts(target_verts);
+  vtkPoints* ap = o.angle_sites->GetPoints();
+  const auto& sites = state_.constraints.angle_sites;
+  ap->SetNumberOfPoints(static_cast<vtkIdType>(sites.size()));
+  auto site_verts = vtkSmartPointer<vtkCellArray>::New();
+  for (size_t k = 0; k < sites.size(); ++k) {
+    const vtkIdType id = static_cast<vtkIdType>(k);
+    ap->SetPoint(id, creases[sites[k].point].data());
+    site_verts->InsertNextCell(1, &id);
+  }
+  ap->Modified();
+  o.angle_sites->SetVerts(site_verts);
+  apply_layers();
+}
+
+void Scene::set_layer(Layer layer, bool on) {
+  if (on && is_colour_layer(layer))
+    for (auto& [other, other_on] : on_)
+      if (other != layer && is_colour_layer(other)) other_on = false;
+  on_[layer] = on;
+  apply_layers();
+}
+
+bool Scene::layer_on(Layer layer) const { return on_.at(layer); }
+
+std::vector<Layer> Scene::layers_on() const {
+  std::vector<Layer> out;
+  for (Layer l : all_layers())
+    if (on_.at(l)) out.push_back(l);
+  return out;
+}
+
+std::optional<Layer> Scene::colour_layer() const {
+  for (Layer l : all_layers())
+    if (is_colour_layer(l) && on_.at(l)) return l;
+  return std::nullopt;
+}
+
+void Scene::set_options(const SceneOptions& options) {
+  options_ = options;
+  apply_view();
+}
+
+void Scene::set_caption(const std::string& text) { overlays_->caption->SetInput(text.c_str()); }
+
+void Scene::apply_view() {
+  const bool side = options_.view == View::SideBySide;
+  if (coarse_) {
+    coarse_->set_visible(side || options_.coarse);
+    coarse_->set_filled(side, side ? kEdgeColor : kCoarseEdgeColor);
+    coarse_->set_offset(coarse_offset());
+  }
+  refresh();  // positions depend on the view (flat: rest positions; links: the offset)
+}
+
+void Scene::apply_layers() {
+  Overlays& o = *overlays_;
+  const std::optional<Layer> colour = colour_layer();
+  const bool types = on_[Layer::VertexTypes], creases = on_[Layer::CreaseCurves];
+  for (MeshView* view : {fine_.get(), coarse_.get()}) {
+    if (!view) continue;
+    view->set_vertices_visible(types);
+    view->set_crease_points_visible(types || creases);
+    view->set_crease_lines_visible(creases);
+    view->set_edges_visible(on_[Layer::Wireframe]);
+  }
+  switch (colour.value_or(Layer::Wireframe)) {  // wireframe: not a colour layer
+    case Layer::Patches:
+      fine_->color_by("patch", true, o.patch_lut);
+      if (coarse_) coarse_->color_by("patch", true, o.patch_lut);
+      break;
+    case Layer::DogResidual:
+      fine_->color_by("log10_dog_residual", false, o.residual_lut);
+      break;
+    case Layer::EdgeStrain:
+      fine_->color_by("edge_strain", true, o.strain_lut);
+      break;
+    case Layer::Bending:
+      fine_->color_by("bending", false, o.bending_lut);
+      break;
+    default:
+      fine_->color_by(nullptr, false, nullptr);
+  }
+  if (coarse_ && !(colour && *colour == Layer::Patches)) coarse_->color_by(nullptr, false, nullptr);
+
+  const bool coarse_shown = coarse_ && (options_.view == View::SideBySide || options_.coarse);
+  o.links_actor->SetVisibility(on_[Layer::Links] && coarse_shown);
+  o.gap_actor->SetVisibility(on_[Layer::StitchGap]);
+  for (vtkActor* a : {o.residual_actor.Get(), o.handle_actor.Get(), o.target_actor.Get(), o.angle_actor.Get()})
+    a->SetVisibility(on_[Layer::Handles]);
+  o.fine_title->SetVisibility(options_.view == View::SideBySide);
+  o.coarse_title->SetVisibility(options_.view == View::SideBySide && coarse_);
+  for (const auto& [layer, legend] : o.legends) legend.set_visible(on_[layer]);
+  layout_legends();
+}
+
+void Scene::layout_legends() {
+  Overlays& o = *overlays_;
+  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
+  std::vector<const Legend*> stack;
+  for (Layer l : all_layers())
+    if (o.legends.count(l)) stack.push_back(&o.legends.at(l));
+  stack_legends(stack, size && size[1] > 0 ? size[1] : 800, options_.font_size);
+  for (vtkTextActor* t : o.texts()) t->GetTextProperty()->SetFontSize(options_.font_size);
+}
+
+void Scene::reset_camera() {
+  Overlays& o = *overlays_;
+  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
+  const double width = size && size[0] > 0 ? size[0] : 1600, height = size && size[1] > 0 ? size[1] : 800;
+  Bounds b{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+  merge_bounds(b, fine_->grid()->GetBounds());
+  if (coarse_ && coarse_->surface_actor()->GetVisibility()) {
+    double cb[6];
+    coarse_->grid()->GetBounds(cb);
+    cb[0] += coarse_->offset(), cb[1] += coarse_->offset();
+    merge_bounds(b, cb);
+  }
+  if (on_[Layer::Handles] && o.handle_lines->GetNumberOfPoints() > 0) merge_bounds(b, o.handle_lines->GetBounds());
+
+  CameraPose pose = options_.view == View::ThreeD ? three_d_camera(b, width / height) : top_view_camera(b, width / height);
+  apply_camera_pose(pose, renderer_->GetActiveCamera());
+  renderer_->ResetCameraClippingRange();
+
+  // Dots scale with the zoom of the default camera: pixels per mesh unit at the focal point.
+  const double half_height = pose.parallel
+                                 ? pose.parallel_scale
+                                 : (pose.position - pose.focal_point).norm() * std::tan(0.5 * pose.view_angle * kPi / 180);
+  const double ppu = 0.5 * height / half_height;
+  const double dot = std::clamp(0.45 * ppu, 2.0, 14.0);
+  for (MeshView* view : {fine_.get(), coarse_.get()})
+    if (view) view->set_dot_size(dot);
+  o.handle_actor->GetProperty()->SetPointSize(static_cast<float>(1.8 * dot));
+  o.target_actor->GetProperty()->SetPointSize(static_cast<float>(1.5 * dot));
+  o.angle_actor->GetProperty()->SetPointSize(static_cast<float>(1.6 * dot));
+
+  // Titles above the two panels (side-by-side), in world units so they follow the camera.
+  const double top = b[3] + 0.06 * (b[3] - b[2]);
+  const double fine_centre = 0.5 * (model_.fine.xs.front() + model_.fine.xs.back());
+  o.fine_title->SetPosition(fine_centre, top);
+  o.coarse_title->SetPosition(fine_centre + coarse_offset(), top);
+  layout_legends();
+}
+
+vtkDataSet* Scene::layer_data(Layer layer) const {
+  switch (layer) {
+    case Layer::Links:
+      return overlays_->links;
+    case Layer::StitchGap:
+      return overlays_->gaps;
+    case Layer::Handles:
+      return overlays_->handle_lines;
+    case Layer::CreaseCurves:
+      return fine_->crease_lines();
+    default:
+      return fine_->grid();
+  }
+}
+
+vtkProp* Scene::legend_prop(Layer layer) const {
+  const auto it = overlays_->legends.find(layer);
+  if (it == overlays_->legends.end()) return nullptr;
+  return it->second.bar() ? static_cast<vtkProp*>(it->second.bar()) : it->second.box();
+}
+
+}  // namespace sdog::vis

@@ -1,0 +1,110 @@
+#pragma once
+// A scene of a DOG model in a vtkRenderer: the fine mesh, optionally the coarse mesh, and the
+// overlay layers (layers.h) switched on and off, each with its legend in a column at the right
+// edge. The studio holds one per view and calls update() after solver iterations; sdog render
+// draws one offscreen (picture.h).
+//
+// Views:
+// - 3d: the current positions, 3D camera; with `coarse` the coarse mesh (its edges, blue) over
+//   the fine one in the same units;
+// - flat: the rest positions (the crease pattern laid out flat), top camera; with `coarse` the
+//   coarse mesh's edges over the fine mesh;
+// - side-by-side: the fine mesh (left) and the coarse mesh (right, moved by 1.12 sheet widths),
+//   current positions, top camera, a title above each.
+// A scene belongs to the thread that renders (VTK is not thread safe): a solver thread hands over
+// SceneState values, it never touches the scene.
+// Coarse positions are those of a mode that steps a coarse mesh (SceneState::coarse), otherwise
+// its rest state. Layers that only exist on the fine mesh (residuals, strain, bending, stitch gap,
+// handles) are drawn on the fine mesh only.
+#include <vtkDataSet.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/dog_model.h"
+#include "ui/vis/camera.h"
+#include "ui/vis/layers.h"
+#include "ui/vis/scene_state.h"
+
+namespace sdog::vis {
+
+enum class View { ThreeD, Flat, SideBySide };
+/// "3d", "flat", "side-by-side".
+const char* view_name(View view);
+/// Throws UsageError naming the known views.
+View parse_view(const std::string& name);
+
+struct SceneOptions {
+  View view = View::ThreeD;
+  bool coarse = false;  ///< show the coarse mesh (side-by-side always does when the model has one)
+  int font_size = 20;   ///< legends and titles (points)
+};
+
+class Legend;
+class MeshView;
+
+class Scene {
+ public:
+  /// Adds the scene's actors to `renderer`. The model and the renderer must outlive the scene
+  /// (its destructor removes the actors). Starts in the model's rest state, every layer off.
+  Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& options = {});
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  /// New positions, fields and constraints: refreshes the data of the existing actors (the
+  /// camera stays). Throws std::invalid_argument when the sizes do not match the model.
+  void update(const SceneState& state);
+  const SceneState& state() const { return state_; }
+
+  /// Switches a layer on or off. Turning a colour layer on turns the one that was on off.
+  void set_layer(Layer layer, bool on);
+  bool layer_on(Layer layer) const;
+  /// The layers that are on, in the order of all_layers().
+  std::vector<Layer> layers_on() const;
+  /// The colour layer that is on, if any.
+  std::optional<Layer> colour_layer() const;
+
+  void set_options(const SceneOptions& options);
+  const SceneOptions& options() const { return options_; }
+  /// A line of text at the top left (empty: none).
+  void set_caption(const std::string& text);
+
+  /// The view's default camera (camera.h) fitted to what is drawn now, for the renderer's current
+  /// aspect ratio; also sizes the dots to the zoom. Call it after the render window has its size.
+  void reset_camera();
+  /// Re-places the legends for the renderer's current size (after a resize).
+  void layout_legends();
+
+  /// The data a layer draws on the fine mesh, for inspection and tests: the fine grid (point
+  /// arrays vertex_type_color, dog_residual, log10_dog_residual, bending; cell arrays patch,
+  /// edge_strain) for vertex-types, patches, dog-residual, edge-strain, bending and wireframe; one
+  /// line per link vertex for links; the crease points (arrays stitch_gap, radius) for stitch-gap;
+  /// handle, target and residual-line points and cells for handles; the crease polylines for
+  /// crease-curves.
+  vtkDataSet* layer_data(Layer layer) const;
+  /// The legend actor of a layer (a vtkScalarBarActor or vtkLegendBoxActor), nullptr for
+  /// wireframe.
+  vtkProp* legend_prop(Layer layer) const;
+
+ private:
+  struct Overlays;
+  void apply_layers();
+  void apply_view();
+  void refresh();
+  double coarse_offset() const;
+  const DogModel& model_;
+  vtkRenderer* renderer_;
+  SceneOptions options_;
+  SceneState state_;
+  std::map<Layer, bool> on_;
+  std::unique_ptr<MeshView> fine_, coarse_;
+  std::unique_ptr<Overlays> overlays_;
+};
+
+}  // namespace sdog::vis

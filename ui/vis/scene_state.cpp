@@ -1,0 +1,53 @@
+#include "ui/vis/scene_state.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/errors.h"
+#include "solver/mode_factory.h"
+#include "solver/run.h"
+
+namespace sdog::vis {
+
+ConstraintView constraint_view(const Scenario& scenario, double t) {
+  ConstraintView view;
+  for (const auto& p : scenario.positions) view.handles.push_back({p.vertex, p.start + t * (p.end - p.start)});
+  for (const auto& a : scenario.angles)
+    view.angle_sites.push_back({a.point, a.start_degrees + t * (a.end_degrees - a.start_degrees)});
+  return view;
+}
+
+SceneState scene_state(const DogProblem& problem, const Dofs& x, const Dofs* coarse_x, const Scenario* scenario,
+                       double t) {
+  SceneState s;
+  s.fine = to_positions(x);
+  if (coarse_x) s.coarse = to_positions(*coarse_x);
+  s.fields = fields(problem, x);
+  if (scenario) s.constraints = constraint_view(*scenario, t);
+  return s;
+}
+
+SceneState rest_scene_state(const DogModel& model, const Scenario* scenario) {
+  const DogProblem problem(model.fine, model.fine_topology);
+  return scene_state(problem, problem.rest(), nullptr, scenario, 1);
+}
+
+SceneState run_scene_state(const DogModel& model, const std::string& mode_name, const RunConfig& config) {
+  DogProblem problem(model.fine, model.fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model.fine);
+  check_scenario_targets(scenario, config, model.pattern.source + " at " + model.fine_res.str());
+  auto mode = make_mode(mode_name, problem, scenario, config, &model);
+  Dofs x = scenario.start(model.fine);
+  const RunSummary summary = run_scenario(*mode, problem, scenario, x, {});
+  if (summary.failed) throw SolverError("the solver (" + mode_name + ") failed at " + summary.failure);
+  return scene_state(problem, x, mode->coarse_positions(), &scenario, 1);
+}
+
+std::vector<double> log10_residuals(const std::vector<double>& residuals) {
+  std::vector<double> out(residuals.size());
+  std::transform(residuals.begin(), residuals.end(), out.begin(),
+                 [](double r) { return std::log10(std::max(r, kResidualFloor)); });
+  return out;
+}
+
+}  // namespace sdog::vis
