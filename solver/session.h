@@ -46,6 +46,10 @@ class Session {
   const std::string& mode() const { return mode_name_; }
   /// Fine positions.
   const Dofs& positions() const { return x_; }
+  /// The coarse positions of a mode that steps a coarse mesh (coarse, twolevel), else nullptr.
+  const Dofs* coarse_positions() const { return mode_->coarse_positions(); }
+  /// Scenario time of the last iteration (0 before the first).
+  double time() const { return iteration_ > 0 ? base_.time_of(iteration_) : 0.0; }
   /// Iterations taken since the start or the last reset.
   int iteration() const { return iteration_; }
   /// Base scenario plus the user's constraints, as the solver sees them.

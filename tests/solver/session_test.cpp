@@ -108,6 +108,8 @@ TEST(Session, ModeSwitchKeepsThePositions) {
   s.set_mode("twolevel");
   EXPECT_EQ(s.positions(), before);
   EXPECT_EQ(s.mode(), "twolevel");
+  ASSERT_NE(s.coarse_positions(), nullptr);
+  EXPECT_EQ(s.coarse_positions()->size(), 3 * model().coarse.vertex_count());
   const IterationReport r = s.step();
   ASSERT_FALSE(r.step.failed) << r.step.failure;
   EXPECT_EQ(r.mode, "twolevel");
