@@ -10,6 +10,7 @@
 #include "tests/test_support.h"
 #include "tests/vis/image_compare.h"
 #include "ui/vis/line_chart.h"
+#include "ui/vis/vtk_meshes.h"
 
 namespace sdog {
 namespace {
@@ -82,6 +83,24 @@ TEST(LineChart, NothingToDrawIsAnError) {
   chart.series.push_back({"nan", {1, 2}, {NAN, NAN}, std::nullopt});
   EXPECT_THROW(vis::render_line_chart(chart, {640, 400}, path), UsageError);
   EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+}  // namespace
+}  // namespace sdog
+
+namespace sdog {
+namespace {
+
+// A run that failed in its first iteration leaves a series of one point: drawn as a point, not as a
+// line (VTK reports an error for a line of fewer than two points).
+TEST(LineChart, DrawsASeriesOfOnePointWithoutAVtkError) {
+  vis::take_vtk_error();  // installs the collector, drops anything earlier
+  vis::LineChart chart = three_lines();
+  chart.series.push_back({"one point", {3}, {2}, vis::Rgb{0.9, 0.6, 0.0}});
+  const std::string path = test::temp_dir("line_chart_one_point") + "/chart.png";
+  vis::render_line_chart(chart, {900, 500}, path);
+  EXPECT_EQ(vis::take_vtk_error(), "");
+  EXPECT_TRUE(std::filesystem::exists(path));
 }
 
 }  // namespace

@@ -158,8 +158,10 @@ void render_line_chart(const LineChart& chart, const ImageSize& size, const std:
   for (size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];
     const Rgb c = s.color ? *s.color : series_color(static_cast<int>(k));
-    vtkPlot* line = xy->AddPlot(vtkChart::LINE);
-    line->SetInputData(series_table(s, chart), 0, 1);
+    vtkSmartPointer<vtkTable> table = series_table(s, chart);
+    // A run that failed in its first iteration has one point: a line needs two.
+    vtkPlot* line = xy->AddPlot(table->GetNumberOfRows() < 2 ? vtkChart::POINTS : vtkChart::LINE);
+    line->SetInputData(table, 0, 1);
     line->SetColor(c[0], c[1], c[2]);
     line->SetWidth(static_cast<float>(chart.line_width));
     line->SetLabel(s.name);
