@@ -13,7 +13,10 @@
 #include <QTemporaryDir>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
+#include <cmath>
 #include <memory>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
 
 #include "solver/term.h"
 #include "ui/studio/main_window.h"
@@ -147,6 +150,40 @@ class StudioTest : public QObject {
     // A vertex that does not exist is an error message, not a crash.
     window_->add_handle(last + 1);
     QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, kWait);
+  }
+
+  void picks_and_drags_with_the_mouse() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    window_->set_layer(vis::Layer::Handles, true);
+    window_->reset_camera();
+    const int v = window_->model()->fine.vertex_count() - 1;
+    const Eigen::Vector3d p = window_->snapshot()->state.fine.row(v).transpose();
+    vtkRenderWindowInteractor* mouse = window_->interactor();
+    auto event = [&](const Eigen::Vector3d& at, bool shift, unsigned long what) {
+      mouse->SetEventInformation(int(std::lround(at.x())), int(std::lround(at.y())), 0, shift);
+      mouse->InvokeEvent(what);
+    };
+    // A click without moving picks the vertex under the mouse.
+    const Eigen::Vector3d at = sdog::studio::to_display(window_->renderer(), p);
+    event(at, false, vtkCommand::LeftButtonPressEvent);
+    event(at, false, vtkCommand::LeftButtonReleaseEvent);
+    const int picked = window_->selected_vertex();
+    QVERIFY(picked >= 0);
+    QVERIFY((window_->snapshot()->state.fine.row(picked).transpose() - p).norm() < 1e-9);  // v or a copy of it
+    window_->add_handle(v);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(1), kWait);
+    // Shift + drag from the handle's target moves the target in the plane facing the camera.
+    const Eigen::Vector3d to = at + Eigen::Vector3d(40, 60, 0);
+    event(at, true, vtkCommand::LeftButtonPressEvent);
+    event(to, true, vtkCommand::MouseMoveEvent);
+    event(to, true, vtkCommand::LeftButtonReleaseEvent);
+    QTRY_VERIFY_WITH_TIMEOUT((window_->snapshot()->constraints.handles[0].target - p).norm() > 0.1, kWait);
+    const Eigen::Vector3d moved =
+        sdog::studio::to_display(window_->renderer(), window_->snapshot()->constraints.handles[0].target);
+    QVERIFY2((moved.head<2>() - to.head<2>()).norm() < 1.5, qPrintable(QString("%1 %2").arg(moved.x()).arg(moved.y())));
+    QVERIFY(window_->snapshot()->can_undo);
+    QVERIFY(errors_.isEmpty());
   }
 
   void adds_and_removes_an_angle_constraint() {

@@ -10,6 +10,7 @@
 #include <QMainWindow>
 #include <QThread>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <functional>
@@ -99,6 +100,8 @@ class MainWindow : public QMainWindow {
   QString inspector_text() const;
   vis::Scene* scene() const { return scene_.get(); }
   vtkRenderer* renderer() const { return renderer_; }
+  /// The 3D view's interactor (its style picks on click and drags handles with Shift).
+  vtkRenderWindowInteractor* interactor() const;
   const ObjectiveChart* chart() const { return chart_; }
   QAction* layer_action(vis::Layer layer) const { return layer_actions_.at(layer); }
 

@@ -103,6 +103,8 @@ void MainWindow::write_png_frame() {
   ++png_frame_count_;
 }
 
+vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->interactor(); }
+
 void MainWindow::set_up_mouse() {
   vtkNew<ClickDragStyle> style;
   // The positions the view draws the fine mesh at.

@@ -1,6 +1,9 @@
 #include "ui/studio/screen_picking.h"
 
+#include <algorithm>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace sdog::studio {
 
@@ -21,16 +24,20 @@ Eigen::Vector3d to_world(vtkRenderer* renderer, double x, double y, double depth
 }
 
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels) {
-  int best = -1;
-  double best_depth = std::numeric_limits<double>::infinity();
+  // Points that project within a pixel of the nearest one count as one place (copies of a crease
+  // vertex, a sheet folded over itself): the front one wins.
+  constexpr double kSamePlace = 1.0;
+  std::vector<std::pair<double, double>> near(points.rows());  // (screen distance, depth)
+  double nearest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < points.rows(); ++i) {
     const Eigen::Vector3d d = to_display(renderer, points.row(i).transpose());
-    if (Eigen::Vector2d(d.x() - x, d.y() - y).norm() > max_pixels) continue;
-    if (d.z() < best_depth) {
-      best_depth = d.z();
-      best = i;
-    }
+    near[i] = {Eigen::Vector2d(d.x() - x, d.y() - y).norm(), d.z()};
+    nearest = std::min(nearest, near[i].first);
   }
+  if (nearest > max_pixels) return -1;
+  int best = -1;
+  for (int i = 0; i < points.rows(); ++i)
+    if (near[i].first <= nearest + kSamePlace && (best < 0 || near[i].second < near[best].second)) best = i;
   return best;
 }
 

@@ -8,9 +8,9 @@
 
 namespace sdog::studio {
 
-/// Index of the row of `points` (world coordinates, n x 3) whose projection lies within
-/// `max_pixels` of display position (x, y) (VTK display coordinates: origin bottom left), the one
-/// nearest the camera among those; -1 if none.
+/// Index of the row of `points` (world coordinates, n x 3) whose projection is nearest display
+/// position (x, y) (VTK display coordinates: origin bottom left), if within `max_pixels`; of points
+/// projecting within a pixel of that distance, the one nearest the camera. -1 if none.
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels);
 
 /// Display coordinates (x, y, depth in [0, 1]) of a world point.
