@@ -5,6 +5,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
 #include <QFileInfo>
 #include <QImage>
 #include <QProcess>
@@ -22,6 +24,7 @@
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"
+#include "ui/studio/solver_settings.h"
 
 using sdog::studio::MainWindow;
 namespace vis = sdog::vis;
@@ -220,6 +223,38 @@ class StudioTest : public QObject {
              qPrintable(window_->inspector_text()));
     QVERIFY(window_->inspector_text().contains("coarse twin"));
     QVERIFY(window_->inspector_text().contains("DOG residual"));
+  }
+
+  void edits_the_solver_settings() {
+    open();
+    sdog::studio::SolverSettingsForm form(window_->run_config());
+    auto* isometry = qobject_cast<QDoubleSpinBox*>(form.field("isometry weight"));
+    auto* kkt = qobject_cast<QDoubleSpinBox*>(form.field("KKT tolerance"));
+    auto* hold = qobject_cast<QSpinBox*>(form.field("hold"));
+    QVERIFY(isometry && kkt && hold && !form.field("no such field"));
+    QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
+    isometry->setValue(500);
+    kkt->setValue(2e-4);
+    hold->setValue(7);
+    const sdog::RunConfig edited = form.config();
+    QCOMPARE(edited.weights.isometry, 500.0);
+    QCOMPARE(edited.standard.sqp.kkt_tolerance, 2e-4);
+    QCOMPARE(edited.hold, 7);
+    QCOMPARE(edited.scenario, window_->run_config().scenario);  // the rest is kept
+    window_->step(2);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 2, kWait);
+    QVERIFY(window_->set_run_config(edited));
+    QCOMPARE(window_->run_config().weights.isometry, 500.0);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again
+    window_->step(1);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 1, kWait);
+    // A value the solver cannot use is refused with a message; the settings stay.
+    sdog::RunConfig bad = edited;
+    bad.iterations = 0;
+    bad.hold = 0;
+    QVERIFY(!window_->set_run_config(bad));
+    QCOMPARE(errors_.size(), 1);
+    QCOMPARE(window_->run_config().iterations, edited.iterations);
   }
 
   void exports_a_screenshot() {

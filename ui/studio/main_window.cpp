@@ -317,24 +317,20 @@ bool MainWindow::set_mode(const QString& mode) {
 bool MainWindow::set_scenario(const QString& scenario) {
   const std::string name = scenario.toStdString();
   if (!attempt([&] { check_scenario_name(name, "scenario: "); })) return false;
-  config_.scenario = name;
-  update_actions();
+  RunConfig config = config_;
+  config.scenario = name;
   // A new base scenario starts the session again (the user's constraints go with it).
-  if (!worker_) return true;
-  chart_->clear();
-  const RunConfig config = config_;
-  const std::string mode = mode_;
-  post([config, mode](SolverWorker& w) { w.open(config, mode); });
-  return true;
+  return set_run_config(config);
 }
 
 bool MainWindow::load_run_config(const QString& path) {
   RunConfig config;
-  if (!attempt([&] {
-        read_run_config(path.toStdString(), config);
-        validate_run_config(config, path.toStdString());
-      }))
-    return false;
+  if (!attempt([&] { read_run_config(path.toStdString(), config); })) return false;
+  return set_run_config(config);
+}
+
+bool MainWindow::set_run_config(const RunConfig& config) {
+  if (!attempt([&] { validate_run_config(config, "solver settings"); })) return false;
   config_ = config;
   update_actions();
   if (!worker_) return true;

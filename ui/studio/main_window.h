@@ -80,6 +80,9 @@ class MainWindow : public QMainWindow {
   bool set_mode(const QString& mode);
   bool set_scenario(const QString& scenario);
   bool load_run_config(const QString& path);
+  /// Another run configuration (Solver > Settings): checked, then the session starts again.
+  bool set_run_config(const RunConfig& config);
+  const RunConfig& run_config() const { return config_; }
   void add_handle(int vertex);
   void move_handle(int handle, const Eigen::Vector3d& target);
   void remove_handle(int handle);

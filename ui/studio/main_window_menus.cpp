@@ -11,6 +11,7 @@
 #include "solver/mode_factory.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
+#include "ui/studio/solver_settings.h"
 
 namespace sdog::studio {
 namespace {
@@ -234,6 +235,11 @@ void MainWindow::build_solver_menu() {
   for (auto& [name, a] : mode_actions_)
     if (mode_needs_coarse(name)) a->setToolTip("needs the coarse mesh (odd resolution)");
   add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::set_scenario);
+  connect(add_action(m, "Se&ttings...", QKeySequence("Ctrl+T"),
+                     "Weights, tolerances and iteration counts (the session starts again with them)"),
+          &QAction::triggered, this, [this] {
+            if (const auto config = edit_solver_settings(this, config_)) set_run_config(*config);
+          });
   connect(add_action(m, "Load run &configuration...", QKeySequence(),
                      "Scenario, weights, tolerances and constraints from a JSON file (as sdog run --config reads it)"),
           &QAction::triggered, this, [this] {
