@@ -167,13 +167,18 @@ class StudioTest : public QObject {
       mouse->SetEventInformation(int(std::lround(at.x())), int(std::lround(at.y())), 0, shift);
       mouse->InvokeEvent(what);
     };
-    // A click without moving picks the vertex under the mouse.
+    // Pointing at a vertex shows it in the inspector; a click without moving picks it.
     const Eigen::Vector3d at = sdog::studio::to_display(window_->renderer(), p);
+    event(at, false, vtkCommand::MouseMoveEvent);
+    QVERIFY2(window_->inspector_text().contains("under the mouse"), qPrintable(window_->inspector_text()));
+    event(Eigen::Vector3d(1, 1, 0), false, vtkCommand::MouseMoveEvent);  // the corner: nothing there
+    QVERIFY(!window_->inspector_text().contains("fine vertex"));
     event(at, false, vtkCommand::LeftButtonPressEvent);
     event(at, false, vtkCommand::LeftButtonReleaseEvent);
     const int picked = window_->selected_vertex();
     QVERIFY(picked >= 0);
     QVERIFY((window_->snapshot()->state.fine.row(picked).transpose() - p).norm() < 1e-9);  // v or a copy of it
+    QVERIFY(window_->inspector_text().contains("<i>picked</i>"));
     window_->add_handle(v);
     QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(1), kWait);
     // Shift + drag from the handle's target moves the target in the plane facing the camera.

@@ -29,6 +29,7 @@ void ClickDragStyle::OnMouseMove() {
     return;
   }
   if (pressed_ && std::abs(p[0] - press_x_) + std::abs(p[1] - press_y_) > 3) moved_ = true;
+  if (State == VTKIS_NONE && on_hover) on_hover(p[0], p[1]);
   vtkInteractorStyleTrackballCamera::OnMouseMove();
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The 3D view's mouse: the trackball camera, plus a left click (press and release without moving)
 // that picks, and Shift + left drag that moves what the press grabbed (a handle) instead of the
-// camera. Positions are VTK display coordinates.
+// camera; moves without a button report hovering. Positions are VTK display coordinates.
 #include <vtkInteractorStyleTrackballCamera.h>
 
 #include <functional>
@@ -14,6 +14,8 @@ class ClickDragStyle : public vtkInteractorStyleTrackballCamera {
   vtkTypeMacro(ClickDragStyle, vtkInteractorStyleTrackballCamera);
 
   std::function<void(int x, int y)> on_click;
+  /// The mouse moved with no button pressed.
+  std::function<void(int x, int y)> on_hover;
   /// Shift + press: true when something was grabbed (the camera then stays).
   std::function<bool(int x, int y)> on_grab;
   std::function<void(int x, int y)> on_drag;

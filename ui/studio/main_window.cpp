@@ -49,7 +49,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   chart_dock->setWidget(chart_);
   addDockWidget(Qt::RightDockWidgetArea, chart_dock);
 
-  inspector_ = new QLabel("Click a vertex to inspect it.");
+  inspector_ = new QLabel("Click a vertex to pick it, or point at one to inspect it.");
   inspector_->setTextFormat(Qt::RichText);
   inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   inspector_->setMargin(6);
@@ -199,7 +199,7 @@ void MainWindow::show_snapshot(const Snapshot& s) {
     }
     render();
     if (png_frames_) write_png_frame();
-    if (selected_vertex_ >= 0) select_vertex(selected_vertex_);
+    show_in_inspector(hovered_vertex_);
   }
   if (worker_) worker_->acknowledge();
   update_actions();
@@ -229,11 +229,20 @@ void MainWindow::render() {
 
 void MainWindow::select_vertex(int vertex) {
   selected_vertex_ = vertex;
+  show_in_inspector(-1);
+}
+
+void MainWindow::show_in_inspector(int hovered) {
+  hovered_vertex_ = hovered;
+  const int vertex = hovered >= 0 ? hovered : selected_vertex_;
   if (vertex < 0 || !model_ || !snapshot_) {
-    inspector_->setText("Click a vertex to inspect it.");
+    inspector_->setText("Click a vertex to pick it, or point at one to inspect it.");
     return;
   }
-  attempt([&] { inspector_->setText(describe_vertex(*model_, snapshot_->state, vertex)); });
+  attempt([&] {
+    inspector_->setText((hovered >= 0 ? QString("<i>under the mouse</i>") : QString("<i>picked</i>")) +
+                        describe_vertex(*model_, snapshot_->state, vertex));
+  });
 }
 
 QString MainWindow::inspector_text() const { return inspector_->text(); }

@@ -90,7 +90,7 @@ class MainWindow : public QMainWindow {
   void remove_angle(int angle);
   void undo();
   void redo();
-  /// Shows the vertex in the inspector (-1: none).
+  /// Picks the vertex (Edit > Make handle uses it) and shows it in the inspector (-1: none).
   void select_vertex(int vertex);
 
   // State, for tests and the command line
@@ -136,6 +136,8 @@ class MainWindow : public QMainWindow {
   void show_report(const IterationReport& report);
   void write_png_frame();
   void render();
+  /// The hovered vertex (-1: none, then the picked one) in the inspector.
+  void show_in_inspector(int hovered);
   void update_actions();
   void open_file(const QString& path);
   nlohmann::json camera_json() const;
@@ -160,6 +162,7 @@ class MainWindow : public QMainWindow {
   bool playing_ = false;
   int reports_received_ = 0;
   int selected_vertex_ = -1;
+  int hovered_vertex_ = -1;
   int dragged_handle_ = -1;
   double drag_depth_ = 0;
 

@@ -119,6 +119,10 @@ void MainWindow::set_up_mouse() {
     status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
                             : QString("no vertex within 12 pixels of the click"));
   };
+  style->on_hover = [this, shown](int x, int y) {
+    if (!snapshot_) return;
+    show_in_inspector(pick_point(renderer_, shown(), x, y, 12));
+  };
   style->on_grab = [this](int x, int y) {
     if (!snapshot_ || snapshot_->constraints.handles.empty()) return false;
     const auto& handles = snapshot_->constraints.handles;

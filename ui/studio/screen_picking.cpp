@@ -1,5 +1,8 @@
 #include "ui/studio/screen_picking.h"
 
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+
 #include <algorithm>
 #include <limits>
 #include <utility>
@@ -27,11 +30,19 @@ int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, 
   // Points that project within a pixel of the nearest one count as one place (copies of a crease
   // vertex, a sheet folded over itself): the front one wins.
   constexpr double kSamePlace = 1.0;
-  std::vector<std::pair<double, double>> near(points.rows());  // (screen distance, depth)
-  double nearest = std::numeric_limits<double>::infinity();
+  const double far = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, double>> near(points.rows(), {far, far});  // (screen distance, depth)
+  double nearest = far;
+  // The camera's matrix once (WorldToDisplay per point recomputes it: too slow for hovering).
+  vtkMatrix4x4* world_to_view =
+      renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1);
   for (int i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d d = to_display(renderer, points.row(i).transpose());
-    near[i] = {Eigen::Vector2d(d.x() - x, d.y() - y).norm(), d.z()};
+    double p[4] = {points(i, 0), points(i, 1), points(i, 2), 1}, v[4];
+    world_to_view->MultiplyPoint(p, v);
+    if (v[3] == 0) continue;
+    double dx = v[0] / v[3], dy = v[1] / v[3], dz = v[2] / v[3];
+    renderer->ViewToDisplay(dx, dy, dz);
+    near[i] = {Eigen::Vector2d(dx - x, dy - y).norm(), dz};
     nearest = std::min(nearest, near[i].first);
   }
   if (nearest > max_pixels) return -1;
