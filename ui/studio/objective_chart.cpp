@@ -15,9 +15,10 @@ namespace {
 
 constexpr double kLogFloor = -16;  // log10 of values at or below 0 (unused terms)
 
-QColor series_qcolor(int index) {
+// The palette's colours, dashed once they repeat (nine series, seven colours).
+QPen series_pen(int index) {
   const vis::Rgb c = vis::series_color(index);
-  return QColor::fromRgbF(c[0], c[1], c[2]);
+  return QPen(QColor::fromRgbF(c[0], c[1], c[2]), 1.6, index >= 7 ? Qt::DashLine : Qt::SolidLine);
 }
 
 }  // namespace
@@ -49,7 +50,7 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.fillRect(rect(), Qt::white);
   painter.setRenderHint(QPainter::Antialiasing);
-  const int legend_width = 110, margin = 6, gap = 18;
+  const int legend_width = 124, margin = 6, gap = 18;
   const QRectF area(margin + 34, margin + 14, width() - legend_width - 2 * margin - 34,
                     height() - 2 * margin - gap - 28);
   if (area.width() < 20 || area.height() < 40) return;
@@ -66,7 +67,7 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
   const double first = points_.front().iteration, last = std::max(first + 1.0, double(points_.back().iteration));
   auto x_of = [&](int iteration) { return area.left() + (iteration - first) / (last - first) * area.width(); };
   // Draws one series (value_of(point), NaN = left out) in `box` scaled to [lo, hi].
-  auto draw = [&](const QRectF& box, double lo, double hi, const QColor& color,
+  auto draw = [&](const QRectF& box, double lo, double hi, const QPen& pen,
                   const std::function<double(const Point&)>& value_of) {
     QPainterPath path;
     bool started = false;
@@ -77,7 +78,7 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
       if (started) path.lineTo(q); else path.moveTo(q);
       started = true;
     }
-    painter.setPen(QPen(color, 1.6));
+    painter.setPen(pen);
     painter.drawPath(path);
   };
 
@@ -96,12 +97,14 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
   }
   int legend_row = 0;
   for (int s : used) {
-    draw(top, std::floor(lo), std::ceil(hi), series_qcolor(s), [s](const Point& p) {
+    draw(top, std::floor(lo), std::ceil(hi), series_pen(s), [s](const Point& p) {
       return p.log_values[s] > kLogFloor ? p.log_values[s] : std::numeric_limits<double>::quiet_NaN();
     });
-    painter.setPen(series_qcolor(s));
-    painter.drawText(QPointF(area.right() + 8, top.top() + 12 + 14 * legend_row++),
-                     s < kTermCount ? term_name(s) : "dog residual");
+    const double y = top.top() + 12 + 14 * legend_row++;
+    painter.setPen(series_pen(s));
+    painter.drawLine(QPointF(area.right() + 6, y - 4), QPointF(area.right() + 20, y - 4));
+    painter.setPen(series_pen(s).color());
+    painter.drawText(QPointF(area.right() + 24, y), s < kTermCount ? term_name(s) : "dog residual");
   }
   painter.setPen(Qt::black);
   if (!used.empty()) {
@@ -110,7 +113,7 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
   }
   double ms_max = 0;
   for (const Point& p : points_) ms_max = std::max(ms_max, p.ms);
-  draw(bottom, 0, std::max(ms_max, 1e-3), Qt::black, [](const Point& p) { return p.ms; });
+  draw(bottom, 0, std::max(ms_max, 1e-3), QPen(Qt::black, 1.6), [](const Point& p) { return p.ms; });
   painter.setPen(Qt::black);
   painter.drawText(QPointF(margin, bottom.top() + 10), QString::number(ms_max, 'g', 3));
   painter.drawText(QPointF(margin, bottom.bottom()), "0");
