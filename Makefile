@@ -61,13 +61,17 @@ fuzz: fuzz-deps deps
 	$(FUZZ_BUILD)/tests/fuzz/fuzz_svg_pattern -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=tests/fuzz/svg.dict -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/svg
 
-# Regenerates the dataset previews (datasets/README.md) and the README pictures.
+# Regenerates the dataset previews (datasets/README.md) and the README pictures (also the studio's).
 previews: build
 	@mkdir -p docs/datasets
 	@for f in datasets/*.svg; do n=$$(basename $$f .svg); \
 	  $(XVFB) $(SDOG) render $$f --size 1200x600 --out docs/datasets/$$n.png || exit 1; done
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 21x21 --size 1600x800 --out docs/vertex_types.png
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 41x41 --iters 60 --overlay dog-residual,handles,crease-curves --view 3d --size 1600x900 --out docs/dog_residual.png
+	$(XVFB) $(BUILD)/app/sdog-studio --screenshot docs/studio_vertex_types.png $(DEMO_PATTERN) --res 21x21 \
+	  --overlay vertex-types,crease-curves,wireframe --size 1400x800
+	$(XVFB) $(BUILD)/app/sdog-studio --screenshot docs/studio_dog_residual.png $(DEMO_PATTERN) --res 41x41 \
+	  --overlay dog-residual,handles,crease-curves --iters 60 --size 1400x800
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD) out

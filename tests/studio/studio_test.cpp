@@ -1,0 +1,359 @@
+// Smoke tests of the studio's main window (run under xvfb-run): a pattern opened, every overlay
+// switched, the solver stepped and played on its thread, handles and angle constraints edited
+// and undone, a vertex inspected, a screenshot, a frame series and a workspace written and read
+// back, and the command line's --screenshot.
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+#include <cmath>
+#include <memory>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
+
+#include "solver/term.h"
+#include "ui/studio/main_window.h"
+#include "ui/studio/objective_chart.h"
+#include "ui/studio/screen_picking.h"
+#include "ui/studio/solver_settings.h"
+
+using sdog::studio::MainWindow;
+namespace vis = sdog::vis;
+
+namespace {
+
+const QString kPattern = QString(SDOG_DATASETS_DIR) + "/four_corner_arcs.svg";
+constexpr int kWait = 120000;  // ms: the machine may be busy
+
+}  // namespace
+
+class StudioTest : public QObject {
+  Q_OBJECT
+
+  std::unique_ptr<MainWindow> window_;
+  QStringList errors_;
+
+  /// A window with the pattern open at 21x21 and its first state shown.
+  void open() {
+    QVERIFY(window_->open_pattern(kPattern, "21x21"));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
+  }
+  int iteration() const { return window_->snapshot() ? window_->snapshot()->iteration : -1; }
+
+ private Q_SLOTS:
+  void init() {
+    errors_.clear();
+    window_ = std::make_unique<MainWindow>("about");
+    window_->set_error_sink([this](const QString& m) { errors_ << m; });
+    window_->resize(900, 600);
+    window_->show();
+  }
+  void cleanup() { window_.reset(); }
+
+  void opens_a_pattern_and_reports_bad_ones() {
+    open();
+    QCOMPARE(window_->snapshot()->state.fine.rows(), Eigen::Index(window_->model()->fine.vertex_count()));
+    QCOMPARE(window_->snapshot()->iteration, 0);
+    QVERIFY(errors_.isEmpty());
+    QVERIFY(!window_->open_pattern("/no/such/pattern.svg", "21x21"));
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY2(errors_[0].contains("/no/such/pattern.svg"), qPrintable(errors_[0]));
+    // Even resolutions build no coarse mesh: the coarse modes refuse with a message.
+    QVERIFY(!window_->open_pattern(kPattern, "20x20", "twolevel"));
+    QCOMPARE(errors_.size(), 2);
+    QVERIFY(window_->open_pattern(kPattern, "20x20", "standard"));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
+    QVERIFY(!window_->model()->has_coarse);
+    QVERIFY(!window_->set_mode("twolevel"));
+    QCOMPARE(errors_.size(), 3);
+  }
+
+  void toggles_every_overlay() {
+    open();
+    for (vis::Layer layer : vis::all_layers()) {
+      window_->set_layer(layer, true);
+      QVERIFY2(window_->scene()->layer_on(layer), vis::layer_name(layer));
+      QVERIFY(window_->layer_action(layer)->isChecked());
+      QVERIFY(window_->scene()->layer_data(layer) != nullptr);
+      window_->set_layer(layer, false);
+      QVERIFY(!window_->scene()->layer_on(layer));
+      QVERIFY(!window_->layer_action(layer)->isChecked());
+    }
+    // One colour layer at a time: the menu follows the scene.
+    window_->set_layer(vis::Layer::VertexTypes, true);
+    window_->set_layer(vis::Layer::DogResidual, true);
+    QVERIFY(!window_->layer_action(vis::Layer::VertexTypes)->isChecked());
+    QVERIFY(window_->layer_action(vis::Layer::DogResidual)->isChecked());
+    for (vis::View view : {vis::View::Flat, vis::View::SideBySide, vis::View::ThreeD}) {
+      window_->set_view(view);
+      QCOMPARE(window_->scene()->options().view, view);
+    }
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void steps_five_iterations() {
+    open();
+    const Eigen::MatrixX3d rest = window_->snapshot()->state.fine;
+    window_->step(5);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 5, kWait);
+    QCOMPARE(window_->reports_received(), 5);
+    QCOMPARE(window_->chart()->point_count(), 5);
+    QVERIFY((window_->snapshot()->state.fine - rest).norm() > 1e-3);
+    window_->reset_solver();
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);
+    QVERIFY((window_->snapshot()->state.fine - rest).norm() < 1e-12);
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void plays_and_pauses() {
+    open();
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->playing(), kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->reports_received() >= 3, kWait);
+    window_->pause();
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->playing(), kWait);
+    const int reports = window_->reports_received();
+    QTest::qWait(300);
+    QCOMPARE(window_->reports_received(), reports);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), reports, kWait);  // the last state is shown
+  }
+
+  void drags_a_handle_and_undoes_it() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    const int last = window_->model()->fine.vertex_count() - 1;
+    window_->add_handle(0);
+    window_->add_handle(last);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(2), kWait);
+    const Eigen::Vector3d rest = window_->snapshot()->state.fine.row(last).transpose();
+    const Eigen::Vector3d lifted = rest + Eigen::Vector3d(0, 0, 3);
+    window_->move_handle(1, lifted);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[1].target == lifted, kWait);
+    QVERIFY(window_->snapshot()->can_undo);
+    window_->step(30);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 30, kWait);
+    const Eigen::Vector3d moved = window_->snapshot()->state.fine.row(last).transpose();
+    QVERIFY2((moved - lifted).norm() < 0.5, qPrintable(QString::number((moved - lifted).norm())));
+    window_->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[1].target == rest, kWait);
+    window_->redo();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[1].target == lifted, kWait);
+    window_->remove_handle(0);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(1), kWait);
+    QVERIFY(errors_.isEmpty());
+    // A vertex that does not exist is an error message, not a crash.
+    window_->add_handle(last + 1);
+    QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, kWait);
+  }
+
+  void picks_and_drags_with_the_mouse() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    window_->set_layer(vis::Layer::Handles, true);
+    window_->reset_camera();
+    const int v = window_->model()->fine.vertex_count() - 1;
+    const Eigen::Vector3d p = window_->snapshot()->state.fine.row(v).transpose();
+    vtkRenderWindowInteractor* mouse = window_->interactor();
+    auto event = [&](const Eigen::Vector3d& at, bool shift, unsigned long what) {
+      mouse->SetEventInformation(int(std::lround(at.x())), int(std::lround(at.y())), 0, shift);
+      mouse->InvokeEvent(what);
+    };
+    // Pointing at a vertex shows it in the inspector; a click without moving picks it.
+    const Eigen::Vector3d at = sdog::studio::to_display(window_->renderer(), p);
+    event(at, false, vtkCommand::MouseMoveEvent);
+    QVERIFY2(window_->inspector_text().contains("under the mouse"), qPrintable(window_->inspector_text()));
+    event(Eigen::Vector3d(1, 1, 0), false, vtkCommand::MouseMoveEvent);  // the corner: nothing there
+    QVERIFY(!window_->inspector_text().contains("fine vertex"));
+    event(at, false, vtkCommand::LeftButtonPressEvent);
+    event(at, false, vtkCommand::LeftButtonReleaseEvent);
+    const int picked = window_->selected_vertex();
+    QVERIFY(picked >= 0);
+    QVERIFY((window_->snapshot()->state.fine.row(picked).transpose() - p).norm() < 1e-9);  // v or a copy of it
+    QVERIFY(window_->inspector_text().contains("<i>picked</i>"));
+    window_->add_handle(v);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(1), kWait);
+    // Shift + drag from the handle's target moves the target in the plane facing the camera.
+    const Eigen::Vector3d to = at + Eigen::Vector3d(40, 60, 0);
+    event(at, true, vtkCommand::LeftButtonPressEvent);
+    event(to, true, vtkCommand::MouseMoveEvent);
+    event(to, true, vtkCommand::LeftButtonReleaseEvent);
+    QTRY_VERIFY_WITH_TIMEOUT((window_->snapshot()->constraints.handles[0].target - p).norm() > 0.1, kWait);
+    const Eigen::Vector3d moved =
+        sdog::studio::to_display(window_->renderer(), window_->snapshot()->constraints.handles[0].target);
+    QVERIFY2((moved.head<2>() - to.head<2>()).norm() < 1.5, qPrintable(QString("%1 %2").arg(moved.x()).arg(moved.y())));
+    QVERIFY(window_->snapshot()->can_undo);
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void adds_and_removes_an_angle_constraint() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    const auto& points = window_->model()->fine.stitching.points;
+    int site = -1;
+    for (size_t p = points.size() / 3; p < points.size() && site < 0; ++p)
+      if (points[p].copies.size() == 2) site = static_cast<int>(p);
+    QVERIFY(site >= 0);
+    window_->add_angle(site, 60);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.angles.size(), size_t(1), kWait);
+    QCOMPARE(window_->snapshot()->constraints.angles[0].crease_point, site);
+    QCOMPARE(window_->snapshot()->state.constraints.angle_sites.size(), size_t(1));
+    window_->remove_angle(0);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.angles.size(), size_t(0), kWait);
+    window_->undo();
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.angles.size(), size_t(1), kWait);
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void inspects_a_picked_vertex() {
+    open();
+    window_->reset_camera();
+    QApplication::processEvents();
+    const auto& fine = window_->snapshot()->state.fine;
+    const int v = window_->model()->fine.vertex_count() / 2;
+    const Eigen::Vector3d d = sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
+    const int picked = sdog::studio::pick_point(window_->renderer(), fine, d.x(), d.y(), 2);
+    QVERIFY(picked >= 0);
+    QVERIFY((fine.row(picked) - fine.row(v)).norm() < 1e-9);  // v or a copy of it on a crease
+    window_->select_vertex(v);
+    QVERIFY2(window_->inspector_text().contains("fine vertex</b></td><td>" + QString::number(v) + "<"),
+             qPrintable(window_->inspector_text()));
+    QVERIFY(window_->inspector_text().contains("coarse twin"));
+    QVERIFY(window_->inspector_text().contains("DOG residual"));
+  }
+
+  void edits_the_solver_settings() {
+    open();
+    sdog::studio::SolverSettingsForm form(window_->run_config());
+    auto* isometry = qobject_cast<QDoubleSpinBox*>(form.field("isometry weight"));
+    auto* kkt = qobject_cast<QDoubleSpinBox*>(form.field("KKT tolerance"));
+    auto* hold = qobject_cast<QSpinBox*>(form.field("hold"));
+    QVERIFY(isometry && kkt && hold && !form.field("no such field"));
+    QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
+    isometry->setValue(500);
+    kkt->setValue(2e-4);
+    hold->setValue(7);
+    const sdog::RunConfig edited = form.config();
+    QCOMPARE(edited.weights.isometry, 500.0);
+    QCOMPARE(edited.standard.sqp.kkt_tolerance, 2e-4);
+    QCOMPARE(edited.hold, 7);
+    QCOMPARE(edited.scenario, window_->run_config().scenario);  // the rest is kept
+    window_->step(2);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 2, kWait);
+    QVERIFY(window_->set_run_config(edited));
+    QCOMPARE(window_->run_config().weights.isometry, 500.0);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again
+    window_->step(1);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 1, kWait);
+    // A value the solver cannot use is refused with a message; the settings stay.
+    sdog::RunConfig bad = edited;
+    bad.iterations = 0;
+    bad.hold = 0;
+    QVERIFY(!window_->set_run_config(bad));
+    QCOMPARE(errors_.size(), 1);
+    QCOMPARE(window_->run_config().iterations, edited.iterations);
+  }
+
+  void exports_a_screenshot() {
+    open();
+    QTemporaryDir dir;
+    const QString opaque = dir.filePath("shot.png"), clear = dir.filePath("clear.png");
+    QVERIFY(window_->export_screenshot(opaque, {320, 200}, false));
+    QVERIFY(window_->export_screenshot(clear, {300, 240}, true));
+    const QImage a(opaque), b(clear);
+    QCOMPARE(a.size(), QSize(320, 200));
+    QCOMPARE(b.size(), QSize(300, 240));
+    QVERIFY(b.hasAlphaChannel());
+    QCOMPARE(qAlpha(b.pixel(0, 0)), 0);
+    QCOMPARE(a.pixel(0, 0), qRgb(255, 255, 255));
+    QVERIFY(errors_.isEmpty());
+    QVERIFY(!window_->export_screenshot("/proc/no/such/dir/shot.png", {320, 200}, false));
+    QCOMPARE(errors_.size(), 1);
+  }
+
+  void records_a_frame_series() {
+    open();
+    QTemporaryDir dir;
+    const QString frames = dir.filePath("frames");
+    QSignalSpy written(window_.get(), &MainWindow::frames_written);
+    QVERIFY(window_->start_frames(frames));
+    window_->step(3);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 3, kWait);
+    window_->stop_frames();
+    QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kWait);
+    QCOMPARE(written[0][1].toInt(), 4);  // frame_0000 (the start) to frame_0003
+    for (int k = 0; k <= 3; ++k)
+      QVERIFY(QFileInfo(QString("%1/frame_%2.vtu").arg(frames).arg(k, 4, 10, QChar('0'))).size() > 1000);
+    QVERIFY(QFileInfo(frames + "/frames.pvd").size() > 100);
+    QVERIFY(!QImage(frames + "/frame_0000.png").isNull());
+    QVERIFY(!QImage(frames + "/frame_0003.png").isNull());
+    QVERIFY(window_->png_frames_written() >= 2);
+    QCOMPARE(QDir(frames).entryList({"*.png"}).size(), window_->png_frames_written());
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void saves_and_reloads_a_workspace() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    window_->add_handle(0);
+    window_->add_handle(window_->model()->fine.vertex_count() - 1);
+    window_->move_handle(1, Eigen::Vector3d(1, 2, 3));
+    window_->step(3);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 3, kWait);
+    const Eigen::MatrixX3d positions = window_->snapshot()->state.fine;
+    QTemporaryDir dir;
+    const QString path = dir.filePath("session.json");
+    QSignalSpy saved(window_.get(), &MainWindow::workspace_saved);
+    QVERIFY(window_->save_workspace(path));
+    QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, kWait);
+    QVERIFY(QFileInfo(path).size() > 1000);
+
+    MainWindow other("about");
+    other.set_error_sink([this](const QString& m) { errors_ << m; });
+    other.resize(900, 600);
+    other.show();
+    QVERIFY(other.open_workspace(path));
+    QTRY_VERIFY_WITH_TIMEOUT(other.snapshot() && other.snapshot()->iteration == 3, kWait);
+    QCOMPARE(other.snapshot()->constraints.handles.size(), size_t(2));
+    QCOMPARE(other.snapshot()->constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
+    QVERIFY((other.snapshot()->state.fine - positions).norm() < 1e-9);
+    QVERIFY(errors_.isEmpty());
+    QVERIFY(!other.open_workspace(dir.filePath("missing.json")));
+    QCOMPARE(errors_.size(), 1);
+  }
+
+  void command_line_screenshot() {
+    QTemporaryDir dir;
+    const QString png = dir.filePath("studio.png");
+    QProcess studio;
+    studio.start(SDOG_STUDIO_EXE, {"--screenshot", png, kPattern, "--res", "21x21", "--size", "800x500", "--overlay",
+                                   "dog-residual,handles", "--iters", "2"});
+    QVERIFY(studio.waitForFinished(kWait));
+    QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
+    const QImage image(png);
+    QCOMPARE(image.size(), QSize(800, 500));
+    QProcess bad;
+    bad.start(SDOG_STUDIO_EXE, {"--screenshot", dir.filePath("bad.png"), "/no/such.svg"});
+    QVERIFY(bad.waitForFinished(kWait));
+    QCOMPARE(bad.exitCode(), 1);
+    QVERIFY(bad.readAllStandardError().contains("/no/such.svg"));
+    QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
+  }
+};
+
+int main(int argc, char** argv) {
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  StudioTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "studio_test.moc"

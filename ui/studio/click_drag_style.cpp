@@ -1,0 +1,48 @@
+#include "ui/studio/click_drag_style.h"
+
+#include <vtkObjectFactory.h>
+#include <vtkRenderWindowInteractor.h>
+
+#include <cstdlib>
+
+namespace sdog::studio {
+
+vtkStandardNewMacro(ClickDragStyle);
+
+void ClickDragStyle::OnLeftButtonDown() {
+  const int* p = Interactor->GetEventPosition();
+  press_x_ = p[0];
+  press_y_ = p[1];
+  if (Interactor->GetShiftKey() && on_grab && on_grab(p[0], p[1])) {
+    dragging_ = true;
+    return;
+  }
+  pressed_ = true;
+  moved_ = false;
+  vtkInteractorStyleTrackballCamera::OnLeftButtonDown();
+}
+
+void ClickDragStyle::OnMouseMove() {
+  const int* p = Interactor->GetEventPosition();
+  if (dragging_) {
+    if (on_drag) on_drag(p[0], p[1]);
+    return;
+  }
+  if (pressed_ && std::abs(p[0] - press_x_) + std::abs(p[1] - press_y_) > 3) moved_ = true;
+  if (State == VTKIS_NONE && on_hover) on_hover(p[0], p[1]);
+  vtkInteractorStyleTrackballCamera::OnMouseMove();
+}
+
+void ClickDragStyle::OnLeftButtonUp() {
+  const int* p = Interactor->GetEventPosition();
+  if (dragging_) {
+    dragging_ = false;
+    if (on_release) on_release(p[0], p[1]);
+    return;
+  }
+  vtkInteractorStyleTrackballCamera::OnLeftButtonUp();
+  if (pressed_ && !moved_ && on_click) on_click(p[0], p[1]);
+  pressed_ = false;
+}
+
+}  // namespace sdog::studio

@@ -1,0 +1,417 @@
+#include "ui/studio/main_window.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QStatusBar>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtGlobal>
+#include <exception>
+
+#include "geometry/errors.h"
+#include "solver/mode_factory.h"
+#include "ui/studio/model_loader.h"
+#include "ui/studio/objective_chart.h"
+#include "ui/studio/solver_worker.h"
+#include "ui/studio/vertex_inspector.h"
+#include "ui/vis/camera.h"
+
+namespace sdog::studio {
+
+MainWindow::MainWindow(const QString& about, QWidget* parent)
+    : QMainWindow(parent),
+      about_(about),
+      render_window_(vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New()),
+      renderer_(vtkSmartPointer<vtkRenderer>::New()) {
+  qRegisterMetaType<sdog::studio::Snapshot>();
+  qRegisterMetaType<sdog::IterationReport>();
+  setWindowTitle("Scalable DOGs studio");
+  setAcceptDrops(true);
+  error_sink_ = [this](const QString& message) { QMessageBox::critical(this, "Scalable DOGs studio", message); };
+
+  view_ = new QVTKOpenGLNativeWidget(this);
+  renderer_->SetBackground(1, 1, 1);
+  render_window_->AddRenderer(renderer_);
+  view_->setRenderWindow(render_window_);
+  view_->setToolTip("Left drag: rotate, right drag or wheel: zoom, middle drag: pan; click: inspect a vertex; "
+                    "Shift + drag a handle's target: move it");
+  view_->setMinimumSize(400, 300);
+  setCentralWidget(view_);
+
+  chart_ = new ObjectiveChart;
+  auto* chart_dock = new QDockWidget("Iterations", this);
+  chart_dock->setObjectName("iterations");
+  chart_dock->setWidget(chart_);
+  addDockWidget(Qt::RightDockWidgetArea, chart_dock);
+
+  inspector_ = new QLabel("Click a vertex to pick it, or point at one to inspect it.");
+  inspector_->setTextFormat(Qt::RichText);
+  inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  inspector_->setMargin(6);
+  inspector_->setToolTip("The picked fine vertex: patch, class, type and twin in the coarse mesh, residuals");
+  auto* inspector_dock = new QDockWidget("Inspector", this);
+  inspector_dock->setObjectName("inspector");
+  inspector_dock->setWidget(inspector_);
+  addDockWidget(Qt::RightDockWidgetArea, inspector_dock);
+
+  status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG file here).");
+  statusBar()->addWidget(status_, 1);
+
+  build_menus();
+  set_up_mouse();
+  update_actions();
+  resize(1400, 900);
+}
+
+MainWindow::~MainWindow() {
+  stop_worker();
+  scene_.reset();  // before the renderer and the model it draws
+}
+
+void MainWindow::report_error(const QString& message) { error_sink_(message); }
+
+bool MainWindow::attempt(const std::function<void()>& what) {
+  try {
+    what();
+    return true;
+  } catch (const std::exception& e) {
+    report_error(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void MainWindow::post(std::function<void(SolverWorker&)> command) {
+  if (!worker_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return;
+  }
+  worker_->post(std::move(command));
+}
+
+void MainWindow::stop_worker() {
+  if (!worker_) return;
+  QMetaObject::invokeMethod(
+      worker_,
+      [w = worker_] {
+        w->pause();
+        w->stop_frames();
+      },
+      Qt::BlockingQueuedConnection);
+  solver_thread_.quit();
+  solver_thread_.wait();
+  delete worker_;
+  worker_ = nullptr;
+  playing_ = false;
+  ++generation_;
+}
+
+void MainWindow::start_worker() {
+  worker_ = new SolverWorker(model_);
+  worker_->moveToThread(&solver_thread_);
+  const int generation = ++generation_;
+  connect(worker_, &SolverWorker::snapshot_ready, this, [this, generation](const Snapshot& s) {
+    if (generation == generation_) show_snapshot(s);
+  });
+  connect(worker_, &SolverWorker::iterated, this, [this, generation](const IterationReport& r) {
+    if (generation == generation_) show_report(r);
+  });
+  connect(worker_, &SolverWorker::failed, this, [this, generation](const QString& message) {
+    if (generation == generation_) report_error(message);
+  });
+  connect(worker_, &SolverWorker::playing_changed, this, [this, generation](bool on) {
+    if (generation != generation_) return;
+    playing_ = on;
+    update_actions();
+  });
+  connect(worker_, &SolverWorker::workspace_saved, this, &MainWindow::workspace_saved);
+  connect(worker_, &SolverWorker::frames_written, this, &MainWindow::frames_written);
+  solver_thread_.start();
+}
+
+bool MainWindow::open_pattern(const QString& path, const QString& resolution, const QString& mode) {
+  std::shared_ptr<const DogModel> model;
+  const std::string mode_name = mode.toStdString();
+  const bool built = attempt([&] {
+    check_mode_name(mode_name, "mode: ");
+    model = load_model(path.toStdString(), resolution.toStdString());
+    check_mode_usable(mode_name, *model);
+  });
+  if (!built) return false;
+  stop_frames();
+  stop_worker();
+  scene_.reset();
+  snapshot_.reset();
+  chart_->clear();
+  reports_received_ = 0;
+  select_vertex(-1);
+  model_ = std::move(model);
+  pattern_path_ = path;
+  resolution_ = resolution;
+  mode_ = mode_name;
+  scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
+  for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
+  camera_fitted_ = false;
+  start_worker();
+  const RunConfig config = config_;
+  post([config, mode_name](SolverWorker& w) { w.open(config, mode_name); });
+  setWindowTitle(QFileInfo(path).fileName() + " " + resolution + " - Scalable DOGs studio");
+  status_->setText(QString("%1 at %2: %3 fine vertices in %4 patches, %5; mode %6, scenario %7 (Solver > Step: S, "
+                           "Play: Space)")
+                       .arg(QFileInfo(path).fileName(), resolution)
+                       .arg(model_->fine.vertex_count())
+                       .arg(model_->fine.patch_count())
+                       .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
+                                               : QString("no coarse mesh (even resolution)"))
+                       .arg(QString::fromStdString(mode_), QString::fromStdString(config_.scenario)));
+  update_actions();
+  render();
+  return true;
+}
+
+bool MainWindow::change_resolution(const QString& resolution) {
+  if (!model_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  return open_pattern(pattern_path_, resolution, QString::fromStdString(mode_));
+}
+
+void MainWindow::show_snapshot(const Snapshot& s) {
+  const bool updated = attempt([&] { scene_->update(s.state); });
+  if (updated) {
+    snapshot_ = s;
+    mode_ = s.mode;
+    if (!camera_fitted_) {
+      scene_->reset_camera();
+      if (pending_camera_) {
+        attempt([&] {
+          vis::apply_camera_pose(vis::camera_pose_from_json(*pending_camera_, "workspace camera"),
+                                 renderer_->GetActiveCamera());
+        });
+        pending_camera_.reset();
+      }
+      camera_fitted_ = true;
+    }
+    render();
+    if (png_frames_) write_png_frame();
+    show_in_inspector(hovered_vertex_);
+  }
+  if (worker_) worker_->acknowledge();
+  update_actions();
+  Q_EMIT snapshot_shown();
+}
+
+void MainWindow::show_report(const IterationReport& r) {
+  ++reports_received_;
+  chart_->add(r);
+  status_->setText(QString("iteration %1 (%2, t = %3): objective %4, DOG residual max %5, stitch gap max %6, "
+                           "%7 ms%8")
+                       .arg(r.iteration)
+                       .arg(QString::fromStdString(r.mode))
+                       .arg(r.t, 0, 'f', 3)
+                       .arg(r.diagnostics.objective, 0, 'g', 4)
+                       .arg(r.diagnostics.dog_max, 0, 'g', 3)
+                       .arg(r.diagnostics.stitch_gap_max, 0, 'g', 3)
+                       .arg(r.iteration_ms, 0, 'f', 1)
+                       .arg(r.step.failed ? ", FAILED: " + QString::fromStdString(r.step.failure) : QString()));
+}
+
+void MainWindow::render() {
+  if (scene_) scene_->layout_legends();
+  render_window_->Render();
+  view_->update();
+}
+
+void MainWindow::select_vertex(int vertex) {
+  selected_vertex_ = vertex;
+  show_in_inspector(-1);
+}
+
+void MainWindow::show_in_inspector(int hovered) {
+  hovered_vertex_ = hovered;
+  const int vertex = hovered >= 0 ? hovered : selected_vertex_;
+  if (vertex < 0 || !model_ || !snapshot_) {
+    inspector_->setText("Click a vertex to pick it, or point at one to inspect it.");
+    return;
+  }
+  attempt([&] {
+    inspector_->setText((hovered >= 0 ? QString("<i>under the mouse</i>") : QString("<i>picked</i>")) +
+                        describe_vertex(*model_, snapshot_->state, vertex));
+  });
+}
+
+QString MainWindow::inspector_text() const { return inspector_->text(); }
+
+void MainWindow::set_layer(vis::Layer layer, bool on) {
+  QAction* action = layer_actions_.at(layer);
+  if (action->isChecked() != on) action->setChecked(on);  // toggled() applies it
+  if (!scene_) return;
+  scene_->set_layer(layer, on);
+  // A colour layer switched on turns the other one off: the actions follow the scene.
+  for (const auto& [l, a] : layer_actions_) {
+    const QSignalBlocker block(a);
+    a->setChecked(scene_->layer_on(l));
+  }
+  render();
+}
+
+void MainWindow::set_view(vis::View view) {
+  scene_options_.view = view;
+  view_actions_.at(view)->setChecked(true);
+  if (!scene_) return;
+  scene_->set_options(scene_options_);
+  scene_->reset_camera();
+  render();
+}
+
+void MainWindow::set_coarse_visible(bool on) {
+  scene_options_.coarse = on;
+  if (coarse_action_->isChecked() != on) coarse_action_->setChecked(on);
+  if (!scene_) return;
+  scene_->set_options(scene_options_);
+  render();
+}
+
+void MainWindow::reset_camera() {
+  if (!scene_) return;
+  scene_->reset_camera();
+  render();
+}
+
+nlohmann::json MainWindow::camera_json() const { return vis::to_json(vis::camera_pose(renderer_->GetActiveCamera())); }
+
+bool MainWindow::save_camera(const QString& path) {
+  return attempt([&] { vis::save_camera(vis::camera_pose(renderer_->GetActiveCamera()), path.toStdString()); });
+}
+
+bool MainWindow::load_camera(const QString& path) {
+  const bool ok = attempt([&] { vis::apply_camera_pose(vis::load_camera(path.toStdString()), renderer_->GetActiveCamera()); });
+  if (ok) render();
+  return ok;
+}
+
+void MainWindow::step(int iterations) {
+  post([iterations](SolverWorker& w) {
+    for (int k = 0; k < iterations; ++k) w.step();
+  });
+}
+
+void MainWindow::play() { post([](SolverWorker& w) { w.play(); }); }
+void MainWindow::pause() { post([](SolverWorker& w) { w.pause(); }); }
+void MainWindow::reset_solver() {
+  chart_->clear();
+  post([](SolverWorker& w) { w.reset(); });
+}
+
+bool MainWindow::set_mode(const QString& mode) {
+  const std::string name = mode.toStdString();
+  if (!attempt([&] {
+        check_mode_name(name, "mode: ");
+        if (model_) check_mode_usable(name, *model_);
+      })) {
+    update_actions();
+    return false;
+  }
+  mode_ = name;
+  if (worker_) post([name](SolverWorker& w) { w.set_mode(name); });
+  update_actions();
+  return true;
+}
+
+bool MainWindow::set_scenario(const QString& scenario) {
+  const std::string name = scenario.toStdString();
+  if (!attempt([&] { check_scenario_name(name, "scenario: "); })) return false;
+  RunConfig config = config_;
+  config.scenario = name;
+  // A new base scenario starts the session again (the user's constraints go with it).
+  return set_run_config(config);
+}
+
+bool MainWindow::load_run_config(const QString& path) {
+  RunConfig config;
+  if (!attempt([&] { read_run_config(path.toStdString(), config); })) return false;
+  return set_run_config(config);
+}
+
+bool MainWindow::set_run_config(const RunConfig& config) {
+  if (!attempt([&] { validate_run_config(config, "solver settings"); })) return false;
+  config_ = config;
+  update_actions();
+  if (!worker_) return true;
+  chart_->clear();
+  const std::string mode = mode_;
+  post([config, mode](SolverWorker& w) { w.open(config, mode); });
+  return true;
+}
+
+void MainWindow::add_handle(int vertex) { post([vertex](SolverWorker& w) { w.add_handle(vertex); }); }
+void MainWindow::move_handle(int handle, const Eigen::Vector3d& target) {
+  post([handle, target](SolverWorker& w) { w.move_handle(handle, target); });
+}
+void MainWindow::remove_handle(int handle) { post([handle](SolverWorker& w) { w.remove_handle(handle); }); }
+void MainWindow::add_angle(int point, double degrees) {
+  post([point, degrees](SolverWorker& w) { w.add_angle(point, degrees); });
+}
+void MainWindow::remove_angle(int angle) { post([angle](SolverWorker& w) { w.remove_angle(angle); }); }
+void MainWindow::undo() { post([](SolverWorker& w) { w.undo(); }); }
+void MainWindow::redo() { post([](SolverWorker& w) { w.redo(); }); }
+
+bool MainWindow::open_workspace(const QString& path) {
+  Workspace w;
+  if (!attempt([&] { w = load_workspace(path.toStdString()); })) return false;
+  const RunConfig previous = config_;
+  config_ = w.config;
+  if (!open_pattern(QString::fromStdString(w.pattern), QString::fromStdString(w.resolution),
+                    QString::fromStdString(w.mode))) {
+    config_ = previous;
+    return false;
+  }
+  if (!w.camera.is_null()) pending_camera_ = w.camera;
+  post([w](SolverWorker& worker) { worker.restore(w); });
+  return true;
+}
+
+bool MainWindow::save_workspace(const QString& path) {
+  if (!worker_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  const std::string file = path.toStdString(), pattern = QFileInfo(pattern_path_).absoluteFilePath().toStdString(),
+                    res = resolution_.toStdString();
+  const nlohmann::json camera = camera_json();
+  post([file, pattern, res, camera](SolverWorker& w) { w.save_workspace(file, pattern, res, camera); });
+  return true;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const auto urls = event->mimeData()->urls();
+  if (urls.isEmpty()) return;
+  open_file(urls.front().toLocalFile());
+  event->acceptProposedAction();
+}
+
+void MainWindow::open_file(const QString& path) {
+  if (path.endsWith(".json", Qt::CaseInsensitive))
+    open_workspace(path);
+  else if (path.endsWith(".svg", Qt::CaseInsensitive))
+    open_pattern(path, resolution_.isEmpty() ? QString("21x21") : resolution_, QString::fromStdString(mode_));
+  else
+    report_error("Cannot open " + path + ": the studio opens crease patterns (.svg) and workspaces (.json).");
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  stop_frames();
+  stop_worker();
+  event->accept();
+}
+
+}  // namespace sdog::studio

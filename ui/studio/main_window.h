@@ -1,0 +1,187 @@
+#pragma once
+// The studio's main window: a 3D view of the model (vis::Scene in a QVTKOpenGLNativeWidget), the
+// solver on its own thread (SolverWorker), a live chart of the iterations, the vertex inspector,
+// menus File / Edit / View / Solver / Help.
+//
+// Every public operation is what a menu entry does, without dialogs, so that tests and the
+// command line drive the window as a user would. Errors go to the error sink (a message box by
+// default); operations that can fail return false after reporting.
+#include <QLabel>
+#include <QMainWindow>
+#include <QThread>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "geometry/atomic_output.h"
+#include "solver/run_config.h"
+#include "solver/workspace.h"
+#include "ui/studio/snapshot.h"
+#include "ui/vis/layers.h"
+#include "ui/vis/offscreen.h"
+#include "ui/vis/scene.h"
+
+class QAction;
+class QVTKOpenGLNativeWidget;
+
+namespace sdog::studio {
+
+class ObjectiveChart;
+class SolverWorker;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  /// `about` is the text of Help > About (the versions the program was built with).
+  explicit MainWindow(const QString& about, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  /// Where error messages go (default: a modal message box).
+  void set_error_sink(std::function<void(const QString&)> sink) { error_sink_ = std::move(sink); }
+
+  // File
+  /// Meshes the pattern and starts a session on it with the current run configuration.
+  bool open_pattern(const QString& path, const QString& resolution, const QString& mode = "standard");
+  /// The same pattern at another resolution (the mode stays if it can run there).
+  bool change_resolution(const QString& resolution);
+  bool open_workspace(const QString& path);
+  /// Saved by the solver thread; workspace_saved() follows.
+  bool save_workspace(const QString& path);
+  /// The current view rendered offscreen at the given size with the view's camera.
+  bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent);
+  /// From now on every shown state is written to `dir` as frame_NNNN.png, and every iteration as
+  /// frame_NNNN.vtu; stop_frames() writes frames.pvd and gives the files their final names.
+  bool start_frames(const QString& dir);
+  void stop_frames();
+  bool recording_frames() const { return png_frames_ != nullptr; }
+  int png_frames_written() const { return png_frame_count_; }
+  /// The whole window as it is on screen (sdog-studio --screenshot).
+  bool save_window_image(const QString& path);
+
+  // View
+  void set_layer(vis::Layer layer, bool on);
+  void set_view(vis::View view);
+  void set_coarse_visible(bool on);
+  void reset_camera();
+  bool save_camera(const QString& path);
+  bool load_camera(const QString& path);
+
+  // Solver and editing (sent to the solver thread; the results come back as snapshots)
+  void step(int iterations = 1);
+  void play();
+  void pause();
+  void reset_solver();
+  bool set_mode(const QString& mode);
+  bool set_scenario(const QString& scenario);
+  bool load_run_config(const QString& path);
+  /// Another run configuration (Solver > Settings): checked, then the session starts again.
+  bool set_run_config(const RunConfig& config);
+  const RunConfig& run_config() const { return config_; }
+  void add_handle(int vertex);
+  void move_handle(int handle, const Eigen::Vector3d& target);
+  void remove_handle(int handle);
+  void add_angle(int crease_point, double degrees);
+  void remove_angle(int angle);
+  void undo();
+  void redo();
+  /// Picks the vertex (Edit > Make handle uses it) and shows it in the inspector (-1: none).
+  void select_vertex(int vertex);
+
+  // State, for tests and the command line
+  const DogModel* model() const { return model_.get(); }
+  /// The last state shown (nullptr before the first).
+  const Snapshot* snapshot() const { return snapshot_ ? &*snapshot_ : nullptr; }
+  int reports_received() const { return reports_received_; }
+  bool playing() const { return playing_; }
+  int selected_vertex() const { return selected_vertex_; }
+  QString inspector_text() const;
+  vis::Scene* scene() const { return scene_.get(); }
+  vtkRenderer* renderer() const { return renderer_; }
+  /// The 3D view's interactor (its style picks on click and drags handles with Shift).
+  vtkRenderWindowInteractor* interactor() const;
+  const ObjectiveChart* chart() const { return chart_; }
+  QAction* layer_action(vis::Layer layer) const { return layer_actions_.at(layer); }
+
+ Q_SIGNALS:
+  void snapshot_shown();
+  void workspace_saved(const QString& path);
+  void frames_written(const QString& dir, int count);
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void build_file_menu();
+  void build_edit_menu();
+  void build_view_menu();
+  void build_solver_menu();
+  void build_help_menu();
+  void set_up_mouse();
+  void report_error(const QString& message);
+  /// Runs `what`; an exception becomes an error message and false.
+  bool attempt(const std::function<void()>& what);
+  void post(std::function<void(SolverWorker&)> command);
+  void stop_worker();
+  void start_worker();
+  void show_snapshot(const Snapshot& snapshot);
+  void show_report(const IterationReport& report);
+  void write_png_frame();
+  void render();
+  /// The hovered vertex (-1: none, then the picked one) in the inspector.
+  void show_in_inspector(int hovered);
+  void update_actions();
+  void open_file(const QString& path);
+  nlohmann::json camera_json() const;
+
+  QString about_;
+  std::function<void(const QString&)> error_sink_;
+
+  // The open pattern; the scene and the worker refer to the model.
+  QString pattern_path_, resolution_;
+  std::string mode_ = "standard";
+  RunConfig config_;
+  std::shared_ptr<const DogModel> model_;
+  std::unique_ptr<vis::Scene> scene_;
+  vis::SceneOptions scene_options_;
+  std::optional<Snapshot> snapshot_;
+  std::optional<nlohmann::json> pending_camera_;  // from a workspace, applied with its first state
+  bool camera_fitted_ = false;
+
+  QThread solver_thread_;
+  SolverWorker* worker_ = nullptr;
+  int generation_ = 0;  // of the worker; states from an earlier one are dropped
+  bool playing_ = false;
+  int reports_received_ = 0;
+  int selected_vertex_ = -1;
+  int hovered_vertex_ = -1;
+  int dragged_handle_ = -1;
+  double drag_depth_ = 0;
+
+  std::unique_ptr<OutputSet> png_frames_;
+  int png_frame_count_ = 0;
+  int last_png_iteration_ = -1;
+
+  QVTKOpenGLNativeWidget* view_;
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> render_window_;
+  vtkSmartPointer<vtkRenderer> renderer_;
+  ObjectiveChart* chart_;
+  QLabel* inspector_;
+  QLabel* status_;
+
+  std::map<vis::Layer, QAction*> layer_actions_;
+  std::map<std::string, QAction*> mode_actions_, scenario_actions_;
+  std::map<vis::View, QAction*> view_actions_;
+  QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr, *coarse_action_ = nullptr;
+  QAction *frames_action_ = nullptr;
+};
+
+}  // namespace sdog::studio

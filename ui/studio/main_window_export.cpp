@@ -1,0 +1,152 @@
+// MainWindow: pictures, frame series and the mouse in the 3D view.
+#include <QAction>
+#include <QFileInfo>
+#include <QPixmap>
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkRenderWindowInteractor.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "geometry/atomic_output.h"
+#include "geometry/errors.h"
+#include "ui/studio/click_drag_style.h"
+#include "ui/studio/main_window.h"
+#include "ui/studio/screen_picking.h"
+#include "ui/studio/solver_worker.h"
+#include "ui/vis/camera.h"
+#include "ui/vis/picture.h"
+
+namespace sdog::studio {
+namespace {
+
+/// Calls write(temporary path) and gives the file its name only when that succeeded.
+void write_file(const std::string& path, const std::function<void(const std::string&)>& write) {
+  const std::filesystem::path target(path);
+  OutputSet out(target.has_parent_path() ? target.parent_path().string() : ".");
+  write(out.temporary(target.filename().string()));
+  out.commit();
+}
+
+}  // namespace
+
+bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent) {
+  if (!snapshot_) {
+    report_error("Nothing to export yet: open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  vis::PictureOptions options;
+  options.layers = scene_->layers_on();
+  options.scene = scene_options_;
+  options.scene.font_size = 0;
+  options.size = size;
+  options.transparent = transparent;
+  options.camera = vis::camera_pose(renderer_->GetActiveCamera());
+  return attempt([&] {
+    write_file(path.toStdString(),
+               [&](const std::string& tmp) { vis::render_picture(*model_, snapshot_->state, options, tmp); });
+  });
+}
+
+bool MainWindow::save_window_image(const QString& path) {
+  render();
+  const QPixmap picture = grab();
+  return attempt([&] {
+    write_file(path.toStdString(), [&](const std::string& tmp) {
+      if (!picture.save(QString::fromStdString(tmp), "PNG"))
+        throw OutputError("cannot write the window picture to " + path.toStdString());
+    });
+  });
+}
+
+bool MainWindow::start_frames(const QString& dir) {
+  if (!worker_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  stop_frames();
+  if (!attempt([&] { png_frames_ = std::make_unique<OutputSet>(dir.toStdString()); })) return false;
+  png_frame_count_ = 0;
+  last_png_iteration_ = -1;
+  const std::string d = dir.toStdString();
+  post([d](SolverWorker& w) { w.start_frames(d); });
+  if (frames_action_) frames_action_->setChecked(true);
+  write_png_frame();
+  return true;
+}
+
+void MainWindow::stop_frames() {
+  if (!png_frames_) return;
+  attempt([&] { png_frames_->commit(); });
+  png_frames_.reset();
+  if (frames_action_) frames_action_->setChecked(false);
+  if (worker_) post([](SolverWorker& w) { w.stop_frames(); });
+}
+
+void MainWindow::write_png_frame() {
+  // One picture per iteration shown (edits without an iteration add none).
+  if (!snapshot_ || snapshot_->iteration == last_png_iteration_) return;
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.png", snapshot_->iteration);
+  vis::PictureOptions options;
+  options.layers = scene_->layers_on();
+  options.scene = scene_options_;
+  options.scene.font_size = 0;
+  options.size = {std::max(64, view_->width()), std::max(64, view_->height())};
+  options.camera = vis::camera_pose(renderer_->GetActiveCamera());
+  if (!attempt([&] { vis::render_picture(*model_, snapshot_->state, options, png_frames_->temporary(name)); })) {
+    png_frames_.reset();  // drops the frames written so far
+    if (frames_action_) frames_action_->setChecked(false);
+    return;
+  }
+  last_png_iteration_ = snapshot_->iteration;
+  ++png_frame_count_;
+}
+
+vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->interactor(); }
+
+void MainWindow::set_up_mouse() {
+  vtkNew<ClickDragStyle> style;
+  // The positions the view draws the fine mesh at.
+  auto shown = [this]() -> Eigen::MatrixX3d {
+    if (scene_options_.view == vis::View::Flat) return model_->fine.V;
+    return snapshot_->state.fine;
+  };
+  style->on_click = [this, shown](int x, int y) {
+    if (!snapshot_) return;
+    const int v = pick_point(renderer_, shown(), x, y, 12);
+    select_vertex(v);
+    status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
+                            : QString("no vertex within 12 pixels of the click"));
+  };
+  style->on_hover = [this, shown](int x, int y) {
+    if (!snapshot_) return;
+    show_in_inspector(pick_point(renderer_, shown(), x, y, 12));
+  };
+  style->on_grab = [this](int x, int y) {
+    if (!snapshot_ || snapshot_->constraints.handles.empty()) return false;
+    const auto& handles = snapshot_->constraints.handles;
+    Eigen::MatrixX3d targets(handles.size(), 3);
+    for (size_t i = 0; i < handles.size(); ++i) targets.row(i) = handles[i].target.transpose();
+    dragged_handle_ = pick_point(renderer_, targets, x, y, 15);
+    if (dragged_handle_ < 0) return false;
+    drag_depth_ = to_display(renderer_, handles[dragged_handle_].target).z();
+    return true;
+  };
+  style->on_drag = [this](int x, int y) {
+    const Eigen::Vector3d p = to_world(renderer_, x, y, drag_depth_);
+    status_->setText(QString("handle %1 to (%2, %3, %4): release to move it")
+                         .arg(dragged_handle_)
+                         .arg(p.x(), 0, 'f', 2)
+                         .arg(p.y(), 0, 'f', 2)
+                         .arg(p.z(), 0, 'f', 2));
+  };
+  style->on_release = [this](int x, int y) {
+    if (dragged_handle_ < 0) return;
+    move_handle(dragged_handle_, to_world(renderer_, x, y, drag_depth_));
+    dragged_handle_ = -1;
+  };
+  view_->interactor()->SetInteractorStyle(style);
+}
+
+}  // namespace sdog::studio

@@ -1,0 +1,271 @@
+// MainWindow: the menus, their shortcuts and the dialogs behind them.
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QKeySequence>
+#include <QMenuBar>
+#include <QMessageBox>
+
+#include "solver/mode_factory.h"
+#include "ui/studio/main_window.h"
+#include "ui/studio/objective_chart.h"
+#include "ui/studio/solver_settings.h"
+
+namespace sdog::studio {
+namespace {
+
+QAction* add_action(QMenu* menu, const QString& text, const QKeySequence& keys, const QString& tip) {
+  QAction* a = menu->addAction(text);
+  a->setShortcut(keys);
+  a->setToolTip(tip);
+  a->setStatusTip(tip);
+  return a;
+}
+
+/// Index of the constraint the user chooses from `items`; -1 when cancelled or there is none (said in
+/// a message).
+int choose(QWidget* parent, const QString& title, const QStringList& items) {
+  if (items.isEmpty()) {
+    QMessageBox::information(parent, title, "There is no such constraint to remove.");
+    return -1;
+  }
+  bool ok = false;
+  const QString item = QInputDialog::getItem(parent, title, "Constraint:", items, 0, false, &ok);
+  return ok ? static_cast<int>(items.indexOf(item)) : -1;
+}
+
+}  // namespace
+
+void MainWindow::build_menus() {
+  build_file_menu();
+  build_edit_menu();
+  build_view_menu();
+  build_solver_menu();
+  build_help_menu();
+  for (QMenu* menu : menuBar()->findChildren<QMenu*>()) menu->setToolTipsVisible(true);
+}
+
+void MainWindow::build_file_menu() {
+  QMenu* m = menuBar()->addMenu("&File");
+  connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG) at a resolution"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg)");
+            if (path.isEmpty()) return;
+            bool ok = false;
+            const QString res = QInputDialog::getText(
+                this, "Resolution", "Grid lines XxY (odd values also build the coarse mesh):", QLineEdit::Normal,
+                resolution_.isEmpty() ? "21x21" : resolution_, &ok);
+            if (ok) open_pattern(path, res, QString::fromStdString(mode_));
+          });
+  connect(add_action(m, "Change &resolution...", QKeySequence("Ctrl+R"),
+                     "Mesh the open pattern again at another resolution (odd values for the coarse modes)"),
+          &QAction::triggered, this, [this] {
+            bool ok = false;
+            const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY:", QLineEdit::Normal,
+                                                      resolution_, &ok);
+            if (ok) change_resolution(res);
+          });
+  m->addSeparator();
+  connect(add_action(m, "Open &workspace...", QKeySequence("Ctrl+Shift+O"),
+                     "Open a saved workspace: pattern, resolution, mode, settings, constraints, camera, positions"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getOpenFileName(this, "Open workspace", {}, "Workspaces (*.json)");
+            if (!path.isEmpty()) open_workspace(path);
+          });
+  connect(add_action(m, "&Save workspace...", QKeySequence::Save, "Save the session as a workspace (JSON)"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getSaveFileName(this, "Save workspace", {}, "Workspaces (*.json)");
+            if (!path.isEmpty()) save_workspace(path);
+          });
+  m->addSeparator();
+  connect(add_action(m, "Export &screenshot...", QKeySequence("Ctrl+E"),
+                     "Render the view at a chosen size to PNG, optionally with a transparent background"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getSaveFileName(this, "Export screenshot", {}, "PNG images (*.png)");
+            if (path.isEmpty()) return;
+            bool ok = false;
+            const QString size = QInputDialog::getText(this, "Image size", "WIDTHxHEIGHT in pixels:", QLineEdit::Normal,
+                                                       "1600x900", &ok);
+            if (!ok) return;
+            vis::ImageSize image;
+            if (!attempt([&] { image = vis::parse_image_size(size.toStdString()); })) return;
+            const bool transparent =
+                QMessageBox::question(this, "Background", "Transparent background?") == QMessageBox::Yes;
+            export_screenshot(path, image, transparent);
+          });
+  frames_action_ = add_action(m, "Record &frames...", QKeySequence("Ctrl+Shift+F"),
+                              "Write every iteration shown as PNG and .vtu (with frames.pvd for ParaView) into a "
+                              "folder; uncheck to finish");
+  frames_action_->setCheckable(true);
+  connect(frames_action_, &QAction::triggered, this, [this](bool on) {
+    if (!on) {
+      stop_frames();
+      return;
+    }
+    frames_action_->setChecked(false);
+    const QString dir = QFileDialog::getExistingDirectory(this, "Folder for the frames");
+    if (!dir.isEmpty()) start_frames(dir);
+  });
+  m->addSeparator();
+  connect(add_action(m, "&Quit", QKeySequence::Quit, "Close the studio"), &QAction::triggered, this, &QWidget::close);
+}
+
+void MainWindow::build_edit_menu() {
+  QMenu* m = menuBar()->addMenu("&Edit");
+  undo_action_ = add_action(m, "&Undo", QKeySequence::Undo, "Undo the last constraint edit");
+  connect(undo_action_, &QAction::triggered, this, &MainWindow::undo);
+  redo_action_ = add_action(m, "&Redo", QKeySequence("Ctrl+Shift+Z"), "Redo the constraint edit undone last");
+  connect(redo_action_, &QAction::triggered, this, &MainWindow::redo);
+  m->addSeparator();
+  connect(add_action(m, "Make &handle", QKeySequence("H"),
+                     "Hold the picked vertex (click it in the view) where it is; Shift + drag the handle to move it"),
+          &QAction::triggered, this, [this] {
+            if (selected_vertex_ < 0)
+              report_error("Pick a vertex first: click it in the view.");
+            else
+              add_handle(selected_vertex_);
+          });
+  connect(add_action(m, "Remove handle...", QKeySequence("Shift+H"), "Remove one of the position handles"),
+          &QAction::triggered, this, [this] {
+            QStringList items;
+            if (snapshot_)
+              for (const auto& h : snapshot_->constraints.handles) items << QString("vertex %1").arg(h.vertex);
+            if (const int i = choose(this, "Remove handle", items); i >= 0) remove_handle(i);
+          });
+  connect(add_action(m, "Add &angle constraint...", QKeySequence("A"),
+                     "Ask for a dihedral angle at a crease point between two patches"),
+          &QAction::triggered, this, [this] {
+            if (!model_) {
+              report_error("Open a crease pattern first (File > Open pattern).");
+              return;
+            }
+            const int points = static_cast<int>(model_->fine.stitching.points.size());
+            if (points == 0) {
+              report_error("This pattern has no crease points.");
+              return;
+            }
+            bool ok = false;
+            const int point = QInputDialog::getInt(this, "Angle constraint",
+                                                   QString("Crease point (0 to %1):").arg(points - 1), 0, 0, points - 1,
+                                                   1, &ok);
+            if (!ok) return;
+            const double degrees = QInputDialog::getDouble(this, "Angle constraint",
+                                                           "Dihedral angle in degrees (0: flat):", 60, -180, 180, 1, &ok);
+            if (ok) add_angle(point, degrees);
+          });
+  connect(add_action(m, "Remove angle constraint...", QKeySequence("Shift+A"), "Remove one of the angle constraints"),
+          &QAction::triggered, this, [this] {
+            QStringList items;
+            if (snapshot_)
+              for (const auto& a : snapshot_->constraints.angles)
+                items << QString("crease point %1: %2 degrees").arg(a.crease_point).arg(a.degrees);
+            if (const int i = choose(this, "Remove angle constraint", items); i >= 0) remove_angle(i);
+          });
+}
+
+void MainWindow::build_view_menu() {
+  QMenu* m = menuBar()->addMenu("&View");
+  int key = 1;
+  for (vis::Layer layer : vis::all_layers()) {
+    QAction* a = add_action(m, vis::layer_name(layer), QKeySequence(QString("Ctrl+%1").arg(key++ % 10)),
+                            vis::layer_description(layer));
+    a->setCheckable(true);
+    connect(a, &QAction::toggled, this, [this, layer](bool on) { set_layer(layer, on); });
+    layer_actions_[layer] = a;
+  }
+  layer_actions_.at(vis::Layer::VertexTypes)->setChecked(true);
+  layer_actions_.at(vis::Layer::Wireframe)->setChecked(true);
+  m->addSeparator();
+  auto* views = new QActionGroup(this);
+  const std::pair<vis::View, const char*> names[] = {
+      {vis::View::ThreeD, "&3D"}, {vis::View::Flat, "&Flat crease pattern"}, {vis::View::SideBySide, "Fine and coarse &side by side"}};
+  int f = 2;
+  for (const auto& [view, name] : names) {
+    QAction* a = add_action(m, name, QKeySequence(QString("F%1").arg(f++)),
+                            QString("View: ") + vis::view_name(view));
+    a->setCheckable(true);
+    a->setActionGroup(views);
+    connect(a, &QAction::triggered, this, [this, view = view] { set_view(view); });
+    view_actions_[view] = a;
+  }
+  view_actions_.at(scene_options_.view)->setChecked(true);
+  coarse_action_ = add_action(m, "&Coarse mesh", QKeySequence("C"), "Draw the coarse mesh's edges over the fine mesh");
+  coarse_action_->setCheckable(true);
+  connect(coarse_action_, &QAction::toggled, this, &MainWindow::set_coarse_visible);
+  m->addSeparator();
+  connect(add_action(m, "&Reset camera", QKeySequence("Home"), "The view's default camera"), &QAction::triggered,
+          this, &MainWindow::reset_camera);
+  connect(add_action(m, "Save camera...", QKeySequence(), "Save the camera pose (JSON, as sdog render --camera reads it)"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getSaveFileName(this, "Save camera", {}, "Cameras (*.json)");
+            if (!path.isEmpty()) save_camera(path);
+          });
+  connect(add_action(m, "Load camera...", QKeySequence(), "Load a saved camera pose"), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Load camera", {}, "Cameras (*.json)");
+    if (!path.isEmpty()) load_camera(path);
+  });
+}
+
+void MainWindow::build_solver_menu() {
+  QMenu* m = menuBar()->addMenu("&Solver");
+  play_action_ = add_action(m, "&Play", QKeySequence("Space"), "Iterate continuously (again: pause)");
+  play_action_->setCheckable(true);
+  connect(play_action_, &QAction::triggered, this, [this](bool on) { on ? play() : pause(); });
+  connect(add_action(m, "&Step", QKeySequence("S"), "One iteration"), &QAction::triggered, this, [this] { step(1); });
+  connect(add_action(m, "Step &10", QKeySequence("Shift+S"), "Ten iterations"), &QAction::triggered, this,
+          [this] { step(10); });
+  connect(add_action(m, "&Reset", QKeySequence("Ctrl+Backspace"), "Back to the start state (the constraints stay)"),
+          &QAction::triggered, this, &MainWindow::reset_solver);
+  m->addSeparator();
+  // One exclusive checkable entry per name; choosing one calls choose(name).
+  auto add_choices = [this](QMenu* menu, const std::vector<std::string>& names,
+                            std::map<std::string, QAction*>& actions, bool (MainWindow::*choose)(const QString&)) {
+    auto* group = new QActionGroup(this);
+    for (const std::string& name : names) {
+      QAction* a = menu->addAction(QString::fromStdString(name));
+      a->setCheckable(true);
+      a->setActionGroup(group);
+      connect(a, &QAction::triggered, this, [this, name, choose] { (this->*choose)(QString::fromStdString(name)); });
+      actions[name] = a;
+    }
+  };
+  add_choices(m->addMenu("&Mode"), mode_names(), mode_actions_, &MainWindow::set_mode);
+  for (auto& [name, a] : mode_actions_)
+    if (mode_needs_coarse(name)) a->setToolTip("needs the coarse mesh (odd resolution)");
+  add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::set_scenario);
+  connect(add_action(m, "Se&ttings...", QKeySequence("Ctrl+T"),
+                     "Weights, tolerances and iteration counts (the session starts again with them)"),
+          &QAction::triggered, this, [this] {
+            if (const auto config = edit_solver_settings(this, config_)) set_run_config(*config);
+          });
+  connect(add_action(m, "Load run &configuration...", QKeySequence(),
+                     "Scenario, weights, tolerances and constraints from a JSON file (as sdog run --config reads it)"),
+          &QAction::triggered, this, [this] {
+            const QString path = QFileDialog::getOpenFileName(this, "Run configuration", {}, "Run configurations (*.json)");
+            if (!path.isEmpty()) load_run_config(path);
+          });
+}
+
+void MainWindow::build_help_menu() {
+  QMenu* m = menuBar()->addMenu("&Help");
+  connect(add_action(m, "&About", QKeySequence::HelpContents, "Versions of the studio and its libraries"),
+          &QAction::triggered, this, [this] { QMessageBox::about(this, "About Scalable DOGs studio", about_); });
+  connect(add_action(m, "About &Qt", QKeySequence(), "Qt's version and license"), &QAction::triggered, qApp,
+          &QApplication::aboutQt);
+}
+
+void MainWindow::update_actions() {
+  for (auto& [name, a] : mode_actions_) {
+    a->setChecked(name == mode_);
+    a->setEnabled(model_ && (model_->has_coarse || !mode_needs_coarse(name)));
+  }
+  for (auto& [name, a] : scenario_actions_) a->setChecked(name == config_.scenario);
+  play_action_->setChecked(playing_);
+  play_action_->setText(playing_ ? "&Pause" : "&Play");
+  undo_action_->setEnabled(snapshot_ && snapshot_->can_undo);
+  redo_action_->setEnabled(snapshot_ && snapshot_->can_redo);
+}
+
+}  // namespace sdog::studio

@@ -1,0 +1,36 @@
+#pragma once
+// A live chart of the solver's iterations, drawn with QPainter: above, log10 of each objective term
+// (unweighted sums of squares, Diagnostics::terms) and of the DOG residual; below, the time per
+// iteration in milliseconds. Keeps the last kMaxIterations iterations.
+#include <QWidget>
+#include <array>
+#include <deque>
+
+#include "solver/run.h"
+
+namespace sdog::studio {
+
+class ObjectiveChart : public QWidget {
+  Q_OBJECT
+
+ public:
+  static constexpr int kMaxIterations = 400;
+  explicit ObjectiveChart(QWidget* parent = nullptr);
+  void add(const IterationReport& report);
+  void clear();
+  int point_count() const { return static_cast<int>(points_.size()); }
+  QSize sizeHint() const override { return {360, 320}; }
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+
+ private:
+  struct Point {
+    int iteration;
+    std::array<double, kTermCount + 1> log_values;  // the terms, then the DOG residual
+    double ms;
+  };
+  std::deque<Point> points_;
+};
+
+}  // namespace sdog::studio

@@ -1,0 +1,25 @@
+#pragma once
+// What the solver thread hands to the window: plain values (no pointers into the session), sent
+// through queued Qt signals.
+#include <QMetaType>
+#include <string>
+
+#include "solver/run.h"
+#include "solver/session.h"
+#include "ui/vis/scene_state.h"
+
+namespace sdog::studio {
+
+/// The session's state after a command (an iteration, an edit, a reset, ...).
+struct Snapshot {
+  vis::SceneState state;
+  int iteration = 0;
+  std::string mode;
+  UserConstraints constraints;
+  bool can_undo = false, can_redo = false;
+};
+
+}  // namespace sdog::studio
+
+Q_DECLARE_METATYPE(sdog::studio::Snapshot)
+Q_DECLARE_METATYPE(sdog::IterationReport)

@@ -1,0 +1,171 @@
+#include "ui/studio/solver_worker.h"
+
+#include <QMetaObject>
+#include <exception>
+
+#include "geometry/errors.h"
+
+namespace sdog::studio {
+
+SolverWorker::SolverWorker(std::shared_ptr<const DogModel> model)
+    : model_(std::move(model)), play_timer_(new QTimer(this)) {
+  play_timer_->setInterval(0);
+  connect(play_timer_, &QTimer::timeout, this, [this] {
+    try {
+      step();
+    } catch (const std::exception& e) {
+      pause();
+      Q_EMIT failed(QString::fromStdString(e.what()));
+    }
+  });
+}
+
+SolverWorker::~SolverWorker() = default;
+
+void SolverWorker::post(std::function<void(SolverWorker&)> command) {
+  QMetaObject::invokeMethod(
+      this,
+      [this, command = std::move(command)] {
+        try {
+          command(*this);
+        } catch (const std::exception& e) {
+          Q_EMIT failed(QString::fromStdString(e.what()));
+          if (session_) send_snapshot();
+        }
+      },
+      Qt::QueuedConnection);
+}
+
+Session& SolverWorker::session() {
+  if (!session_) throw UsageError("no pattern is open");
+  return *session_;
+}
+
+void SolverWorker::send_snapshot() {
+  const Session& s = *session_;
+  Snapshot snap;
+  snap.state = vis::scene_state(s.problem(), s.positions(), s.coarse_positions(), &s.scenario(), s.time());
+  snap.iteration = s.iteration();
+  snap.mode = s.mode();
+  snap.constraints = s.constraints();
+  snap.can_undo = s.can_undo();
+  snap.can_redo = s.can_redo();
+  snapshot_taken_ = false;
+  Q_EMIT snapshot_ready(snap);
+}
+
+void SolverWorker::open(const RunConfig& config, const std::string& mode) {
+  pause();
+  stop_frames();
+  session_.reset();
+  session_ = std::make_unique<Session>(*model_, config, mode);
+  send_snapshot();
+}
+
+void SolverWorker::step() {
+  const IterationReport report = session().step();
+  if (frame_writer_) frame_writer_->on_iteration(report, session_->positions());
+  Q_EMIT iterated(report);
+  if (report.step.failed) {
+    pause();
+    send_snapshot();
+    throw SolverError("iteration " + std::to_string(report.iteration) + " failed: " + report.step.failure);
+  }
+  // While playing, a state the window has not taken yet is replaced by the next one.
+  if (!play_timer_->isActive() || snapshot_taken_) send_snapshot();
+}
+
+void SolverWorker::play() {
+  session();
+  if (play_timer_->isActive()) return;
+  play_timer_->start();
+  Q_EMIT playing_changed(true);
+}
+
+void SolverWorker::pause() {
+  if (!play_timer_->isActive()) return;
+  play_timer_->stop();
+  Q_EMIT playing_changed(false);
+  if (session_) send_snapshot();
+}
+
+void SolverWorker::reset() {
+  session().reset();
+  send_snapshot();
+}
+
+void SolverWorker::set_mode(const std::string& mode) {
+  session().set_mode(mode);
+  send_snapshot();
+}
+
+void SolverWorker::add_handle(int vertex) {
+  session().add_handle(vertex);
+  send_snapshot();
+}
+
+void SolverWorker::move_handle(int handle, const Eigen::Vector3d& target) {
+  session().move_handle(handle, target);
+  send_snapshot();
+}
+
+void SolverWorker::remove_handle(int handle) {
+  session().remove_handle(handle);
+  send_snapshot();
+}
+
+void SolverWorker::add_angle(int crease_point, double degrees) {
+  session().add_angle(crease_point, degrees);
+  send_snapshot();
+}
+
+void SolverWorker::remove_angle(int angle) {
+  session().remove_angle(angle);
+  send_snapshot();
+}
+
+void SolverWorker::undo() {
+  session().undo();
+  send_snapshot();
+}
+
+void SolverWorker::redo() {
+  session().redo();
+  send_snapshot();
+}
+
+void SolverWorker::restore(const Workspace& w) {
+  Session& s = session();
+  if (s.mode() != w.mode) s.set_mode(w.mode);
+  s.set_constraints(w.constraints);
+  if (w.positions.size() > 0) s.set_positions(w.positions, w.iteration);
+  send_snapshot();
+}
+
+void SolverWorker::save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
+                                  const nlohmann::json& camera) {
+  sdog::save_workspace(workspace_of(session(), pattern, resolution, camera), path);
+  Q_EMIT workspace_saved(QString::fromStdString(path));
+}
+
+void SolverWorker::start_frames(const std::string& dir) {
+  stop_frames();
+  Session& s = session();
+  auto files = std::make_unique<OutputSet>(dir);
+  // Every iteration is written; the last one is whichever comes before stop_frames().
+  auto writer = std::make_unique<vis::FrameWriter>(*model_, s.problem(), *files, 1, -1);
+  if (s.iteration() == 0) writer->write_start(s.positions());  // frame_0000 is the start state
+  frame_files_ = std::move(files);
+  frame_writer_ = std::move(writer);
+}
+
+void SolverWorker::stop_frames() {
+  if (!frame_writer_) return;
+  auto writer = std::move(frame_writer_);
+  auto files = std::move(frame_files_);
+  writer->finish();
+  files->commit();
+  Q_EMIT frames_written(QString::fromStdString(files->dir()), writer->frame_count());
+}
+
+}  // namespace sdog::studio

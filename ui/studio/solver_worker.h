@@ -1,0 +1,81 @@
+#pragma once
+// The solver thread's object: owns the Session (which is not thread safe) and does everything the
+// window asks of it, one command at a time, in its thread's event loop. The window posts commands
+// (post()) and receives Snapshot and IterationReport values through queued signals.
+//
+// While playing, the worker steps as fast as it can and reports every iteration, but sends a new
+// snapshot only when the window has taken the previous one (acknowledge()), so that the view is
+// never more than one state behind and the queue does not grow with states nobody will see.
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "geometry/atomic_output.h"
+#include "solver/run_config.h"
+#include "solver/session.h"
+#include "solver/workspace.h"
+#include "ui/studio/snapshot.h"
+#include "ui/vis/frame_writer.h"
+
+namespace sdog::studio {
+
+class SolverWorker : public QObject {
+  Q_OBJECT
+
+ public:
+  /// Made in the window's thread, then moved to the solver thread (QObject::moveToThread).
+  explicit SolverWorker(std::shared_ptr<const DogModel> model);
+  ~SolverWorker() override;
+
+  /// Runs `command` on the worker's thread (queued). Exceptions it throws become failed().
+  void post(std::function<void(SolverWorker&)> command);
+  /// Thread safe: the window has shown the last snapshot.
+  void acknowledge() { snapshot_taken_ = true; }
+
+  // Commands (call them through post()). Each sends a snapshot afterwards.
+  void open(const RunConfig& config, const std::string& mode);
+  void step();
+  void play();
+  void pause();
+  void reset();
+  void set_mode(const std::string& mode);
+  void add_handle(int vertex);
+  void move_handle(int handle, const Eigen::Vector3d& target);
+  void remove_handle(int handle);
+  void add_angle(int crease_point, double degrees);
+  void remove_angle(int angle);
+  void undo();
+  void redo();
+  /// A loaded workspace: its mode, constraints and positions.
+  void restore(const Workspace& workspace);
+  void save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
+                      const nlohmann::json& camera);
+  /// Frames (.vtu of the fine mesh, every iteration from now on) into `dir`.
+  void start_frames(const std::string& dir);
+  /// Writes frames.pvd and renames the frames to their final names.
+  void stop_frames();
+
+ Q_SIGNALS:
+  void snapshot_ready(const sdog::studio::Snapshot& snapshot);
+  void iterated(const sdog::IterationReport& report);
+  void failed(const QString& message);
+  void playing_changed(bool playing);
+  void workspace_saved(const QString& path);
+  void frames_written(const QString& dir, int count);
+
+ private:
+  Session& session();
+  void send_snapshot();
+  std::shared_ptr<const DogModel> model_;
+  std::unique_ptr<Session> session_;
+  QTimer* play_timer_;
+  std::atomic<bool> snapshot_taken_{true};
+  std::unique_ptr<OutputSet> frame_files_;
+  std::unique_ptr<vis::FrameWriter> frame_writer_;
+};
+
+}  // namespace sdog::studio
