@@ -150,13 +150,8 @@ void run(const RunArgs& a) {
 
   g_cancel = false;
   auto previous = std::signal(SIGINT, on_interrupt);
-  size_t next_switch = 0;
-  const ModeSchedule schedule = [&](int k, const Dofs& state) -> Mode* {
-    if (next_switch >= config.switches.size() || config.switches[next_switch].iteration != k) return nullptr;
-    mode = switch_mode(config.switches[next_switch++].mode, problem, scenario, config, model, state);
-    return mode.get();
-  };
-  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel, schedule);
+  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel,
+                                          switch_schedule(problem, scenario, config, model, mode));
   std::signal(SIGINT, previous);
   progress.finish();
   const bool cancelled = !summary.failed && summary.iterations < total;

@@ -7,19 +7,6 @@
 namespace sdog {
 namespace {
 
-// Fine crease point -> the coarse crease point at the same flat position, or -1.
-std::vector<int> coarse_crease_twins(const DogModel& model) {
-  std::vector<int> twin(model.fine.stitching.points.size(), -1);
-  const auto& fine_curves = model.fine.stitching.curves;
-  const auto& coarse_curves = model.coarse.stitching.curves;
-  for (size_t c = 0; c < fine_curves.size() && c < model.map.curves.size() && c < coarse_curves.size(); ++c)
-    for (size_t k = 0; k < fine_curves[c].points.size() && k < model.map.curves[c].size(); ++k) {
-      const int index = model.map.curves[c][k].coarse;
-      if (index >= 0) twin[fine_curves[c].points[k]] = coarse_curves[c].points[index];
-    }
-  return twin;
-}
-
 const DogModel& checked(const DogModel& model, const std::string& mode_name) {
   CoarseLevel::check_usable(model, mode_name);
   return model;

@@ -38,6 +38,15 @@ std::unique_ptr<Mode> switch_mode(const std::string& name, DogProblem& problem, 
   return mode;
 }
 
+ModeSchedule switch_schedule(DogProblem& problem, const Scenario& scenario, const RunConfig& config,
+                             const DogModel& model, std::unique_ptr<Mode>& current) {
+  return [&, next = size_t{0}](int k, const Dofs& x) mutable -> Mode* {
+    if (next >= config.switches.size() || config.switches[next].iteration != k) return nullptr;
+    current = switch_mode(config.switches[next++].mode, problem, scenario, config, model, x);
+    return current.get();
+  };
+}
+
 std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
                                 const RunConfig& config, const DogModel* model) {
   if (name == "standard") return std::make_unique<StandardMode>(problem, scenario, config.standard);

@@ -6,6 +6,7 @@
 
 #include "geometry/dog_model.h"
 #include "solver/mode.h"
+#include "solver/run.h"
 #include "solver/run_config.h"
 
 namespace sdog {
@@ -35,5 +36,11 @@ std::unique_ptr<Mode> make_mode(const std::string& name, DogProblem& problem, co
 /// that ran before must not iterate again: the new one owns the problem's blocks.
 std::unique_ptr<Mode> switch_mode(const std::string& name, DogProblem& problem, const Scenario& scenario,
                                   const RunConfig& config, const DogModel& model, const Dofs& x);
+
+/// The schedule of config.switches for run_scenario: at each switch's iteration the mode in
+/// `current` is replaced by switch_mode's (so `current` always owns the running mode). Every
+/// argument must outlive the run.
+ModeSchedule switch_schedule(DogProblem& problem, const Scenario& scenario, const RunConfig& config,
+                             const DogModel& model, std::unique_ptr<Mode>& current);
 
 }  // namespace sdog

@@ -1,5 +1,7 @@
 #include "solver/restriction.h"
 
+#include "solver/crease_geometry.h"
+
 #include <algorithm>
 #include <Eigen/QR>
 #include <stdexcept>
@@ -29,10 +31,6 @@ Eigen::Vector3d extrapolate(const DogMesh& fine, const std::vector<int>& near, c
   return A.row(0).transpose();
 }
 
-Eigen::Vector3d edge_point(const EdgePoint& e, const Dofs& x) {
-  return e.t * vertex_of(x, e.v1) + (1 - e.t) * vertex_of(x, e.v2);
-}
-
 // Moves the coarse-only vertices so that the coarse crease points land on their fine twins: for
 // every copy t x_v1 + (1 - t) x_v2 = P (P the fine crease point, the mean of its copies) with one
 // coarse-only end u and the other end known, least squares in u together with a weak pull
@@ -45,16 +43,15 @@ void match_crease_points(const DogModel& model, const Dofs& fine_x, Dofs& x) {
   const auto& twin = model.map.coarse_to_fine;
   std::vector<double> a(coarse.vertex_count(), 0.0);
   std::vector<Eigen::Vector3d> b(coarse.vertex_count(), Eigen::Vector3d::Zero());
-  const auto& fine_curves = model.fine.stitching.curves;
-  for (size_t c = 0; c < fine_curves.size() && c < model.map.curves.size(); ++c)
-    for (size_t k = 0; k < fine_curves[c].points.size() && k < model.map.curves[c].size(); ++k) {
-      const int index = model.map.curves[c][k].coarse;
-      if (index < 0) continue;
+  const std::vector<int> crease_twin = coarse_crease_twins(model);
+  for (const auto& curve : model.fine.stitching.curves)
+    for (int f : curve.points) {
+      if (crease_twin[f] < 0) continue;
       Eigen::Vector3d P = Eigen::Vector3d::Zero();
-      const auto& fine_copies = model.fine.stitching.points[fine_curves[c].points[k]].copies;
-      for (const EdgePoint& e : fine_copies) P += edge_point(e, fine_x);
+      const auto& fine_copies = model.fine.stitching.points[f].copies;
+      for (const EdgePoint& e : fine_copies) P += edge_point_position(e, fine_x);
       P /= static_cast<double>(fine_copies.size());
-      for (const EdgePoint& e : coarse.stitching.points[coarse.stitching.curves[c].points[index]].copies) {
+      for (const EdgePoint& e : coarse.stitching.points[crease_twin[f]].copies) {
         const bool free1 = twin[e.v1] < 0, free2 = twin[e.v2] < 0;
         if (free1 == free2) continue;  // both ends known (a crease point at a link vertex) or both free
         const int u = free1 ? e.v1 : e.v2, known = free1 ? e.v2 : e.v1;
@@ -68,6 +65,18 @@ void match_crease_points(const DogModel& model, const Dofs& fine_x, Dofs& x) {
 }
 
 }  // namespace
+
+std::vector<int> coarse_crease_twins(const DogModel& model) {
+  std::vector<int> twin(model.fine.stitching.points.size(), -1);
+  const auto& fine_curves = model.fine.stitching.curves;
+  const auto& coarse_curves = model.coarse.stitching.curves;
+  for (size_t c = 0; c < fine_curves.size() && c < model.map.curves.size() && c < coarse_curves.size(); ++c)
+    for (size_t k = 0; k < fine_curves[c].points.size() && k < model.map.curves[c].size(); ++k) {
+      const int index = model.map.curves[c][k].coarse;
+      if (index >= 0) twin[fine_curves[c].points[k]] = coarse_curves[c].points[index];
+    }
+  return twin;
+}
 
 Dofs restrict_to_coarse(const DogModel& model, const Dofs& fine_x) {
   if (!model.has_coarse) throw std::logic_error("restrict_to_coarse: the model has no coarse mesh");

@@ -15,6 +15,10 @@
 
 namespace sdog {
 
+/// Per fine crease point: the coarse crease point at the same flat position (FineCoarseMap::curves),
+/// or -1. The model must have its coarse mesh.
+std::vector<int> coarse_crease_twins(const DogModel& model);
+
 /// Coarse positions for fine positions `fine_x`. The model must have its coarse mesh.
 Dofs restrict_to_coarse(const DogModel& model, const Dofs& fine_x);
 

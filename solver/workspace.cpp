@@ -1,11 +1,10 @@
 #include "solver/workspace.h"
 
 #include <filesystem>
-#include <fstream>
-#include <set>
 
 #include "geometry/atomic_output.h"
 #include "geometry/errors.h"
+#include "solver/json_field.h"
 
 namespace sdog {
 namespace {
@@ -13,37 +12,6 @@ namespace {
 using nlohmann::json;
 constexpr const char* kFormat = "sdog-workspace";
 constexpr int kVersion = 1;
-
-[[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& what) {
-  throw InputError(source + ": " + path + ": " + what);
-}
-
-Eigen::Vector3d vec3(const json& j, const std::string& source, const std::string& path) {
-  if (!j.is_array() || j.size() != 3) fail(source, path, "expected an array of 3 numbers");
-  Eigen::Vector3d v;
-  for (int i = 0; i < 3; ++i) {
-    if (!j[i].is_number()) fail(source, path, "expected an array of 3 numbers");
-    v[i] = j[i].get<double>();
-    if (!std::isfinite(v[i])) fail(source, path, "expected finite numbers");
-  }
-  return v;
-}
-
-int index(const json& j, const std::string& source, const std::string& path) {
-  if (!j.is_number_integer() || j.get<long long>() < 0) fail(source, path, "expected an index (an integer >= 0)");
-  return j.get<int>();
-}
-
-const json& member(const json& j, const char* key, const std::string& source, const std::string& path) {
-  if (!j.is_object() || !j.contains(key)) fail(source, path, std::string("missing \"") + key + "\"");
-  return j.at(key);
-}
-
-std::string text(const json& j, const char* key, const std::string& source) {
-  const json& v = member(j, key, source, "$");
-  if (!v.is_string()) fail(source, std::string("$.") + key, "expected a string");
-  return v.get<std::string>();
-}
 
 }  // namespace
 
@@ -76,49 +44,47 @@ json to_json(const Workspace& w) {
 }
 
 Workspace workspace_from_json(const json& j, const std::string& source) {
-  if (!j.is_object()) fail(source, "$", "expected a JSON object");
-  if (!j.contains("format") || j["format"] != kFormat)
-    fail(source, "$.format", std::string("not a workspace (expected \"") + kFormat + "\")");
-  if (!j.contains("version") || j["version"] != kVersion)
-    fail(source, "$.version", "unsupported version (this program reads version " + std::to_string(kVersion) + ")");
-  for (const auto& [key, value] : j.items()) {
-    static const std::set<std::string> known = {"format", "version", "pattern", "resolution", "mode", "iteration",
-                                                "config", "handles", "angles", "camera", "positions"};
-    if (!known.count(key)) fail(source, "$." + key, "unknown key");
-  }
+  const Field root(j, "$", source);
+  if (!j.is_object()) root.fail("expected a JSON object");
+  if (!root.has("format")) root.fail("missing \"format\": not a workspace file");
+  if (j["format"] != kFormat) root["format"].fail(std::string("not a workspace (expected \"") + kFormat + "\")");
+  if (!root.has("version") || j["version"] != kVersion)
+    root.fail("unsupported or missing \"version\" (this program reads version " + std::to_string(kVersion) + ")");
+  root.expect_object({"format", "version", "pattern", "resolution", "mode", "iteration", "config", "handles",
+                      "angles", "camera", "positions"});
+  for (const char* key : {"pattern", "resolution", "mode"})
+    if (!root.has(key)) root.fail(std::string("missing \"") + key + "\"");
   Workspace w;
-  w.pattern = text(j, "pattern", source);
-  w.resolution = text(j, "resolution", source);
-  w.mode = text(j, "mode", source);
-  if (j.contains("iteration")) w.iteration = index(j["iteration"], source, "$.iteration");
-  if (j.contains("config")) apply_run_config(j["config"], source + " ($.config)", w.config);
-  if (j.contains("handles")) {
-    const json& list = j["handles"];
-    if (!list.is_array()) fail(source, "$.handles", "expected an array");
-    for (size_t i = 0; i < list.size(); ++i) {
-      const std::string p = "$.handles[" + std::to_string(i) + "]";
-      w.constraints.handles.push_back({index(member(list[i], "vertex", source, p), source, p + ".vertex"),
-                                       vec3(member(list[i], "target", source, p), source, p + ".target")});
+  w.pattern = root["pattern"].text();
+  w.resolution = root["resolution"].text();
+  w.mode = root["mode"].text();
+  if (root.has("iteration")) w.iteration = root["iteration"].integer(0);
+  if (root.has("config")) apply_run_config(j["config"], source + " ($.config)", w.config);
+  if (root.has("handles")) {
+    const Field list = root["handles"];
+    for (size_t i = 0; i < list.array_size(); ++i) {
+      const Field h = list[i];
+      h.expect_object({"vertex", "target"});
+      if (!h.has("vertex") || !h.has("target")) h.fail("give \"vertex\" and \"target\"");
+      w.constraints.handles.push_back({h["vertex"].integer(0), h["target"].vector<3>()});
     }
   }
-  if (j.contains("angles")) {
-    const json& list = j["angles"];
-    if (!list.is_array()) fail(source, "$.angles", "expected an array");
-    for (size_t i = 0; i < list.size(); ++i) {
-      const std::string p = "$.angles[" + std::to_string(i) + "]";
-      const json& d = member(list[i], "degrees", source, p);
-      if (!d.is_number() || !(std::abs(d.get<double>()) <= 180)) fail(source, p + ".degrees", "expected degrees in [-180, 180]");
-      w.constraints.angles.push_back({index(member(list[i], "crease_point", source, p), source, p + ".crease_point"),
-                                      d.get<double>()});
+  if (root.has("angles")) {
+    const Field list = root["angles"];
+    for (size_t i = 0; i < list.array_size(); ++i) {
+      const Field a = list[i];
+      a.expect_object({"crease_point", "degrees"});
+      if (!a.has("crease_point") || !a.has("degrees")) a.fail("give \"crease_point\" and \"degrees\"");
+      const double degrees = a["degrees"].number();
+      if (!(std::abs(degrees) <= 180)) a["degrees"].fail("expected degrees in [-180, 180]");
+      w.constraints.angles.push_back({a["crease_point"].integer(0), degrees});
     }
   }
-  if (j.contains("camera")) w.camera = j["camera"];
-  if (j.contains("positions")) {
-    const json& list = j["positions"];
-    if (!list.is_array()) fail(source, "$.positions", "expected an array");
-    w.positions.resize(3 * static_cast<Eigen::Index>(list.size()));
-    for (size_t v = 0; v < list.size(); ++v)
-      w.positions.segment<3>(3 * v) = vec3(list[v], source, "$.positions[" + std::to_string(v) + "]");
+  if (root.has("camera")) w.camera = j["camera"];
+  if (root.has("positions")) {
+    const Field list = root["positions"];
+    w.positions.resize(3 * static_cast<Eigen::Index>(list.array_size()));
+    for (size_t v = 0; v < list.array_size(); ++v) w.positions.segment<3>(3 * v) = list[v].vector<3>();
   }
   return w;
 }

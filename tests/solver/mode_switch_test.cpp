@@ -41,13 +41,8 @@ SwitchedRun run_with_switches(const RunConfig& config, const std::string& first)
   } recorder;
   recorder.previous = &previous;
   recorder.step = &out.step;
-  size_t next = 0;
-  const ModeSchedule schedule = [&](int k, const Dofs& x) -> Mode* {
-    if (next >= config.switches.size() || config.switches[next].iteration != k) return nullptr;
-    mode = switch_mode(config.switches[next++].mode, problem, scenario, config, model(), x);
-    return mode.get();
-  };
-  out.result.summary = run_scenario(*mode, problem, scenario, out.result.x, {&recorder}, nullptr, schedule);
+  out.result.summary = run_scenario(*mode, problem, scenario, out.result.x, {&recorder}, nullptr,
+                                    switch_schedule(problem, scenario, config, model(), mode));
   out.result.reports = recorder.reports;
   return out;
 }
