@@ -5,7 +5,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QFileInfo>
 #include <QImage>
@@ -24,6 +27,7 @@
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"
+#include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
 
 using sdog::studio::MainWindow;
@@ -232,34 +236,67 @@ class StudioTest : public QObject {
 
   void edits_the_solver_settings() {
     open();
-    sdog::studio::SolverSettingsForm form(window_->run_config());
-    auto* isometry = qobject_cast<QDoubleSpinBox*>(form.field("isometry weight"));
-    auto* kkt = qobject_cast<QDoubleSpinBox*>(form.field("KKT tolerance"));
-    auto* hold = qobject_cast<QSpinBox*>(form.field("hold"));
-    QVERIFY(isometry && kkt && hold && !form.field("no such field"));
+    // The Solver panel shows the configuration in use; edits wait for Apply.
+    sdog::studio::SolverPanel* panel = window_->solver_panel();
+    sdog::studio::SolverSettingsForm* form = panel->form();
+    auto* isometry = qobject_cast<QDoubleSpinBox*>(form->field("isometry weight"));
+    auto* kkt = qobject_cast<QDoubleSpinBox*>(form->field("KKT tolerance"));
+    auto* hold = qobject_cast<QSpinBox*>(form->field("hold"));
+    auto* rho = qobject_cast<QDoubleSpinBox*>(form->field("ADMM rho"));
+    auto* links = qobject_cast<QCheckBox*>(form->field("fine-to-coarse links"));
+    auto* backend = qobject_cast<QComboBox*>(form->field("patch backend"));
+    QVERIFY(isometry && kkt && hold && rho && links && backend && !form->field("no such field"));
     QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
+    QCOMPARE(links->isChecked(), window_->run_config().coarse.fine_to_coarse);
+    QVERIFY(!panel->apply_button()->isEnabled());
     isometry->setValue(500);
     kkt->setValue(2e-4);
     hold->setValue(7);
-    const sdog::RunConfig edited = form.config();
-    QCOMPARE(edited.weights.isometry, 500.0);
-    QCOMPARE(edited.standard.sqp.kkt_tolerance, 2e-4);
-    QCOMPARE(edited.hold, 7);
-    QCOMPARE(edited.scenario, window_->run_config().scenario);  // the rest is kept
+    rho->setValue(3.5);
+    links->setChecked(false);
+    backend->setCurrentText("ceres");
+    QVERIFY(panel->apply_button()->isEnabled());
+    QCOMPARE(window_->run_config().weights.isometry, 20000.0);  // not applied yet
     window_->step(2);
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 2, kWait);
-    QVERIFY(window_->set_run_config(edited));
-    QCOMPARE(window_->run_config().weights.isometry, 500.0);
+    QTest::mouseClick(panel->apply_button(), Qt::LeftButton);
+    const sdog::RunConfig& applied = window_->run_config();
+    QCOMPARE(applied.weights.isometry, 500.0);
+    QCOMPARE(applied.standard.sqp.kkt_tolerance, 2e-4);
+    QCOMPARE(applied.hold, 7);
+    QCOMPARE(applied.admm.rho, 3.5);
+    QCOMPARE(applied.coarse.fine_to_coarse, false);
+    QCOMPARE(applied.subsolvers.backend, std::string("ceres"));
+    QCOMPARE(applied.scenario, std::string("corners"));  // the rest is kept
+    QVERIFY(!panel->apply_button()->isEnabled());
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again
     window_->step(1);
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 1, kWait);
+    // Revert shows the settings in use again.
+    isometry->setValue(1);
+    QVERIFY(panel->revert_button()->isEnabled());
+    QTest::mouseClick(panel->revert_button(), Qt::LeftButton);
+    QCOMPARE(isometry->value(), 500.0);
+    QVERIFY(!panel->apply_button()->isEnabled());
+    QVERIFY(errors_.isEmpty());
     // A value the solver cannot use is refused with a message; the settings stay.
-    sdog::RunConfig bad = edited;
+    sdog::RunConfig bad = applied;
     bad.iterations = 0;
     bad.hold = 0;
     QVERIFY(!window_->set_run_config(bad));
     QCOMPARE(errors_.size(), 1);
-    QCOMPARE(window_->run_config().iterations, edited.iterations);
+    QCOMPARE(window_->run_config().iterations, applied.iterations);
+    // The mode and scenario boxes follow the window and drive it.
+    QCOMPARE(panel->mode_box()->currentText(), QString("standard"));
+    QVERIFY(window_->set_mode("vsadmm"));
+    QCOMPARE(panel->mode_box()->currentText(), QString("vsadmm"));
+    panel->scenario_box()->setCurrentText("fold");
+    Q_EMIT panel->scenario_box()->activated(panel->scenario_box()->currentIndex());
+    QCOMPARE(window_->run_config().scenario, std::string("fold"));
+    QTRY_VERIFY_WITH_TIMEOUT(iteration() == 0 && window_->snapshot()->mode == "vsadmm", kWait);
+    window_->step(1);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 1, kWait);
+    QCOMPARE(errors_.size(), 1);
   }
 
   void exports_a_screenshot() {

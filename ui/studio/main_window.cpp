@@ -63,6 +63,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   statusBar()->addWidget(status_, 1);
 
   build_menus();
+  build_solver_panel();
   set_up_mouse();
   update_actions();
   resize(1400, 900);
@@ -169,6 +170,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
                                                : QString("no coarse mesh (even resolution)"))
                        .arg(QString::fromStdString(mode_), QString::fromStdString(config_.scenario)));
   update_actions();
+  show_solver_state();
   render();
   return true;
 }
@@ -185,7 +187,10 @@ void MainWindow::show_snapshot(const Snapshot& s) {
   const bool updated = attempt([&] { scene_->update(s.state); });
   if (updated) {
     snapshot_ = s;
-    mode_ = s.mode;
+    if (mode_ != s.mode) {
+      mode_ = s.mode;
+      show_solver_state();
+    }
     if (!camera_fitted_) {
       scene_->reset_camera();
       if (pending_camera_) {
@@ -320,6 +325,7 @@ bool MainWindow::set_mode(const QString& mode) {
   mode_ = name;
   if (worker_) post([name](SolverWorker& w) { w.set_mode(name); });
   update_actions();
+  show_solver_state();
   return true;
 }
 
@@ -342,6 +348,7 @@ bool MainWindow::set_run_config(const RunConfig& config) {
   if (!attempt([&] { validate_run_config(config, "solver settings"); })) return false;
   config_ = config;
   update_actions();
+  show_solver_state();
   if (!worker_) return true;
   chart_->clear();
   const std::string mode = mode_;
@@ -369,6 +376,7 @@ bool MainWindow::open_workspace(const QString& path) {
   if (!open_pattern(QString::fromStdString(w.pattern), QString::fromStdString(w.resolution),
                     QString::fromStdString(w.mode))) {
     config_ = previous;
+    show_solver_state();
     return false;
   }
   if (!w.camera.is_null()) pending_camera_ = w.camera;

@@ -27,11 +27,13 @@
 #include "ui/vis/scene.h"
 
 class QAction;
+class QDockWidget;
 class QVTKOpenGLNativeWidget;
 
 namespace sdog::studio {
 
 class ObjectiveChart;
+class SolverPanel;
 class SolverWorker;
 
 class MainWindow : public QMainWindow {
@@ -106,6 +108,7 @@ class MainWindow : public QMainWindow {
   /// The 3D view's interactor (its style picks on click and drags handles with Shift).
   vtkRenderWindowInteractor* interactor() const;
   const ObjectiveChart* chart() const { return chart_; }
+  SolverPanel* solver_panel() const { return solver_panel_; }
   QAction* layer_action(vis::Layer layer) const { return layer_actions_.at(layer); }
 
  Q_SIGNALS:
@@ -125,6 +128,11 @@ class MainWindow : public QMainWindow {
   void build_view_menu();
   void build_solver_menu();
   void build_help_menu();
+  void build_solver_panel();
+  /// The Solver panel shows the mode and configuration in use (unapplied edits are dropped).
+  void show_solver_state();
+  /// A file dialog for a run configuration, then load_run_config().
+  void ask_for_run_config();
   void set_up_mouse();
   void report_error(const QString& message);
   /// Runs `what`; an exception becomes an error message and false.
@@ -182,6 +190,9 @@ class MainWindow : public QMainWindow {
   std::map<vis::View, QAction*> view_actions_;
   QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr, *coarse_action_ = nullptr;
   QAction *frames_action_ = nullptr;
+  QAction *step_action_ = nullptr, *step10_action_ = nullptr, *reset_action_ = nullptr;
+  SolverPanel* solver_panel_ = nullptr;
+  QDockWidget* solver_dock_ = nullptr;
 };
 
 }  // namespace sdog::studio

@@ -1,6 +1,7 @@
 // MainWindow: the menus, their shortcuts and the dialogs behind them.
 #include <QAction>
 #include <QActionGroup>
+#include <QDockWidget>
 #include <QApplication>
 #include <QFileDialog>
 #include <QInputDialog>
@@ -11,6 +12,7 @@
 #include "solver/mode_factory.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
+#include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
 
 namespace sdog::studio {
@@ -213,11 +215,12 @@ void MainWindow::build_solver_menu() {
   play_action_ = add_action(m, "&Play", QKeySequence("Space"), "Iterate continuously (again: pause)");
   play_action_->setCheckable(true);
   connect(play_action_, &QAction::triggered, this, [this](bool on) { on ? play() : pause(); });
-  connect(add_action(m, "&Step", QKeySequence("S"), "One iteration"), &QAction::triggered, this, [this] { step(1); });
-  connect(add_action(m, "Step &10", QKeySequence("Shift+S"), "Ten iterations"), &QAction::triggered, this,
-          [this] { step(10); });
-  connect(add_action(m, "&Reset", QKeySequence("Ctrl+Backspace"), "Back to the start state (the constraints stay)"),
-          &QAction::triggered, this, &MainWindow::reset_solver);
+  step_action_ = add_action(m, "&Step", QKeySequence("S"), "One iteration");
+  connect(step_action_, &QAction::triggered, this, [this] { step(1); });
+  step10_action_ = add_action(m, "Step &10", QKeySequence("Shift+S"), "Ten iterations");
+  connect(step10_action_, &QAction::triggered, this, [this] { step(10); });
+  reset_action_ = add_action(m, "&Reset", QKeySequence("Ctrl+Backspace"), "Back to the start state (the constraints stay)");
+  connect(reset_action_, &QAction::triggered, this, &MainWindow::reset_solver);
   m->addSeparator();
   // One exclusive checkable entry per name; choosing one calls choose(name).
   auto add_choices = [this](QMenu* menu, const std::vector<std::string>& names,
@@ -235,18 +238,41 @@ void MainWindow::build_solver_menu() {
   for (auto& [name, a] : mode_actions_)
     if (mode_needs_coarse(name)) a->setToolTip("needs the coarse mesh (odd resolution)");
   add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::set_scenario);
-  connect(add_action(m, "Se&ttings...", QKeySequence("Ctrl+T"),
-                     "Weights, tolerances and iteration counts (the session starts again with them)"),
+  connect(add_action(m, "Se&ttings", QKeySequence("Ctrl+T"),
+                     "Show the Solver panel: weights, tolerances, mode options and iteration counts"),
           &QAction::triggered, this, [this] {
-            if (const auto config = edit_solver_settings(this, config_)) set_run_config(*config);
+            solver_dock_->show();
+            solver_dock_->raise();
+            solver_panel_->form()->setFocus();
           });
   connect(add_action(m, "Load run &configuration...", QKeySequence(),
                      "Scenario, weights, tolerances and constraints from a JSON file (as sdog run --config reads it)"),
-          &QAction::triggered, this, [this] {
-            const QString path = QFileDialog::getOpenFileName(this, "Run configuration", {}, "Run configurations (*.json)");
-            if (!path.isEmpty()) load_run_config(path);
-          });
+          &QAction::triggered, this, &MainWindow::ask_for_run_config);
 }
+
+void MainWindow::ask_for_run_config() {
+  const QString path = QFileDialog::getOpenFileName(this, "Run configuration", {}, "Run configurations (*.json)");
+  if (!path.isEmpty()) load_run_config(path);
+}
+
+void MainWindow::build_solver_panel() {
+  solver_panel_ = new SolverPanel({play_action_, step_action_, step10_action_, reset_action_});
+  solver_dock_ = new QDockWidget("Solver", this);
+  solver_dock_->setObjectName("solver");
+  solver_dock_->setWidget(solver_panel_);
+  addDockWidget(Qt::LeftDockWidgetArea, solver_dock_);
+  connect(solver_panel_, &SolverPanel::mode_chosen, this, [this](const QString& mode) {
+    if (!set_mode(mode)) show_solver_state();
+  });
+  connect(solver_panel_, &SolverPanel::scenario_chosen, this, [this](const QString& scenario) {
+    if (!set_scenario(scenario)) show_solver_state();
+  });
+  connect(solver_panel_, &SolverPanel::config_file_wanted, this, &MainWindow::ask_for_run_config);
+  connect(solver_panel_, &SolverPanel::apply_wanted, this, &MainWindow::set_run_config);
+  show_solver_state();
+}
+
+void MainWindow::show_solver_state() { solver_panel_->show_state(mode_, config_, model_ && model_->has_coarse); }
 
 void MainWindow::build_help_menu() {
   QMenu* m = menuBar()->addMenu("&Help");

@@ -1,87 +1,167 @@
 #include "ui/studio/solver_settings.h"
 
-#include <QDialog>
-#include <QDialogButtonBox>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace sdog::studio {
+namespace {
 
-SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent) : QWidget(parent), base_(config) {
-  auto* form = new QFormLayout(this);
-  // A value of the configuration (`member` picks it), its range and decimals.
-  auto add_double = [&](const QString& label, double& (*member)(RunConfig&), double max, int decimals,
-                        const QString& tip) {
-    auto* box = new QDoubleSpinBox;
-    box->setRange(0, max);
-    box->setDecimals(decimals);
-    box->setValue(member(base_));
-    box->setToolTip(tip);
-    form->addRow(label, box);
-    fields_.push_back({label, box, [member](RunConfig& c, const QAbstractSpinBox* b) {
-                         member(c) = static_cast<const QDoubleSpinBox*>(b)->value();
-                       }});
-  };
-  auto add_int = [&](const QString& label, int& (*member)(RunConfig&), int min, int max, const QString& tip) {
-    auto* box = new QSpinBox;
-    box->setRange(min, max);
-    box->setValue(member(base_));
-    box->setToolTip(tip);
-    form->addRow(label, box);
-    fields_.push_back({label, box, [member](RunConfig& c, const QAbstractSpinBox* b) {
-                         member(c) = static_cast<const QSpinBox*>(b)->value();
-                       }});
-  };
-  const QString weight = "weight of the term in the objective (0: off)";
-  add_double("bending weight", [](RunConfig& c) -> double& { return c.weights.bending; }, 1e9, 4, weight);
-  add_double("isometry weight", [](RunConfig& c) -> double& { return c.weights.isometry; }, 1e9, 4,
-             weight + " (divided by the number of quad edges)");
-  add_double("stitching weight", [](RunConfig& c) -> double& { return c.weights.stitching; }, 1e9, 4, weight);
-  add_double("positions weight", [](RunConfig& c) -> double& { return c.weights.positions; }, 1e9, 4, weight);
-  add_double("edge points weight", [](RunConfig& c) -> double& { return c.weights.edge_points; }, 1e9, 4, weight);
-  add_double("angles weight", [](RunConfig& c) -> double& { return c.weights.angles; }, 1e9, 4, weight);
-  add_double("fold bias weight", [](RunConfig& c) -> double& { return c.weights.fold_bias; }, 1e9, 4, weight);
-  add_double("link weight", [](RunConfig& c) -> double& { return c.weights.link; }, 1e9, 4, weight);
-  add_double("KKT tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.kkt_tolerance; }, 1, 9,
-             "standard mode: optimality wanted of a step");
-  add_double("constraint tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.constraint_tolerance; }, 1, 9,
-             "standard mode: largest DOG constraint residual wanted after every iteration");
-  add_double("final constraint tolerance",
-             [](RunConfig& c) -> double& { return c.standard.sqp.final_constraint_tolerance; }, 1, 9,
-             "standard mode: largest DOG constraint residual wanted after the last iteration");
-  add_int("SQP steps per iteration", [](RunConfig& c) -> int& { return c.standard.sqp.max_steps; }, 1, 100,
-          "standard mode: optimality steps per iteration");
-  add_int("iterations", [](RunConfig& c) -> int& { return c.iterations; }, 1, 1000000,
+QFormLayout* add_group(QVBoxLayout* layout, const QString& title) {
+  auto* box = new QGroupBox(title);
+  auto* form = new QFormLayout(box);
+  form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+  layout->addWidget(box);
+  return form;
+}
+
+}  // namespace
+
+void SolverSettingsForm::add_double(QFormLayout* form, const QString& label, double& (*member)(RunConfig&), double min,
+                                    double max, int decimals, const QString& tip) {
+  auto* box = new QDoubleSpinBox;
+  box->setRange(min, max);
+  box->setDecimals(decimals);
+  box->setToolTip(tip);
+  form->addRow(label, box);
+  connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &SolverSettingsForm::edited);
+  fields_.push_back({label, box,
+                     [member](RunConfig& c, QWidget* w) {
+                       static_cast<QDoubleSpinBox*>(w)->setValue(member(c));
+                     },
+                     [member](RunConfig& c, const QWidget* w) {
+                       member(c) = static_cast<const QDoubleSpinBox*>(w)->value();
+                     }});
+}
+
+void SolverSettingsForm::add_int(QFormLayout* form, const QString& label, int& (*member)(RunConfig&), int min, int max,
+                                 const QString& tip) {
+  auto* box = new QSpinBox;
+  box->setRange(min, max);
+  box->setToolTip(tip);
+  form->addRow(label, box);
+  connect(box, qOverload<int>(&QSpinBox::valueChanged), this, &SolverSettingsForm::edited);
+  fields_.push_back({label, box,
+                     [member](RunConfig& c, QWidget* w) {
+                       static_cast<QSpinBox*>(w)->setValue(member(c));
+                     },
+                     [member](RunConfig& c, const QWidget* w) { member(c) = static_cast<const QSpinBox*>(w)->value(); }});
+}
+
+void SolverSettingsForm::add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&),
+                                  const QString& tip) {
+  auto* box = new QCheckBox;
+  box->setToolTip(tip);
+  form->addRow(label, box);
+  connect(box, &QCheckBox::toggled, this, &SolverSettingsForm::edited);
+  fields_.push_back({label, box,
+                     [member](RunConfig& c, QWidget* w) {
+                       static_cast<QCheckBox*>(w)->setChecked(member(c));
+                     },
+                     [member](RunConfig& c, const QWidget* w) { member(c) = static_cast<const QCheckBox*>(w)->isChecked(); }});
+}
+
+void SolverSettingsForm::add_choice(QFormLayout* form, const QString& label, std::string& (*member)(RunConfig&),
+                                    const QStringList& choices, const QString& tip) {
+  auto* box = new QComboBox;
+  box->addItems(choices);
+  box->setToolTip(tip);
+  form->addRow(label, box);
+  connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, &SolverSettingsForm::edited);
+  fields_.push_back({label, box,
+                     [member](RunConfig& c, QWidget* w) {
+                       static_cast<QComboBox*>(w)->setCurrentText(QString::fromStdString(member(c)));
+                     },
+                     [member](RunConfig& c, const QWidget* w) {
+                       member(c) = static_cast<const QComboBox*>(w)->currentText().toStdString();
+                     }});
+}
+
+SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+
+  QFormLayout* f = add_group(layout, "Scenario");
+  add_int(f, "iterations", [](RunConfig& c) -> int& { return c.iterations; }, 1, 1000000,
           "iterations over which the scenario's targets move");
-  add_int("hold", [](RunConfig& c) -> int& { return c.hold; }, 0, 1000000, "iterations with the final targets");
+  add_int(f, "hold", [](RunConfig& c) -> int& { return c.hold; }, 0, 1000000, "iterations with the final targets");
+  add_double(f, "fold angle", [](RunConfig& c) -> double& { return c.fold_angle; }, -180, 180, 1,
+             "fold scenario: the final dihedral angle at every fold site, degrees");
+
+  f = add_group(layout, "Objective weights");
+  const QString weight = "weight of the term in the objective (0: off)";
+  add_double(f, "bending weight", [](RunConfig& c) -> double& { return c.weights.bending; }, 0, 1e9, 4, weight);
+  add_double(f, "isometry weight", [](RunConfig& c) -> double& { return c.weights.isometry; }, 0, 1e9, 4,
+             weight + " (divided by the number of quad edges)");
+  add_double(f, "stitching weight", [](RunConfig& c) -> double& { return c.weights.stitching; }, 0, 1e9, 4, weight);
+  add_double(f, "positions weight", [](RunConfig& c) -> double& { return c.weights.positions; }, 0, 1e9, 4, weight);
+  add_double(f, "edge points weight", [](RunConfig& c) -> double& { return c.weights.edge_points; }, 0, 1e9, 4, weight);
+  add_double(f, "angles weight", [](RunConfig& c) -> double& { return c.weights.angles; }, 0, 1e9, 4, weight);
+  add_double(f, "fold bias weight", [](RunConfig& c) -> double& { return c.weights.fold_bias; }, 0, 1e9, 4, weight);
+
+  f = add_group(layout, "Standard mode (SQP)");
+  add_double(f, "KKT tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.kkt_tolerance; }, 0, 1, 9,
+             "optimality wanted of a step");
+  add_double(f, "constraint tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.constraint_tolerance; }, 0,
+             1, 9, "largest DOG constraint residual wanted after every iteration");
+  add_double(f, "final constraint tolerance",
+             [](RunConfig& c) -> double& { return c.standard.sqp.final_constraint_tolerance; }, 0, 1, 9,
+             "largest DOG constraint residual wanted after the last iteration");
+  add_int(f, "SQP steps per iteration", [](RunConfig& c) -> int& { return c.standard.sqp.max_steps; }, 1, 100,
+          "optimality steps per iteration");
+
+  f = add_group(layout, "Patch modes (subsolvers, ADMM)");
+  add_choice(f, "patch backend", [](RunConfig& c) -> std::string& { return c.subsolvers.backend; }, {"sqp", "ceres"},
+             "per-patch steps: the SQP solver of the standard mode, or Ceres with an augmented Lagrangian loop");
+  add_double(f, "Ceres constraint tolerance",
+             [](RunConfig& c) -> double& { return c.subsolvers.patch.constraint_tolerance; }, 0, 1, 9,
+             "Ceres backend: largest DOG constraint residual of a patch solve");
+  add_double(f, "ADMM rho", [](RunConfig& c) -> double& { return c.admm.rho; }, 1e-9, 1e9, 6,
+             "penalty of the augmented stitching terms");
+  add_double(f, "ADMM gamma", [](RunConfig& c) -> double& { return c.admm.gamma; }, 1e-9, 10, 6,
+             "damping of the jadmm / proxjadmm multiplier update");
+  add_double(f, "ADMM P", [](RunConfig& c) -> double& { return c.admm.p; }, -1, 1e9, 6,
+             "proxjadmm: proximal weight (P = p I); -1: 0.001 (patches - 1)");
+  static_cast<QDoubleSpinBox*>(fields_.back().widget)->setSpecialValueText("default: 0.001 (patches - 1)");
+  add_int(f, "ADMM rounds per iteration", [](RunConfig& c) -> int& { return c.admm.inner; }, 1, 1000,
+          "ADMM rounds (patch solves and multiplier updates) per solver iteration");
+
+  f = add_group(layout, "Coarse modes (coarse, twolevel)");
+  add_double(f, "coarse link weight", [](RunConfig& c) -> double& { return c.coarse.link_weight; }, 0, 1e9, 6,
+             "coarse mode: pull between fine link vertices and their coarse twins (the thesis's ftc_weight)");
+  add_bool(f, "fine-to-coarse links", [](RunConfig& c) -> bool& { return c.coarse.fine_to_coarse; },
+           "coarse mode: the coarse mesh is pulled towards the fine one too (off: --no-fine-to-coarse)");
+  add_bool(f, "prolongate", [](RunConfig& c) -> bool& { return c.coarse.prolongate; },
+           "coarse mode: each fine step starts from the coarse state carried to the fine mesh");
+  add_double(f, "twolevel link weight", [](RunConfig& c) -> double& { return c.twolevel.link_weight; }, 0, 1e9, 6,
+             "twolevel mode: pull of the coarse link vertices towards their fine twins");
+  layout->addStretch(1);
+  set_config(config);
+}
+
+void SolverSettingsForm::set_config(const RunConfig& config) {
+  base_ = config;
+  RunConfig shown = config;  // the members are reached through non-const references
+  for (const Field& f : fields_) {
+    const QSignalBlocker block(f.widget);
+    f.show(shown, f.widget);
+  }
 }
 
 RunConfig SolverSettingsForm::config() const {
   RunConfig c = base_;
-  for (const Field& f : fields_) f.store(c, f.box);
+  for (const Field& f : fields_) f.store(c, f.widget);
   return c;
 }
 
-QAbstractSpinBox* SolverSettingsForm::field(const QString& label) const {
+QWidget* SolverSettingsForm::field(const QString& label) const {
   for (const Field& f : fields_)
-    if (f.label == label) return f.box;
+    if (f.label == label) return f.widget;
   return nullptr;
-}
-
-std::optional<RunConfig> edit_solver_settings(QWidget* parent, const RunConfig& config) {
-  QDialog dialog(parent);
-  dialog.setWindowTitle("Solver settings");
-  auto* layout = new QVBoxLayout(&dialog);
-  auto* form = new SolverSettingsForm(config);
-  layout->addWidget(form);
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
-  QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  layout->addWidget(buttons);
-  if (dialog.exec() != QDialog::Accepted) return std::nullopt;
-  return form->config();
 }
 
 }  // namespace sdog::studio

@@ -1,15 +1,16 @@
 #pragma once
-// The Solver > Settings form: the objective's weights, the standard mode's tolerances and steps,
-// and the scenario's iteration counts, edited as a RunConfig (the rest of the configuration is
-// kept as it was).
-#include <QAbstractSpinBox>
+// The solver settings form (the Solver panel's lower part): the scenario's iteration counts, the
+// objective's weights, the standard mode's tolerances and steps, and the options of the patch,
+// ADMM, coarse and two-level modes, edited as a RunConfig (the rest of the configuration, such as
+// the listed constraints, is kept as it was).
 #include <QString>
 #include <QWidget>
 #include <functional>
-#include <optional>
 #include <vector>
 
 #include "solver/run_config.h"
+
+class QFormLayout;
 
 namespace sdog::studio {
 
@@ -18,23 +19,35 @@ class SolverSettingsForm : public QWidget {
 
  public:
   explicit SolverSettingsForm(const RunConfig& config, QWidget* parent = nullptr);
-  /// The configuration given to the constructor with the form's values.
+  /// The configuration last given (constructor or set_config) with the form's values.
   RunConfig config() const;
-  /// The field of a value by its label ("bending weight", "KKT tolerance", "iterations", ...);
-  /// nullptr for an unknown label.
-  QAbstractSpinBox* field(const QString& label) const;
+  /// Shows the values of `config`, which becomes the base of config().
+  void set_config(const RunConfig& config);
+  /// The field of a value by its label ("bending weight", "KKT tolerance", "hold", "ADMM rho",
+  /// "fine-to-coarse links", ...): a QDoubleSpinBox, QSpinBox, QCheckBox or QComboBox; nullptr
+  /// for an unknown label.
+  QWidget* field(const QString& label) const;
+
+ Q_SIGNALS:
+  /// The user changed a value (the configuration is not applied until the panel says so).
+  void edited();
 
  private:
   struct Field {
     QString label;
-    QAbstractSpinBox* box;
-    std::function<void(RunConfig&, const QAbstractSpinBox*)> store;
+    QWidget* widget;
+    std::function<void(RunConfig&, QWidget*)> show;
+    std::function<void(RunConfig&, const QWidget*)> store;
   };
+  void add_double(QFormLayout* form, const QString& label, double& (*member)(RunConfig&), double min, double max,
+                  int decimals, const QString& tip);
+  void add_int(QFormLayout* form, const QString& label, int& (*member)(RunConfig&), int min, int max,
+               const QString& tip);
+  void add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&), const QString& tip);
+  void add_choice(QFormLayout* form, const QString& label, std::string& (*member)(RunConfig&),
+                  const QStringList& choices, const QString& tip);
   RunConfig base_;
   std::vector<Field> fields_;
 };
-
-/// A modal dialog with the form; the edited configuration, or nothing when cancelled.
-std::optional<RunConfig> edit_solver_settings(QWidget* parent, const RunConfig& config);
 
 }  // namespace sdog::studio

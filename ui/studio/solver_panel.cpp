@@ -1,0 +1,105 @@
+#include "ui/studio/solver_panel.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStandardItemModel>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "solver/mode_factory.h"
+#include "ui/studio/solver_settings.h"
+
+namespace sdog::studio {
+
+SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+
+  auto* buttons = new QHBoxLayout;
+  for (QAction* action : controls) {
+    auto* b = new QToolButton;
+    b->setDefaultAction(action);
+    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    buttons->addWidget(b);
+  }
+  buttons->addStretch(1);
+  layout->addLayout(buttons);
+
+  auto* choices = new QFormLayout;
+  mode_ = new QComboBox;
+  for (const std::string& name : mode_names()) mode_->addItem(QString::fromStdString(name));
+  mode_->setToolTip("How an iteration is computed; switching keeps the current state");
+  choices->addRow("mode", mode_);
+  auto* scenario_row = new QHBoxLayout;
+  scenario_ = new QComboBox;
+  for (const std::string& name : scenario_names()) scenario_->addItem(QString::fromStdString(name));
+  scenario_->setToolTip("The base scenario's targets (a new scenario starts the session again)");
+  scenario_row->addWidget(scenario_, 1);
+  auto* from_file = new QPushButton("From file...");
+  from_file->setToolTip("Scenario, weights, tolerances and constraints from a run configuration (JSON, as "
+                        "sdog run --config reads it)");
+  scenario_row->addWidget(from_file);
+  choices->addRow("scenario", scenario_row);
+  layout->addLayout(choices);
+
+  form_ = new SolverSettingsForm(RunConfig{});
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(form_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(form_->sizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+  layout->addWidget(scroll, 1);
+
+  auto* apply_row = new QHBoxLayout;
+  apply_row->addStretch(1);
+  revert_ = new QPushButton("Revert");
+  revert_->setToolTip("Show the settings in use again");
+  apply_ = new QPushButton("Apply");
+  apply_->setToolTip("Use these settings: the session starts again with them (the constraints stay)");
+  apply_->setDefault(true);
+  apply_row->addWidget(revert_);
+  apply_row->addWidget(apply_);
+  layout->addLayout(apply_row);
+  apply_->setEnabled(false);
+  revert_->setEnabled(false);
+
+  connect(mode_, qOverload<int>(&QComboBox::activated), this,
+          [this](int) { Q_EMIT mode_chosen(mode_->currentText()); });
+  connect(scenario_, qOverload<int>(&QComboBox::activated), this,
+          [this](int) { Q_EMIT scenario_chosen(scenario_->currentText()); });
+  connect(from_file, &QPushButton::clicked, this, &SolverPanel::config_file_wanted);
+  connect(form_, &SolverSettingsForm::edited, this, [this] {
+    apply_->setEnabled(true);
+    revert_->setEnabled(true);
+  });
+  connect(apply_, &QPushButton::clicked, this, [this] { Q_EMIT apply_wanted(form_->config()); });
+  connect(revert_, &QPushButton::clicked, this, [this] {
+    form_->set_config(in_use_);
+    apply_->setEnabled(false);
+    revert_->setEnabled(false);
+  });
+}
+
+void SolverPanel::show_state(const std::string& mode, const RunConfig& config, bool has_coarse) {
+  const QSignalBlocker block_mode(mode_), block_scenario(scenario_);
+  mode_->setCurrentText(QString::fromStdString(mode));
+  scenario_->setCurrentText(QString::fromStdString(config.scenario));
+  // The coarse modes need the coarse mesh (odd resolutions): their entries are greyed out.
+  if (auto* items = qobject_cast<QStandardItemModel*>(mode_->model()))
+    for (int i = 0; i < mode_->count(); ++i) {
+      const bool usable = has_coarse || !mode_needs_coarse(mode_->itemText(i).toStdString());
+      items->item(i)->setEnabled(usable);
+      items->item(i)->setToolTip(usable ? QString() : "needs the coarse mesh (an odd resolution)");
+    }
+  in_use_ = config;
+  form_->set_config(config);
+  apply_->setEnabled(false);
+  revert_->setEnabled(false);
+}
+
+}  // namespace sdog::studio
