@@ -59,28 +59,32 @@ void Session::check_vertex(int vertex) const {
                      std::to_string(model_.fine.vertex_count()) + " vertices)");
 }
 
-void Session::edit(const UserConstraints& next) {
-  undo_.push_back(user_);
+void Session::edit(const UserConstraints& next, bool merge) {
+  if (!merge || undo_.empty()) undo_.push_back(user_);
   redo_.clear();
   user_ = next;
   rebuild();
 }
 
-int Session::add_handle(int vertex) {
-  check_vertex(vertex);
+int Session::add_handle(int vertex) { return add_handles({vertex}); }
+
+int Session::add_handles(const std::vector<int>& vertices) {
+  if (vertices.empty()) throw InputError("no vertices to make handles of");
+  for (int v : vertices) check_vertex(v);
+  const int first = static_cast<int>(user_.handles.size());
   UserConstraints next = user_;
-  next.handles.push_back({vertex, Eigen::Vector3d(vertex_of(x_, vertex))});
+  for (int v : vertices) next.handles.push_back({v, Eigen::Vector3d(vertex_of(x_, v))});
   edit(next);
-  return static_cast<int>(user_.handles.size()) - 1;
+  return first;
 }
 
-void Session::move_handle(int handle, const Eigen::Vector3d& target) {
+void Session::move_handle(int handle, const Eigen::Vector3d& target, bool merge) {
   if (handle < 0 || handle >= static_cast<int>(user_.handles.size()))
     throw InputError("handle " + std::to_string(handle) + " does not exist");
   if (!target.allFinite()) throw InputError("a handle target that is not finite");
   UserConstraints next = user_;
   next.handles[handle].target = target;
-  edit(next);
+  edit(next, merge);
 }
 
 void Session::remove_handle(int handle) {

@@ -71,7 +71,11 @@ class Session {
   /// Throws InputError for a vertex or crease point that does not exist, or a crease point that is
   /// not between exactly two patches.
   int add_handle(int vertex);  ///< target: the vertex's current position
-  void move_handle(int handle, const Eigen::Vector3d& target);
+  /// Several vertices made handles at once (rubber-band selection), as one edit; returns the
+  /// index of the first new handle.
+  int add_handles(const std::vector<int>& vertices);
+  /// `merge`: the move continues the last edit (a drag in progress) and is undone with it.
+  void move_handle(int handle, const Eigen::Vector3d& target, bool merge = false);
   void remove_handle(int handle);
   /// On the flat sheet, also tilts the sheet towards the fold (fold_seed.h), which is otherwise a
   /// symmetric point the solver cannot leave.
@@ -85,7 +89,7 @@ class Session {
   bool redo();
 
  private:
-  void edit(const UserConstraints& next);  // records the undo step and rebuilds
+  void edit(const UserConstraints& next, bool merge = false);  // records the undo step and rebuilds
   // Undo (from undo_ to redo_) or redo (the other way).
   bool travel(std::vector<UserConstraints>& from, std::vector<UserConstraints>& to);
   void rebuild();

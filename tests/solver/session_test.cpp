@@ -72,6 +72,31 @@ TEST(Session, DraggedHandleLeadsTheSheetAndUndoRestoresIt) {
   EXPECT_THROW(s.move_handle(5, lifted), InputError);
 }
 
+TEST(Session, ADragIsOneEditAndSeveralHandlesAreAddedAtOnce) {
+  Session s(model(), interactive(), "standard");
+  const int last = model().fine.vertex_count() - 1;
+  EXPECT_EQ(s.add_handles({0, 1, last}), 0);
+  ASSERT_EQ(s.constraints().handles.size(), 3u);
+  EXPECT_EQ(s.scenario().positions.size(), 3u);
+  EXPECT_EQ(s.constraints().handles[2].vertex, last);
+  const Eigen::Vector3d rest = s.constraints().handles[2].target;
+  // A drag: the first move is a new edit, the following ones continue it, while the solver steps.
+  for (int k = 1; k <= 5; ++k) {
+    s.move_handle(2, rest + Eigen::Vector3d(0, 0, 0.5 * k), /*merge=*/k > 1);
+    ASSERT_FALSE(s.step().step.failed);
+    EXPECT_EQ(s.scenario().positions.back().end, rest + Eigen::Vector3d(0, 0, 0.5 * k));
+  }
+  ASSERT_TRUE(s.undo());  // the whole drag
+  EXPECT_EQ(s.constraints().handles[2].target, rest);
+  EXPECT_EQ(s.constraints().handles.size(), 3u);
+  ASSERT_TRUE(s.undo());  // the three handles
+  EXPECT_TRUE(s.constraints().handles.empty());
+  EXPECT_FALSE(s.can_undo());
+  EXPECT_THROW(s.add_handles({}), InputError);
+  EXPECT_THROW(s.add_handles({0, last + 1}), InputError);
+  EXPECT_TRUE(s.constraints().handles.empty());  // nothing added when one vertex is wrong
+}
+
 TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
   const auto& points = model().fine.stitching.points;
   int site = -1;

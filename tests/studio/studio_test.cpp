@@ -198,6 +198,77 @@ class StudioTest : public QObject {
     QVERIFY(errors_.isEmpty());
   }
 
+  void selects_with_a_rubber_band_and_drags_continuously() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    window_->reset_camera();
+    QApplication::processEvents();
+    const Eigen::MatrixX3d fine = window_->snapshot()->state.fine;
+    vtkRenderWindowInteractor* mouse = window_->interactor();
+    auto event = [&](double x, double y, bool ctrl, bool shift, unsigned long what) {
+      mouse->SetEventInformation(int(std::lround(x)), int(std::lround(y)), ctrl, shift);
+      mouse->InvokeEvent(what);
+    };
+    // Ctrl + drag: the vertices drawn inside the band are selected (checked one by one here).
+    const int centre = window_->model()->fine.vertex_count() / 2;
+    const Eigen::Vector3d c = sdog::studio::to_display(window_->renderer(), fine.row(centre).transpose());
+    // Whole pixels: the mouse's positions are.
+    const int* view = window_->renderer()->GetSize();
+    const double w = std::round(0.1 * view[0]), h = std::round(0.1 * view[1]);
+    const double x0 = std::round(c.x()) - w / 2, y0 = std::round(c.y()) - h / 3, x1 = x0 + w, y1 = y0 + h;
+    std::vector<int> inside;
+    for (int v = 0; v < fine.rows(); ++v) {
+      const Eigen::Vector3d d = sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
+      if (d.x() >= x0 && d.x() <= x1 && d.y() >= y0 && d.y() <= y1) inside.push_back(v);
+    }
+    QVERIFY2(inside.size() >= 4 && inside.size() < size_t(fine.rows()) / 4, qPrintable(QString::number(inside.size())));
+    event(x1, y1, true, false, vtkCommand::LeftButtonPressEvent);  // from the top right corner
+    event(x0 + 10, y0 + 10, true, false, vtkCommand::MouseMoveEvent);
+    event(x0, y0, true, false, vtkCommand::MouseMoveEvent);
+    event(x0, y0, true, false, vtkCommand::LeftButtonReleaseEvent);
+    QCOMPARE(window_->selection(), inside);
+    // With Shift as well the band adds to the selection.
+    const int corner = fine.rows() - 1;
+    const Eigen::Vector3d k = sdog::studio::to_display(window_->renderer(), fine.row(corner).transpose());
+    event(k.x() - 3, k.y() - 3, true, true, vtkCommand::LeftButtonPressEvent);
+    event(k.x() + 3, k.y() + 3, true, true, vtkCommand::LeftButtonReleaseEvent);
+    QVERIFY(window_->selection().size() > inside.size());
+    QCOMPARE(window_->selection()[inside.size()], corner);
+    // Edit > Make handle: one handle per selected vertex, one edit.
+    const size_t selected = window_->selection().size();
+    for (QAction* a : window_->findChildren<QAction*>())
+      if (a->text() == "Make &handle") a->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), selected, kWait);
+    const int handle = static_cast<int>(selected) - 1;  // the corner's
+    QCOMPARE(window_->snapshot()->constraints.handles[handle].vertex, corner);
+    window_->set_layer(vis::Layer::Handles, true);
+
+    // Shift + drag of the corner's handle: the target follows the mouse while the button is down.
+    const Eigen::Vector3d rest = window_->snapshot()->constraints.handles[handle].target;
+    const Eigen::Vector3d at = sdog::studio::to_display(window_->renderer(), rest);
+    // Pixels between where the handle's target is drawn and `mouse`.
+    auto target_off = [&](const Eigen::Vector2d& mouse) {
+      const Eigen::Vector3d target = window_->snapshot()->constraints.handles[handle].target;
+      return (sdog::studio::to_display(window_->renderer(), target).head<2>() - mouse).norm();
+    };
+    event(at.x(), at.y(), false, true, vtkCommand::LeftButtonPressEvent);
+    for (int step = 1; step <= 3; ++step) {
+      const Eigen::Vector2d to = at.head<2>() + step * Eigen::Vector2d(15, 20);
+      event(to.x(), to.y(), false, true, vtkCommand::MouseMoveEvent);
+      QTRY_VERIFY_WITH_TIMEOUT(target_off(to) < 1.5, kWait);
+      window_->step(1);  // the solver keeps running during the drag
+    }
+    const Eigen::Vector2d end = at.head<2>() + Eigen::Vector2d(60, 80);
+    event(end.x(), end.y(), false, true, vtkCommand::LeftButtonReleaseEvent);
+    QTRY_VERIFY_WITH_TIMEOUT(target_off(end) < 1.5, kWait);
+    // The drag is one edit: one undo puts the target back, the next removes the handles.
+    window_->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[handle].target == rest, kWait);
+    window_->undo();
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(0), kWait);
+    QVERIFY(errors_.isEmpty());
+  }
+
   void adds_and_removes_an_angle_constraint() {
     QVERIFY(window_->set_scenario("none"));
     open();

@@ -13,6 +13,12 @@ void ClickDragStyle::OnLeftButtonDown() {
   const int* p = Interactor->GetEventPosition();
   press_x_ = p[0];
   press_y_ = p[1];
+  if (Interactor->GetControlKey() && on_band) {
+    banding_ = true;
+    band_adds_ = Interactor->GetShiftKey() != 0;
+    on_band(press_x_, press_y_, p[0], p[1]);
+    return;
+  }
   if (Interactor->GetShiftKey() && on_grab && on_grab(p[0], p[1])) {
     dragging_ = true;
     return;
@@ -28,6 +34,10 @@ void ClickDragStyle::OnMouseMove() {
     if (on_drag) on_drag(p[0], p[1]);
     return;
   }
+  if (banding_) {
+    on_band(press_x_, press_y_, p[0], p[1]);
+    return;
+  }
   if (pressed_ && std::abs(p[0] - press_x_) + std::abs(p[1] - press_y_) > 3) moved_ = true;
   if (State == VTKIS_NONE && on_hover) on_hover(p[0], p[1]);
   vtkInteractorStyleTrackballCamera::OnMouseMove();
@@ -38,6 +48,11 @@ void ClickDragStyle::OnLeftButtonUp() {
   if (dragging_) {
     dragging_ = false;
     if (on_release) on_release(p[0], p[1]);
+    return;
+  }
+  if (banding_) {
+    banding_ = false;
+    if (on_band_end) on_band_end(press_x_, press_y_, p[0], p[1], band_adds_);
     return;
   }
   vtkInteractorStyleTrackballCamera::OnLeftButtonUp();

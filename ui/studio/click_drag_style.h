@@ -1,7 +1,8 @@
 #pragma once
 // The 3D view's mouse: the trackball camera, plus a left click (press and release without moving)
-// that picks, and Shift + left drag that moves what the press grabbed (a handle) instead of the
-// camera; moves without a button report hovering. Positions are VTK display coordinates.
+// that picks, Shift + left drag that moves what the press grabbed (a handle) instead of the
+// camera, and Ctrl + left drag that spans a rubber band (with Shift as well: added to the
+// selection); moves without a button report hovering. Positions are VTK display coordinates.
 #include <vtkInteractorStyleTrackballCamera.h>
 
 #include <functional>
@@ -20,6 +21,10 @@ class ClickDragStyle : public vtkInteractorStyleTrackballCamera {
   std::function<bool(int x, int y)> on_grab;
   std::function<void(int x, int y)> on_drag;
   std::function<void(int x, int y)> on_release;
+  /// Ctrl + drag: the band from the press to (x, y) while the button is down ...
+  std::function<void(int x0, int y0, int x, int y)> on_band;
+  /// ... and when it is released (`add`: Shift was held at the press).
+  std::function<void(int x0, int y0, int x1, int y1, bool add)> on_band_end;
 
   void OnLeftButtonDown() override;
   void OnMouseMove() override;
@@ -27,7 +32,7 @@ class ClickDragStyle : public vtkInteractorStyleTrackballCamera {
 
  private:
   int press_x_ = 0, press_y_ = 0;
-  bool pressed_ = false, moved_ = false, dragging_ = false;
+  bool pressed_ = false, moved_ = false, dragging_ = false, banding_ = false, band_adds_ = false;
 };
 
 }  // namespace sdog::studio

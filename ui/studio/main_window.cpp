@@ -11,12 +11,15 @@
 #include <QStatusBar>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtGlobal>
+#include <algorithm>
 #include <exception>
 
 #include "geometry/errors.h"
 #include "solver/mode_factory.h"
 #include "ui/studio/model_loader.h"
 #include "ui/studio/objective_chart.h"
+#include "ui/studio/screen_picking.h"
+#include "ui/studio/selection_marks.h"
 #include "ui/studio/solver_worker.h"
 #include "ui/studio/vertex_inspector.h"
 #include "ui/vis/camera.h"
@@ -38,9 +41,10 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   renderer_->SetBackground(1, 1, 1);
   render_window_->AddRenderer(renderer_);
   view_->setRenderWindow(render_window_);
-  view_->setToolTip("Left drag: rotate, right drag or wheel: zoom, middle drag: pan; click: inspect a vertex; "
+  view_->setToolTip("Left drag: rotate, right drag or wheel: zoom, middle drag: pan; click: pick a vertex; "
+                    "Ctrl + drag: select the vertices in a rubber band (with Shift: add them); "
                     "Shift + drag a handle's target: move it");
-  view_->setMinimumSize(400, 300);
+  view_->setMinimumSize(300, 240);
   setCentralWidget(view_);
 
   chart_ = new ObjectiveChart;
@@ -53,6 +57,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   inspector_->setTextFormat(Qt::RichText);
   inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   inspector_->setMargin(6);
+  inspector_->setWordWrap(true);
   inspector_->setToolTip("The picked fine vertex: patch, class, type and twin in the coarse mesh, residuals");
   auto* inspector_dock = new QDockWidget("Inspector", this);
   inspector_dock->setObjectName("inspector");
@@ -62,6 +67,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG file here).");
   statusBar()->addWidget(status_, 1);
 
+  marks_ = std::make_unique<SelectionMarks>(renderer_);
   build_menus();
   build_solver_panel();
   set_up_mouse();
@@ -72,6 +78,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
 MainWindow::~MainWindow() {
   stop_worker();
   scene_.reset();  // before the renderer and the model it draws
+  marks_.reset();
 }
 
 void MainWindow::report_error(const QString& message) { error_sink_(message); }
@@ -202,7 +209,7 @@ void MainWindow::show_snapshot(const Snapshot& s) {
       }
       camera_fitted_ = true;
     }
-    render();
+    refresh_selection_marks();  // renders
     if (png_frames_) write_png_frame();
     show_in_inspector(hovered_vertex_);
   }
@@ -234,7 +241,38 @@ void MainWindow::render() {
 
 void MainWindow::select_vertex(int vertex) {
   selected_vertex_ = vertex;
+  selection_.clear();
+  if (vertex >= 0) selection_.push_back(vertex);
+  refresh_selection_marks();
   show_in_inspector(-1);
+}
+
+void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
+  if (!add) selection_.clear();
+  for (int v : vertices)
+    if (std::find(selection_.begin(), selection_.end(), v) == selection_.end()) selection_.push_back(v);
+  selected_vertex_ = selection_.size() == 1 ? selection_.front() : -1;
+  refresh_selection_marks();
+  show_in_inspector(-1);
+  status_->setText(QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.size()));
+}
+
+void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {
+  if (!snapshot_) return;
+  select_vertices(points_in_rectangle(renderer_, shown_positions(), x0, y0, x1, y1), add);
+}
+
+Eigen::MatrixX3d MainWindow::shown_positions() const {
+  if (scene_options_.view == vis::View::Flat) return model_->fine.V;
+  return snapshot_->state.fine;
+}
+
+void MainWindow::refresh_selection_marks() {
+  if (snapshot_)
+    marks_->show_points(shown_positions(), selection_);
+  else
+    marks_->show_points(Eigen::MatrixX3d(0, 3), {});
+  render();
 }
 
 void MainWindow::show_in_inspector(int hovered) {
@@ -271,7 +309,7 @@ void MainWindow::set_view(vis::View view) {
   if (!scene_) return;
   scene_->set_options(scene_options_);
   scene_->reset_camera();
-  render();
+  refresh_selection_marks();
 }
 
 void MainWindow::set_coarse_visible(bool on) {
@@ -356,7 +394,10 @@ bool MainWindow::set_run_config(const RunConfig& config) {
   return true;
 }
 
-void MainWindow::add_handle(int vertex) { post([vertex](SolverWorker& w) { w.add_handle(vertex); }); }
+void MainWindow::add_handle(int vertex) { add_handles({vertex}); }
+void MainWindow::add_handles(const std::vector<int>& vertices) {
+  post([vertices](SolverWorker& w) { w.add_handles(vertices); });
+}
 void MainWindow::move_handle(int handle, const Eigen::Vector3d& target) {
   post([handle, target](SolverWorker& w) { w.move_handle(handle, target); });
 }

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "geometry/atomic_output.h"
 #include "solver/run_config.h"
@@ -33,6 +34,7 @@ class QVTKOpenGLNativeWidget;
 namespace sdog::studio {
 
 class ObjectiveChart;
+class SelectionMarks;
 class SolverPanel;
 class SolverWorker;
 
@@ -86,14 +88,23 @@ class MainWindow : public QMainWindow {
   bool set_run_config(const RunConfig& config);
   const RunConfig& run_config() const { return config_; }
   void add_handle(int vertex);
+  /// Every vertex of the list a handle, as one edit (Edit > Make handle on a selection).
+  void add_handles(const std::vector<int>& vertices);
   void move_handle(int handle, const Eigen::Vector3d& target);
   void remove_handle(int handle);
   void add_angle(int crease_point, double degrees);
   void remove_angle(int angle);
   void undo();
   void redo();
-  /// Picks the vertex (Edit > Make handle uses it) and shows it in the inspector (-1: none).
+  /// Picks the vertex (the selection becomes it; Edit > Make handle uses it) and shows it in the
+  /// inspector (-1: none).
   void select_vertex(int vertex);
+  /// The selection becomes `vertices` (with `add`: they are added to it), as the rubber band does.
+  void select_vertices(const std::vector<int>& vertices, bool add = false);
+  /// The fine vertices in the rectangle between two display positions of the 3D view (the rubber
+  /// band: Ctrl + drag) are selected.
+  void select_in_rectangle(double x0, double y0, double x1, double y1, bool add = false);
+  const std::vector<int>& selection() const { return selection_; }
 
   // State, for tests and the command line
   const DogModel* model() const { return model_.get(); }
@@ -146,6 +157,10 @@ class MainWindow : public QMainWindow {
   void render();
   /// The hovered vertex (-1: none, then the picked one) in the inspector.
   void show_in_inspector(int hovered);
+  /// Where the view draws the fine vertices (the flat view: the rest state). Needs a snapshot.
+  Eigen::MatrixX3d shown_positions() const;
+  /// The selection's dots follow the shown positions.
+  void refresh_selection_marks();
   void update_actions();
   void open_file(const QString& path);
   nlohmann::json camera_json() const;
@@ -171,8 +186,11 @@ class MainWindow : public QMainWindow {
   int reports_received_ = 0;
   int selected_vertex_ = -1;
   int hovered_vertex_ = -1;
+  std::vector<int> selection_;
+  std::unique_ptr<SelectionMarks> marks_;
   int dragged_handle_ = -1;
   double drag_depth_ = 0;
+  bool drag_moved_ = false;  // the drag in progress has sent a target (its later ones merge)
 
   std::unique_ptr<OutputSet> png_frames_;
   int png_frame_count_ = 0;

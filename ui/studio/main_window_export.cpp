@@ -13,6 +13,7 @@
 #include "ui/studio/click_drag_style.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/screen_picking.h"
+#include "ui/studio/selection_marks.h"
 #include "ui/studio/solver_worker.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/picture.h"
@@ -107,21 +108,24 @@ vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->intera
 
 void MainWindow::set_up_mouse() {
   vtkNew<ClickDragStyle> style;
-  // The positions the view draws the fine mesh at.
-  auto shown = [this]() -> Eigen::MatrixX3d {
-    if (scene_options_.view == vis::View::Flat) return model_->fine.V;
-    return snapshot_->state.fine;
-  };
-  style->on_click = [this, shown](int x, int y) {
+  style->on_click = [this](int x, int y) {
     if (!snapshot_) return;
-    const int v = pick_point(renderer_, shown(), x, y, 12);
+    const int v = pick_point(renderer_, shown_positions(), x, y, 12);
     select_vertex(v);
     status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
                             : QString("no vertex within 12 pixels of the click"));
   };
-  style->on_hover = [this, shown](int x, int y) {
+  style->on_hover = [this](int x, int y) {
     if (!snapshot_) return;
-    show_in_inspector(pick_point(renderer_, shown(), x, y, 12));
+    show_in_inspector(pick_point(renderer_, shown_positions(), x, y, 12));
+  };
+  style->on_band = [this](int x0, int y0, int x, int y) {
+    marks_->show_band(x0, y0, x, y);
+    render();
+  };
+  style->on_band_end = [this](int x0, int y0, int x1, int y1, bool add) {
+    marks_->hide_band();
+    select_in_rectangle(x0, y0, x1, y1, add);  // renders
   };
   style->on_grab = [this](int x, int y) {
     if (!snapshot_ || snapshot_->constraints.handles.empty()) return false;
@@ -131,19 +135,25 @@ void MainWindow::set_up_mouse() {
     dragged_handle_ = pick_point(renderer_, targets, x, y, 15);
     if (dragged_handle_ < 0) return false;
     drag_depth_ = to_display(renderer_, handles[dragged_handle_].target).z();
+    drag_moved_ = false;
     return true;
   };
-  style->on_drag = [this](int x, int y) {
+  // The target follows the mouse while the button is down; the solver gets the newest target
+  // whenever it is ready for one (SolverWorker::drag_handle), and the whole drag is one edit.
+  auto drag_to = [this](int x, int y) {
+    if (dragged_handle_ < 0 || !worker_) return;
     const Eigen::Vector3d p = to_world(renderer_, x, y, drag_depth_);
-    status_->setText(QString("handle %1 to (%2, %3, %4): release to move it")
+    worker_->drag_handle(dragged_handle_, p, /*first=*/!drag_moved_);
+    drag_moved_ = true;
+    status_->setText(QString("handle %1 at (%2, %3, %4)")
                          .arg(dragged_handle_)
                          .arg(p.x(), 0, 'f', 2)
                          .arg(p.y(), 0, 'f', 2)
                          .arg(p.z(), 0, 'f', 2));
   };
-  style->on_release = [this](int x, int y) {
-    if (dragged_handle_ < 0) return;
-    move_handle(dragged_handle_, to_world(renderer_, x, y, drag_depth_));
+  style->on_drag = drag_to;
+  style->on_release = [this, drag_to](int x, int y) {
+    drag_to(x, y);
     dragged_handle_ = -1;
   };
   view_->interactor()->SetInteractorStyle(style);

@@ -122,12 +122,13 @@ void MainWindow::build_edit_menu() {
   connect(redo_action_, &QAction::triggered, this, &MainWindow::redo);
   m->addSeparator();
   connect(add_action(m, "Make &handle", QKeySequence("H"),
-                     "Hold the picked vertex (click it in the view) where it is; Shift + drag the handle to move it"),
+                     "Hold the selected vertices (click one, or Ctrl + drag a rubber band around several) where "
+                     "they are; Shift + drag a handle to move it"),
           &QAction::triggered, this, [this] {
-            if (selected_vertex_ < 0)
-              report_error("Pick a vertex first: click it in the view.");
+            if (selection_.empty())
+              report_error("Select vertices first: click one in the view, or Ctrl + drag a rubber band around several.");
             else
-              add_handle(selected_vertex_);
+              add_handles(selection_);
           });
   connect(add_action(m, "Remove handle...", QKeySequence("Shift+H"), "Remove one of the position handles"),
           &QAction::triggered, this, [this] {
@@ -261,6 +262,8 @@ void MainWindow::build_solver_panel() {
   solver_dock_->setObjectName("solver");
   solver_dock_->setWidget(solver_panel_);
   addDockWidget(Qt::LeftDockWidgetArea, solver_dock_);
+  // Wide enough for the form without a horizontal scroll bar when the window allows it.
+  resizeDocks({solver_dock_}, {solver_panel_->form()->sizeHint().width() + 50}, Qt::Horizontal);
   connect(solver_panel_, &SolverPanel::mode_chosen, this, [this](const QString& mode) {
     if (!set_mode(mode)) show_solver_state();
   });

@@ -24,7 +24,7 @@ QPen series_pen(int index) {
 }  // namespace
 
 ObjectiveChart::ObjectiveChart(QWidget* parent) : QWidget(parent) {
-  setMinimumSize(240, 200);
+  setMinimumSize(200, 160);
   setToolTip("Objective terms (log10 of the unweighted sums of squares), the largest DOG constraint residual "
              "and the time per iteration, for the last iterations");
 }

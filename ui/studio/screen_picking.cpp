@@ -26,30 +26,51 @@ Eigen::Vector3d to_world(vtkRenderer* renderer, double x, double y, double depth
   return Eigen::Vector3d(w[0], w[1], w[2]) / (w[3] != 0 ? w[3] : 1.0);
 }
 
+Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3d& points) {
+  // The camera's matrix once (WorldToDisplay per point recomputes it: too slow for hovering).
+  vtkMatrix4x4* world_to_view =
+      renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1);
+  Eigen::MatrixX3d display(points.rows(), 3);
+  for (int i = 0; i < points.rows(); ++i) {
+    double p[4] = {points(i, 0), points(i, 1), points(i, 2), 1}, v[4];
+    world_to_view->MultiplyPoint(p, v);
+    if (!(v[3] > 0)) {
+      display.row(i).setConstant(std::numeric_limits<double>::quiet_NaN());
+      continue;
+    }
+    double dx = v[0] / v[3], dy = v[1] / v[3], dz = v[2] / v[3];
+    renderer->ViewToDisplay(dx, dy, dz);
+    display.row(i) << dx, dy, dz;
+  }
+  return display;
+}
+
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels) {
   // Points that project within a pixel of the nearest one count as one place (copies of a crease
   // vertex, a sheet folded over itself): the front one wins.
   constexpr double kSamePlace = 1.0;
-  const double far = std::numeric_limits<double>::infinity();
-  std::vector<std::pair<double, double>> near(points.rows(), {far, far});  // (screen distance, depth)
-  double nearest = far;
-  // The camera's matrix once (WorldToDisplay per point recomputes it: too slow for hovering).
-  vtkMatrix4x4* world_to_view =
-      renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1);
-  for (int i = 0; i < points.rows(); ++i) {
-    double p[4] = {points(i, 0), points(i, 1), points(i, 2), 1}, v[4];
-    world_to_view->MultiplyPoint(p, v);
-    if (v[3] == 0) continue;
-    double dx = v[0] / v[3], dy = v[1] / v[3], dz = v[2] / v[3];
-    renderer->ViewToDisplay(dx, dy, dz);
-    near[i] = {Eigen::Vector2d(dx - x, dy - y).norm(), dz};
-    nearest = std::min(nearest, near[i].first);
-  }
-  if (nearest > max_pixels) return -1;
+  const Eigen::MatrixX3d display = project_to_display(renderer, points);
+  const Eigen::VectorXd distance =
+      ((display.col(0).array() - x).square() + (display.col(1).array() - y).square()).sqrt().matrix();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < distance.size(); ++i)
+    if (distance[i] < nearest) nearest = distance[i];  // NaN (behind the camera) never is
+  if (!(nearest <= max_pixels)) return -1;
   int best = -1;
-  for (int i = 0; i < points.rows(); ++i)
-    if (near[i].first <= nearest + kSamePlace && (best < 0 || near[i].second < near[best].second)) best = i;
+  for (int i = 0; i < distance.size(); ++i)
+    if (distance[i] <= nearest + kSamePlace && (best < 0 || display(i, 2) < display(best, 2))) best = i;
   return best;
+}
+
+std::vector<int> points_in_rectangle(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x0, double y0,
+                                     double x1, double y1) {
+  const Eigen::MatrixX3d display = project_to_display(renderer, points);
+  const double left = std::min(x0, x1), right = std::max(x0, x1), bottom = std::min(y0, y1), top = std::max(y0, y1);
+  std::vector<int> inside;
+  for (int i = 0; i < display.rows(); ++i)
+    if (display(i, 0) >= left && display(i, 0) <= right && display(i, 1) >= bottom && display(i, 1) <= top)
+      inside.push_back(i);
+  return inside;
 }
 
 }  // namespace sdog::studio

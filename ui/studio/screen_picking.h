@@ -5,6 +5,7 @@
 #include <vtkRenderer.h>
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace sdog::studio {
 
@@ -13,6 +14,13 @@ namespace sdog::studio {
 /// projecting within a pixel of that distance, the one nearest the camera. -1 if none.
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels);
 
+/// Rows of `points` whose projections lie in the rectangle with corners (x0, y0) and (x1, y1)
+/// (display coordinates, any two opposite corners), hidden ones included, in row order.
+std::vector<int> points_in_rectangle(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x0, double y0,
+                                     double x1, double y1);
+
+/// Display coordinates (x, y, depth) of every row of `points` (a point behind the camera: NaN).
+Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3d& points);
 /// Display coordinates (x, y, depth in [0, 1]) of a world point.
 Eigen::Vector3d to_display(vtkRenderer* renderer, const Eigen::Vector3d& world);
 /// The world point at display position (x, y) and display depth `depth`.

@@ -99,8 +99,32 @@ void SolverWorker::set_mode(const std::string& mode) {
   send_snapshot();
 }
 
-void SolverWorker::add_handle(int vertex) {
-  session().add_handle(vertex);
+void SolverWorker::add_handles(const std::vector<int>& vertices) {
+  session().add_handles(vertices);
+  send_snapshot();
+}
+
+void SolverWorker::drag_handle(int handle, const Eigen::Vector3d& target, bool first) {
+  std::lock_guard<std::mutex> lock(drag_mutex_);
+  if (drag_) {  // not applied yet: replaced (a first move stays a first move)
+    drag_->handle = handle;
+    drag_->target = target;
+    drag_->first = drag_->first || first;
+    return;
+  }
+  drag_ = Drag{handle, target, first};
+  post([](SolverWorker& w) { w.apply_drag(); });
+}
+
+void SolverWorker::apply_drag() {
+  Drag d;
+  {
+    std::lock_guard<std::mutex> lock(drag_mutex_);
+    if (!drag_) return;
+    d = *drag_;
+    drag_.reset();
+  }
+  session().move_handle(d.handle, d.target, /*merge=*/!d.first);
   send_snapshot();
 }
 

@@ -12,6 +12,9 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "geometry/atomic_output.h"
@@ -35,6 +38,11 @@ class SolverWorker : public QObject {
   void post(std::function<void(SolverWorker&)> command);
   /// Thread safe: the window has shown the last snapshot.
   void acknowledge() { snapshot_taken_ = true; }
+  /// Thread safe (not through post()): the newest target of a handle being dragged. The worker
+  /// applies the newest target when it gets to it and drops those it did not get to, so a fast
+  /// mouse does not queue a rebuild per move; the moves of one drag (`first` on its first move)
+  /// are one undoable edit.
+  void drag_handle(int handle, const Eigen::Vector3d& target, bool first);
 
   // Commands (call them through post()). Each sends a snapshot afterwards.
   void open(const RunConfig& config, const std::string& mode);
@@ -43,7 +51,7 @@ class SolverWorker : public QObject {
   void pause();
   void reset();
   void set_mode(const std::string& mode);
-  void add_handle(int vertex);
+  void add_handles(const std::vector<int>& vertices);
   void move_handle(int handle, const Eigen::Vector3d& target);
   void remove_handle(int handle);
   void add_angle(int crease_point, double degrees);
@@ -70,6 +78,14 @@ class SolverWorker : public QObject {
  private:
   Session& session();
   void send_snapshot();
+  void apply_drag();
+  struct Drag {
+    int handle;
+    Eigen::Vector3d target;
+    bool first;
+  };
+  std::mutex drag_mutex_;
+  std::optional<Drag> drag_;  // guarded by drag_mutex_; set: an apply_drag is queued
   std::shared_ptr<const DogModel> model_;
   std::unique_ptr<Session> session_;
   QTimer* play_timer_;
