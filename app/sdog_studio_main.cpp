@@ -1,18 +1,23 @@
 // sdog-studio: the desktop application (Qt widgets around sdog::studio::MainWindow).
 //   sdog-studio [PATTERN.svg --res 31x21 --mode M --overlay L,... --view V]
 //   sdog-studio --screenshot FILE.png [PATTERN ... --iters N]   renders the window, saves it, exits
+//   sdog-studio --measure-fps SECONDS PATTERN ...   plays, turns the camera, prints the frame rate
 // Exit codes as sdog's: 0 success, 1 bad input or output, 2 usage error.
 #include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <iostream>
 #include <map>
 
 #include "app/versions.h"
 #include "geometry/errors.h"
 #include "solver/mode_factory.h"
+#include "ui/studio/frame_rate.h"
 #include "ui/studio/main_window.h"
 #include "ui/vis/layers.h"
 
@@ -21,6 +26,7 @@ namespace {
 struct StudioArgs {
   std::string pattern, res = "21x21", mode = "standard", overlay, view = "3d", screenshot, size = "1600x1000";
   int iterations = 0;
+  double measure_fps = 0;
 };
 
 QString about_text() {
@@ -32,14 +38,9 @@ QString about_text() {
   return text + QString("<tr><td>qt</td><td>%1</td></tr></table>").arg(qVersion());
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  QApplication qt(argc, argv);  // takes Qt's own options out of argv
-
-  StudioArgs a;
-  CLI::App cli{"Scalable DOGs studio: see and steer the solver"};
+/// The command line's options, bound to `a`.
+void add_options(CLI::App& cli, StudioArgs& a) {
+  cli.name("sdog-studio");
   cli.add_option("PATTERN", a.pattern, "crease pattern (SVG) to open");
   cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh)")->capture_default_str();
   cli.add_option("--mode", a.mode, "solver mode (" + sdog::known_modes() + ")")->capture_default_str();
@@ -49,15 +50,56 @@ int main(int argc, char** argv) {
   cli.add_option("--iters", a.iterations, "step the solver N iterations first")->check(CLI::Range(0, 100000));
   cli.add_option("--screenshot", a.screenshot, "save the window as PNG and exit (needs PATTERN)");
   cli.add_option("--size", a.size, "window size WIDTHxHEIGHT")->capture_default_str();
+  cli.add_option("--measure-fps", a.measure_fps,
+                 "play the solver for SECONDS while turning the camera, print the view's frame rate and exit "
+                 "(needs PATTERN)")
+      ->check(CLI::Range(0.5, 3600.0));
+}
+
+/// True when Qt has somewhere to show windows: an X or Wayland display, or a platform chosen
+/// by QT_QPA_PLATFORM or -platform. Without one, QApplication aborts.
+bool has_display(int argc, char** argv) {
+  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+    if (const char* value = std::getenv(name); value && *value) return true;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "-platform") return true;
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  StudioArgs a;
+  CLI::App cli{"Scalable DOGs studio: see and steer the solver"};
+  add_options(cli, a);
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {  // no window needed
+      std::cout << cli.help();
+      return 0;
+    }
+  if (!has_display(argc, argv)) {
+    std::cerr << "sdog-studio: no display to open windows on (DISPLAY is not set); run it in a desktop session, or "
+                 "headless as `xvfb-run -a sdog-studio ...`\n";
+    return 1;
+  }
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication qt(argc, argv);  // takes Qt's own options out of argv
+
   try {
     cli.parse(argc, argv);
     if (!a.screenshot.empty() && a.pattern.empty()) throw CLI::ValidationError("--screenshot", "needs PATTERN");
-  } catch (const CLI::ParseError& e) {
+    if (a.measure_fps > 0 && a.pattern.empty()) throw CLI::ValidationError("--measure-fps", "needs PATTERN");
+    if (a.measure_fps > 0 && !a.screenshot.empty())
+      throw CLI::ValidationError("--measure-fps", "cannot be combined with --screenshot");
+  } catch (const CLI::CallForHelp& e) {
     return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "sdog-studio: " << e.what() << " (run `sdog-studio --help` for usage)\n";
+    return 2;
   }
 
   sdog::studio::MainWindow window(about_text());
-  const bool batch = !a.screenshot.empty();
+  const bool batch = !a.screenshot.empty() || a.measure_fps > 0;
   int exit_code = 0;
   if (batch)
     window.set_error_sink([&](const QString& message) {
@@ -83,7 +125,27 @@ int main(int argc, char** argv) {
       !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res), QString::fromStdString(a.mode)))
     if (batch) return 1;
   if (a.iterations > 0) window.step(a.iterations);
-  if (batch) {
+  bool measuring = false;
+  if (a.measure_fps > 0) {
+    // Measured once the first state is shown (and the iterations asked for are done).
+    QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
+      if (measuring || window.snapshot()->iteration < a.iterations) return;
+      measuring = true;
+      QTimer::singleShot(0, &window, [&] {
+        const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
+        const sdog::vis::ImageSize view{window.renderer()->GetSize()[0], window.renderer()->GetSize()[1]};
+        std::printf("view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d pixels:\n",
+                    a.mode.c_str(), a.pattern.c_str(), a.res.c_str(), window.model()->fine.vertex_count(), view.width,
+                    view.height);
+        std::printf("  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max %.1f ms\n",
+                    r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
+        std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
+        std::fflush(stdout);
+        qt.exit(exit_code);
+      });
+    });
+  }
+  if (!a.screenshot.empty()) {
     // Saves the window once the state of the last iteration asked for is shown.
     QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
       if (window.snapshot()->iteration < a.iterations) return;

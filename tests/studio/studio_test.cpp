@@ -13,6 +13,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -101,6 +102,11 @@ class StudioTest : public QObject {
       window_->set_view(view);
       QCOMPARE(window_->scene()->options().view, view);
     }
+    QVERIFY(!window_->smooth_edges());
+    window_->set_smooth_edges(true);
+    QVERIFY(window_->smooth_edges());
+    window_->set_smooth_edges(false);
+    QVERIFY(!window_->smooth_edges());
     QVERIFY(errors_.isEmpty());
   }
 
@@ -454,6 +460,43 @@ class StudioTest : public QObject {
     QCOMPARE(bad.exitCode(), 1);
     QVERIFY(bad.readAllStandardError().contains("/no/such.svg"));
     QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
+  }
+
+  // The frame-rate measurement runs and reports (its numbers are for the README's benchmark
+  // section, not checked here: timing is not a unit test's business).
+  void command_line_frame_rate() {
+    QProcess studio;
+    studio.start(SDOG_STUDIO_EXE, {"--measure-fps", "1", kPattern, "--res", "21x21", "--size", "800x500"});
+    QVERIFY(studio.waitForFinished(kWait));
+    const QString out = studio.readAllStandardOutput();
+    QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
+    const QRegularExpressionMatch m =
+        QRegularExpression(R"((\d+) frames in ([\d.]+) s: ([\d.]+) fps.*solver: (\d+) iterations)",
+                           QRegularExpression::DotMatchesEverythingOption)
+            .match(out);
+    QVERIFY2(m.hasMatch(), qPrintable(out));
+    QVERIFY(m.captured(1).toInt() > 0);
+    QVERIFY(m.captured(2).toDouble() >= 1.0);
+    QVERIFY(m.captured(3).toDouble() > 0);
+    QProcess bad;
+    bad.start(SDOG_STUDIO_EXE, {"--measure-fps", "1"});
+    QVERIFY(bad.waitForFinished(kWait));
+    QCOMPARE(bad.exitCode(), 2);
+    QVERIFY(bad.readAllStandardError().contains("needs PATTERN"));
+    // Without a display: one message instead of Qt's abort; --help needs none.
+    QProcessEnvironment no_display = QProcessEnvironment::systemEnvironment();
+    for (const QString& name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) no_display.remove(name);
+    QProcess headless;
+    headless.setProcessEnvironment(no_display);
+    headless.start(SDOG_STUDIO_EXE, {kPattern});
+    QVERIFY(headless.waitForFinished(kWait));
+    QCOMPARE(headless.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(headless.exitCode(), 1);
+    QVERIFY(headless.readAllStandardError().contains("no display"));
+    headless.start(SDOG_STUDIO_EXE, {"--help"});
+    QVERIFY(headless.waitForFinished(kWait));
+    QCOMPARE(headless.exitCode(), 0);
+    QVERIFY(headless.readAllStandardOutput().contains("--measure-fps"));
   }
 };
 

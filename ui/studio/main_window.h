@@ -72,7 +72,12 @@ class MainWindow : public QMainWindow {
   void set_layer(vis::Layer layer, bool on);
   void set_view(vis::View view);
   void set_coarse_visible(bool on);
+  /// Anti-aliasing of the 3D view (FXAA; off by default: it costs frames with software OpenGL).
+  void set_smooth_edges(bool on);
+  bool smooth_edges() const { return renderer_->GetUseFXAA(); }
   void reset_camera();
+  /// Draws the 3D view now (what the mouse's camera moves do).
+  void render();
   bool save_camera(const QString& path);
   bool load_camera(const QString& path);
 
@@ -154,7 +159,6 @@ class MainWindow : public QMainWindow {
   void show_snapshot(const Snapshot& snapshot);
   void show_report(const IterationReport& report);
   void write_png_frame();
-  void render();
   /// The hovered vertex (-1: none, then the picked one) in the inspector.
   void show_in_inspector(int hovered);
   /// Where the view draws the fine vertices (the flat view: the rest state). Needs a snapshot.
@@ -207,7 +211,7 @@ class MainWindow : public QMainWindow {
   std::map<std::string, QAction*> mode_actions_, scenario_actions_;
   std::map<vis::View, QAction*> view_actions_;
   QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr, *coarse_action_ = nullptr;
-  QAction *frames_action_ = nullptr;
+  QAction *frames_action_ = nullptr, *smooth_action_ = nullptr;
   QAction *step_action_ = nullptr, *step10_action_ = nullptr, *reset_action_ = nullptr;
   SolverPanel* solver_panel_ = nullptr;
   QDockWidget* solver_dock_ = nullptr;

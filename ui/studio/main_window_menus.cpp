@@ -197,6 +197,10 @@ void MainWindow::build_view_menu() {
   coarse_action_ = add_action(m, "&Coarse mesh", QKeySequence("C"), "Draw the coarse mesh's edges over the fine mesh");
   coarse_action_->setCheckable(true);
   connect(coarse_action_, &QAction::toggled, this, &MainWindow::set_coarse_visible);
+  smooth_action_ = add_action(m, "S&mooth edges", QKeySequence(),
+                              "Anti-aliasing of the view (FXAA); slower with software OpenGL");
+  smooth_action_->setCheckable(true);
+  connect(smooth_action_, &QAction::toggled, this, &MainWindow::set_smooth_edges);
   m->addSeparator();
   connect(add_action(m, "&Reset camera", QKeySequence("Home"), "The view's default camera"), &QAction::triggered,
           this, &MainWindow::reset_camera);
