@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sdog::vis {
 namespace {
@@ -126,12 +127,21 @@ void Legend::place(double top, int viewport_height, int font) const {
   box_->GetPosition2Coordinate()->SetValue(kColumnWidth, h - title_h);
 }
 
-void stack_legends(const std::vector<const Legend*>& legends, int viewport_height, int font) {
-  double total = 0;
+double Legend::title_width_pixels(int font) const {
+  const char* text = bar_ ? bar_->GetTitle() : title_->GetInput();
+  return 0.62 * font * (text ? std::strlen(text) : 0);
+}
+
+void stack_legends(const std::vector<const Legend*>& legends, int viewport_width, int viewport_height, int font) {
+  double total = 0, widest = 0;
   for (const Legend* l : legends)
-    if (l->visible()) total += l->height_pixels(font) + 0.8 * font;
-  const double room = (kTop - 0.02) * viewport_height;
-  const int f = total > room ? std::max(6, static_cast<int>(font * room / total)) : font;
+    if (l->visible()) {
+      total += l->height_pixels(font) + 0.8 * font;
+      widest = std::max(widest, l->title_width_pixels(font));
+    }
+  const double room = (kTop - 0.02) * viewport_height, column = kColumnWidth * viewport_width;
+  const double scale = std::min({1.0, total > 0 ? room / total : 1.0, widest > 0 ? column / widest : 1.0});
+  const int f = scale < 1 ? std::max(6, static_cast<int>(font * scale)) : font;
   double top = kTop;
   for (const Legend* l : legends) {
     if (!l->visible()) continue;

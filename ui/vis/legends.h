@@ -37,6 +37,8 @@ class Legend {
   bool visible() const;
   /// Height in pixels at the font size (points = pixels here).
   double height_pixels(int font) const;
+  /// Width in pixels of the title at the font size (an estimate: bold sans, 0.62 em per character).
+  double title_width_pixels(int font) const;
   /// Places the legend with its top edge at normalized viewport height `top` in the legend column
   /// of a viewport `viewport_height` pixels high.
   void place(double top, int viewport_height, int font) const;
@@ -51,7 +53,7 @@ class Legend {
 };
 
 /// Stacks the visible legends from the top of the column, in the order given; shrinks them
-/// evenly when they do not fit.
-void stack_legends(const std::vector<const Legend*>& legends, int viewport_height, int font);
+/// evenly when they do not fit the viewport's height or a title does not fit the column's width.
+void stack_legends(const std::vector<const Legend*>& legends, int viewport_width, int viewport_height, int font);
 
 }  // namespace sdog::vis

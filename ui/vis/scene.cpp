@@ -433,7 +433,7 @@ void Scene::layout_legends() {
   std::vector<const Legend*> stack;
   for (Layer l : all_layers())
     if (o.legends.count(l)) stack.push_back(&o.legends.at(l));
-  stack_legends(stack, size && size[1] > 0 ? size[1] : 800, options_.font_size);
+  stack_legends(stack, size && size[0] > 0 ? size[0] : 1600, size && size[1] > 0 ? size[1] : 800, options_.font_size);
   for (vtkTextActor* t : o.texts()) t->GetTextProperty()->SetFontSize(options_.font_size);
 }
 
