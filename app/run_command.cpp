@@ -255,9 +255,9 @@ void register_run_command(CLI::App& app, Runner& runner) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   a->link_weight_opt = cmd->add_option("--link-weight", a->link_weight,
-                                       "coarse, twolevel modes: weight of the link constraints between fine and coarse twins ($.coarse.link_weight, $.twolevel.link_weight)")
-                           ->check(CLI::Range(0.0, 1e12))
-                           ->capture_default_str();
+                                       "coarse, twolevel modes: weight of the link constraints between fine and coarse twins "
+                                       "($.coarse.link_weight, default 0.1; $.twolevel.link_weight, default 0)")
+                           ->check(CLI::Range(0.0, 1e12));
   cmd->add_flag("--no-fine-to-coarse", a->no_fine_to_coarse,
                 "coarse mode: the coarse mesh is not pulled towards the fine one (one-way coupling)");
   a->rho_opt = cmd->add_option("--rho", a->rho, "ADMM modes: penalty rho > 0 of the augmented terms ($.admm.rho)");

@@ -23,7 +23,11 @@
 namespace sdog {
 
 struct TwoLevelOptions {
-  double link_weight = 0.1;  ///< pull of the coarse link vertices towards their fine twins
+  /// Pull of the coarse link vertices towards their fine twins. 0 (the default): the coarse mesh
+  /// runs on its own and only drives the fine one; any pull closes a feedback loop (the coarse
+  /// step follows the fine motion, which the correction then adds to the fine mesh again) that
+  /// made the flattening test diverge with 0.1 (README, "The two-level mode").
+  double link_weight = 0;
   std::string validate() const;
 };
 
