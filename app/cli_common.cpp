@@ -30,15 +30,6 @@ void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
                "build only the fine mesh (allows even resolutions; no coarse mesh, no map)");
 }
 
-Resolution resolve_resolution(const std::string& text, const CreasePattern& pattern) {
-  if (text != "auto") return parse_resolution(text);
-  const double w = pattern.sheet.bbox.width(), h = pattern.sheet.bbox.height();
-  const int longer = 41;
-  const int shorter =
-      std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(w, h) / std::max(w, h))) + 1);
-  return w >= h ? Resolution{longer, shorter} : Resolution{shorter, longer};
-}
-
 DogModel build_model(const PatternOptions& o) {
   MeshOptions mesh_options;
   mesh_options.cleaning.merge_fraction = o.merge_fraction;
@@ -49,7 +40,7 @@ DogModel build_model(const PatternOptions& o) {
   SvgReadOptions svg;
   svg.flatness = o.flatness;
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
-  return build_dog_model(pattern, resolve_resolution(o.res, pattern), mesh_options);
+  return build_dog_model(pattern, resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height()), mesh_options);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

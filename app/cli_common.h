@@ -20,9 +20,6 @@ struct PatternOptions {
 /// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand.
 void add_pattern_options(CLI::App& cmd, PatternOptions& o);
 
-/// "auto": 41 lines along the longer side of the sheet, the other side in proportion (odd).
-Resolution resolve_resolution(const std::string& text, const CreasePattern& pattern);
-
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
 DogModel build_model(const PatternOptions& o);
 

@@ -24,7 +24,7 @@
 namespace {
 
 struct StudioArgs {
-  std::string pattern, res = "21x21", mode = "standard", overlay, view = "3d", screenshot, size = "1600x1000";
+  std::string pattern, res = "auto", mode = "standard", overlay, view = "3d", screenshot, size = "1600x1000";
   int iterations = 0;
   double measure_fps = 0;
 };
@@ -42,7 +42,7 @@ QString about_text() {
 void add_options(CLI::App& cli, StudioArgs& a) {
   cli.name("sdog-studio");
   cli.add_option("PATTERN", a.pattern, "crease pattern (SVG) to open");
-  cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh)")->capture_default_str();
+  cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh), or auto: 41 along the longer side")->capture_default_str();
   cli.add_option("--mode", a.mode, "solver mode (" + sdog::known_modes() + ")")->capture_default_str();
   cli.add_option("--overlay", a.overlay, "comma-separated overlays to show instead of vertex-types,wireframe (" +
                                              sdog::vis::known_layers() + ")");

@@ -34,6 +34,14 @@ Resolution parse_resolution(const std::string& text) {
   return r;
 }
 
+Resolution resolve_resolution(const std::string& text, double width, double height) {
+  if (text != "auto") return parse_resolution(text);
+  const int longer = 41;
+  const int shorter =
+      std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(width, height) / std::max(width, height))) + 1);
+  return width >= height ? Resolution{longer, shorter} : Resolution{shorter, longer};
+}
+
 void check_resolution(const Resolution& res, bool need_coarse) {
   for (int v : {res.nx, res.ny}) {
     if (v < kMinResolution)

@@ -26,6 +26,10 @@ constexpr int kMaxResolution = 2001;
 /// Parses "31x21" (or "41" for 41x41). Throws UsageError with the accepted form and range.
 Resolution parse_resolution(const std::string& text);
 
+/// `text` parsed, or for "auto" the default resolution of a sheet `width` x `height`: 41 lines
+/// along the longer side, the other side in proportion (odd, at least 3).
+Resolution resolve_resolution(const std::string& text, double width, double height);
+
 /// Throws UsageError unless 3 <= nx, ny <= 2001, and both are odd when `need_coarse`.
 void check_resolution(const Resolution& res, bool need_coarse);
 

@@ -80,6 +80,12 @@ class StudioTest : public QObject {
     QVERIFY(!window_->model()->has_coarse);
     QVERIFY(!window_->set_mode("twolevel"));
     QCOMPARE(errors_.size(), 3);
+    // "auto" (the command line's default): 41 grid lines along the longer side, as sdog's.
+    QVERIFY(window_->open_pattern(kPattern, "auto"));
+    QCOMPARE(std::max(window_->model()->fine.nx(), window_->model()->fine.ny()), 41);
+    QVERIFY2(window_->windowTitle().contains(QString("%1x%2").arg(window_->model()->fine.nx()).arg(window_->model()->fine.ny())),
+             qPrintable(window_->windowTitle()));
+    QVERIFY(window_->model()->has_coarse);
   }
 
   void toggles_every_overlay() {

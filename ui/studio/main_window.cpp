@@ -163,7 +163,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   select_vertex(-1);
   model_ = std::move(model);
   pattern_path_ = path;
-  resolution_ = resolution;
+  resolution_ = QString("%1x%2").arg(model_->fine.xs.size()).arg(model_->fine.ys.size());  // "auto" resolved
   mode_ = mode_name;
   scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
   for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
@@ -171,10 +171,10 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   start_worker();
   const RunConfig config = config_;
   post([config, mode_name](SolverWorker& w) { w.open(config, mode_name); });
-  setWindowTitle(QFileInfo(path).fileName() + " " + resolution + " - Scalable DOGs studio");
+  setWindowTitle(QFileInfo(path).fileName() + " " + resolution_ + " - Scalable DOGs studio");
   status_->setText(QString("%1 at %2: %3 fine vertices in %4 patches, %5; mode %6, scenario %7 (Solver > Step: S, "
                            "Play: Space)")
-                       .arg(QFileInfo(path).fileName(), resolution)
+                       .arg(QFileInfo(path).fileName(), resolution_)
                        .arg(model_->fine.vertex_count())
                        .arg(model_->fine.patch_count())
                        .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
@@ -462,7 +462,7 @@ void MainWindow::open_file(const QString& path) {
   if (path.endsWith(".json", Qt::CaseInsensitive))
     open_workspace(path);
   else if (path.endsWith(".svg", Qt::CaseInsensitive))
-    open_pattern(path, resolution_.isEmpty() ? QString("21x21") : resolution_, QString::fromStdString(mode_));
+    open_pattern(path, resolution_.isEmpty() ? QString("auto") : resolution_, QString::fromStdString(mode_));
   else
     report_error("Cannot open " + path + ": the studio opens crease patterns (.svg) and workspaces (.json).");
 }

@@ -57,15 +57,15 @@ void MainWindow::build_file_menu() {
             if (path.isEmpty()) return;
             bool ok = false;
             const QString res = QInputDialog::getText(
-                this, "Resolution", "Grid lines XxY (odd values also build the coarse mesh):", QLineEdit::Normal,
-                resolution_.isEmpty() ? "21x21" : resolution_, &ok);
+                this, "Resolution", "Grid lines XxY (odd values also build the coarse mesh), or auto (41 along the longer side):", QLineEdit::Normal,
+                resolution_.isEmpty() ? "auto" : resolution_, &ok);
             if (ok) open_pattern(path, res, QString::fromStdString(mode_));
           });
   connect(add_action(m, "Change &resolution...", QKeySequence("Ctrl+R"),
                      "Mesh the open pattern again at another resolution (odd values for the coarse modes)"),
           &QAction::triggered, this, [this] {
             bool ok = false;
-            const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY:", QLineEdit::Normal,
+            const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY, or auto:", QLineEdit::Normal,
                                                       resolution_, &ok);
             if (ok) change_resolution(res);
           });

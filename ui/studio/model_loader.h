@@ -9,7 +9,8 @@
 
 namespace sdog::studio {
 
-/// Reads the SVG and builds the model. Throws the geometry library's errors (UsageError for a
+/// Reads the SVG and builds the model; `resolution` is "XxY" or "auto" (41 grid lines along the
+/// sheet's longer side, as sdog's default). Throws the geometry library's errors (UsageError for a
 /// resolution that cannot work, InputError for a pattern that cannot be read or meshed).
 std::shared_ptr<const DogModel> load_model(const std::string& pattern_path, const std::string& resolution);
 
