@@ -5,12 +5,12 @@
 namespace sdog {
 
 bool step_patch_round(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
-                      StepReport& report) {
+                      StepReport& report, const std::vector<char>* active) {
   // Parallelism comes from the patches (TBB): the factorisations inside run on one BLAS thread
   // each (measured at 81x81: 2 patch threads x 2 BLAS threads oversubscribe 2 cores, 159 ms per
   // iteration; with 1 BLAS thread 73 ms).
   set_blas_threads(1);
-  const std::vector<PatchReport> round = step_patches(patches, x, last);
+  const std::vector<PatchReport> round = step_patches(patches, x, last, active);
   const bool first = report.patches.empty();
   if (first) report.patches = round;
   for (size_t i = 0; i < round.size(); ++i) {

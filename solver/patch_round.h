@@ -16,6 +16,6 @@ namespace sdog {
 /// and marks the report failed when a patch step failed or produced NaN or infinity; the caller
 /// rolls x back.
 bool step_patch_round(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
-                      StepReport& report);
+                      StepReport& report, const std::vector<char>* active = nullptr);
 
 }  // namespace sdog

@@ -24,6 +24,7 @@ class PatchStepper {
 /// Steps every patch from x in parallel (TBB), writing each patch's vertices into x. Reports in
 /// patch order, with start times and worker threads; the result does not depend on the thread
 /// count.
-std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last);
+std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
+                                      const std::vector<char>* active = nullptr);
 
 }  // namespace sdog

@@ -58,11 +58,15 @@ void apply_solver(const Field& f, StandardOptions& o) {
 }
 
 void apply_patch_solver(const Field& f, SubsolverOptions& o) {
-  f.expect_object({"backend", "constraint_tolerance", "final_constraint_tolerance", "initial_penalty",
+  f.expect_object({"backend", "sweep", "constraint_tolerance", "final_constraint_tolerance", "initial_penalty",
                    "penalty_growth", "max_penalty", "max_outer", "max_inner"});
   if (f.has("backend")) {
     o.backend = f["backend"].text();
     if (o.backend != "sqp" && o.backend != "ceres") f["backend"].fail("expected \"sqp\" or \"ceres\"");
+  }
+  if (f.has("sweep")) {
+    o.sweep = f["sweep"].text();
+    if (o.sweep != "jacobi" && o.sweep != "colours") f["sweep"].fail("expected \"jacobi\" or \"colours\"");
   }
   PatchOptions& p = o.patch;
   const std::pair<const char*, double*> positive[] = {{"constraint_tolerance", &p.constraint_tolerance},
@@ -339,6 +343,7 @@ nlohmann::json to_json(const RunConfig& c) {
             {"max_fold_bias", c.standard.max_fold_bias}}},
           {"patch_solver",
            {{"backend", c.subsolvers.backend},
+            {"sweep", c.subsolvers.sweep},
             {"constraint_tolerance", c.subsolvers.patch.constraint_tolerance},
             {"final_constraint_tolerance", c.subsolvers.patch.final_constraint_tolerance},
             {"initial_penalty", c.subsolvers.patch.initial_penalty},

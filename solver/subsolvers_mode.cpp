@@ -2,12 +2,15 @@
 
 #include "geometry/errors.h"
 #include "solver/crease_geometry.h"
+#include "solver/patch_colouring.h"
 #include "solver/patch_round.h"
 
 namespace sdog {
 
 std::string SubsolverOptions::validate() const {
   if (backend != "sqp" && backend != "ceres") return "backend must be \"sqp\" or \"ceres\", got \"" + backend + "\"";
+  if (sweep != "jacobi" && sweep != "colours")
+    return "sweep must be \"jacobi\" or \"colours\", got \"" + sweep + "\"";
   return patch.validate();
 }
 
@@ -33,6 +36,13 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
     else
       patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp, coupling));
   }
+  if (options_.sweep == "colours") {
+    const std::vector<int> colour = colour_patches(mesh);
+    for (int p = 0; p < mesh.patch_count(); ++p) {
+      if (colour[p] >= static_cast<int>(sweeps_.size())) sweeps_.resize(colour[p] + 1, std::vector<char>(colour.size(), 0));
+      sweeps_[colour[p]][p] = 1;
+    }
+  }
 }
 
 void SubsolversMode::set_time(double t) { scenario_.apply(problem_, t); }
@@ -45,11 +55,14 @@ void SubsolversMode::refresh_targets(const Dofs& x) {
 StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   StepReport report;
   const Dofs x0 = x;
-  refresh_targets(x);
-  frozen_ = x;
-  if (!step_patch_round(patches_, x, last, report)) {
-    x = x0;
-    return report;
+  const size_t rounds = sweeps_.empty() ? 1 : sweeps_.size();
+  for (size_t r = 0; r < rounds; ++r) {
+    refresh_targets(x);
+    frozen_ = x;
+    if (!step_patch_round(patches_, x, last, report, sweeps_.empty() ? nullptr : &sweeps_[r])) {
+      x = x0;
+      return report;
+    }
   }
   report.step_length = 1;
   report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;

@@ -19,6 +19,9 @@ namespace sdog {
 
 struct SubsolverOptions {
   std::string backend = "sqp";  ///< per-patch steps: "sqp" (patch_sqp.h) or "ceres" (patch_solver.h)
+  /// "jacobi": every patch steps at once from the same state; "colours": the patch graph's colours
+  /// (patch_colouring.h) step one after another, each from the state the previous left.
+  std::string sweep = "jacobi";
   PatchOptions patch;           ///< of the Ceres backend (the SQP backend uses the standard options)
   std::string validate() const;
 };
@@ -41,6 +44,7 @@ class SubsolversMode : public Mode {
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
   Dofs frozen_;                                // the state the round started from
   std::vector<std::unique_ptr<PatchStepper>> patches_;
+  std::vector<std::vector<char>> sweeps_;  // the patches of each half-round; empty: one round of all
 };
 
 }  // namespace sdog

@@ -328,7 +328,8 @@ class StudioTest : public QObject {
     auto* rho = qobject_cast<QDoubleSpinBox*>(form->field("ADMM rho"));
     auto* links = qobject_cast<QCheckBox*>(form->field("fine-to-coarse links"));
     auto* backend = qobject_cast<QComboBox*>(form->field("patch backend"));
-    QVERIFY(isometry && kkt && hold && rho && links && backend && !form->field("no such field"));
+    auto* sweep = qobject_cast<QComboBox*>(form->field("patch sweep"));
+    QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && !form->field("no such field"));
     QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
     QCOMPARE(links->isChecked(), window_->run_config().coarse.fine_to_coarse);
     QVERIFY(!panel->apply_button()->isEnabled());
@@ -338,6 +339,7 @@ class StudioTest : public QObject {
     rho->setValue(3.5);
     links->setChecked(false);
     backend->setCurrentText("ceres");
+    sweep->setCurrentText("colours");
     QVERIFY(panel->apply_button()->isEnabled());
     QCOMPARE(window_->run_config().weights.isometry, 20000.0);  // not applied yet
     window_->step(2);
@@ -350,6 +352,7 @@ class StudioTest : public QObject {
     QCOMPARE(applied.admm.rho, 3.5);
     QCOMPARE(applied.coarse.fine_to_coarse, false);
     QCOMPARE(applied.subsolvers.backend, std::string("ceres"));
+    QCOMPARE(applied.subsolvers.sweep, std::string("colours"));
     QCOMPARE(applied.scenario, std::string("corners"));  // the rest is kept
     QVERIFY(!panel->apply_button()->isEnabled());
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again

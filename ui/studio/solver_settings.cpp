@@ -117,6 +117,9 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
   f = add_group(layout, "Patch modes (subsolvers, ADMM)");
   add_choice(f, "patch backend", [](RunConfig& c) -> std::string& { return c.subsolvers.backend; }, {"sqp", "ceres"},
              "per-patch steps: the SQP solver of the standard mode, or Ceres with an augmented Lagrangian loop");
+  add_choice(f, "patch sweep", [](RunConfig& c) -> std::string& { return c.subsolvers.sweep; }, {"jacobi", "colours"},
+             "subsolvers and twolevel: every patch at once from the same state (jacobi), or the patch graph's "
+             "colours one after another (Gauss-Seidel by colour)");
   add_double(f, "Ceres constraint tolerance",
              [](RunConfig& c) -> double& { return c.subsolvers.patch.constraint_tolerance; }, 0, 1, 9,
              "Ceres backend: largest DOG constraint residual of a patch solve");
