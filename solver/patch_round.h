@@ -9,7 +9,7 @@
 
 namespace sdog {
 
-/// Steps every patch from x and adds the round to `report`: one entry per patch in
+/// Steps every patch from x (with `active`: the patches marked there) and adds the round to `report`: one entry per patch in
 /// report.patches (over several rounds of one iteration: times, steps and factorisations summed;
 /// objective, DOG residual and convergence of the latest round), and sqp_steps, factorizations
 /// and factor_ms summed over the patches (factor_ms is then CPU time, not wall time). Returns false

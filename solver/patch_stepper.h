@@ -23,7 +23,8 @@ class PatchStepper {
 
 /// Steps every patch from x in parallel (TBB), writing each patch's vertices into x. Reports in
 /// patch order, with start times and worker threads; the result does not depend on the thread
-/// count.
+/// count. With `active`, only the patches marked there step (the others report a converged
+/// step that took no time and leave their vertices as they are).
 std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
                                       const std::vector<char>* active = nullptr);
 
