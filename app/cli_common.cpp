@@ -40,7 +40,8 @@ DogModel build_model(const PatternOptions& o) {
   SvgReadOptions svg;
   svg.flatness = o.flatness;
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
-  return build_dog_model(pattern, resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height()), mesh_options);
+  const Resolution res = resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
+  return build_dog_model(pattern, res, mesh_options);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

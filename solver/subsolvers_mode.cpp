@@ -1,5 +1,7 @@
 #include "solver/subsolvers_mode.h"
 
+#include <algorithm>
+
 #include "geometry/errors.h"
 #include "solver/crease_geometry.h"
 #include "solver/patch_colouring.h"
@@ -36,13 +38,11 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
     else
       patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp, coupling));
   }
-  if (options_.sweep == "colours") {
-    const std::vector<int> colour = colour_patches(mesh);
-    for (int p = 0; p < mesh.patch_count(); ++p) {
-      if (colour[p] >= static_cast<int>(sweeps_.size())) sweeps_.resize(colour[p] + 1, std::vector<char>(colour.size(), 0));
-      sweeps_[colour[p]][p] = 1;
-    }
-  }
+  // Jacobi: one round of every patch (every patch has colour 0).
+  const int n = mesh.patch_count();
+  const std::vector<int> colour = options_.sweep == "colours" ? colour_patches(mesh) : std::vector<int>(n, 0);
+  sweeps_.assign(*std::max_element(colour.begin(), colour.end()) + 1, std::vector<char>(n, 0));
+  for (int p = 0; p < n; ++p) sweeps_[colour[p]][p] = 1;
 }
 
 void SubsolversMode::set_time(double t) { scenario_.apply(problem_, t); }
@@ -55,11 +55,10 @@ void SubsolversMode::refresh_targets(const Dofs& x) {
 StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   StepReport report;
   const Dofs x0 = x;
-  const size_t rounds = sweeps_.empty() ? 1 : sweeps_.size();
-  for (size_t r = 0; r < rounds; ++r) {
+  for (const std::vector<char>& active : sweeps_) {
     refresh_targets(x);
     frozen_ = x;
-    if (!step_patch_round(patches_, x, last, report, sweeps_.empty() ? nullptr : &sweeps_[r])) {
+    if (!step_patch_round(patches_, x, last, report, &active)) {
       x = x0;
       return report;
     }

@@ -44,7 +44,7 @@ class SubsolversMode : public Mode {
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
   Dofs frozen_;                                // the state the round started from
   std::vector<std::unique_ptr<PatchStepper>> patches_;
-  std::vector<std::vector<char>> sweeps_;  // the patches of each half-round; empty: one round of all
+  std::vector<std::vector<char>> sweeps_;  // the patches stepping in each round of an iteration
 };
 
 }  // namespace sdog

@@ -163,7 +163,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   select_vertex(-1);
   model_ = std::move(model);
   pattern_path_ = path;
-  resolution_ = QString("%1x%2").arg(model_->fine.xs.size()).arg(model_->fine.ys.size());  // "auto" resolved
+  resolution_ = QString::fromStdString(Resolution{model_->fine.nx(), model_->fine.ny()}.str());  // "auto" resolved
   mode_ = mode_name;
   scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
   for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
@@ -243,13 +243,7 @@ void MainWindow::render() {
   view_->update();
 }
 
-void MainWindow::select_vertex(int vertex) {
-  selected_vertex_ = vertex;
-  selection_.clear();
-  if (vertex >= 0) selection_.push_back(vertex);
-  refresh_selection_marks();
-  show_in_inspector(-1);
-}
+void MainWindow::select_vertex(int vertex) { select_vertices(vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{}); }
 
 void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
   if (!add) selection_.clear();
@@ -258,7 +252,6 @@ void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
   selected_vertex_ = selection_.size() == 1 ? selection_.front() : -1;
   refresh_selection_marks();
   show_in_inspector(-1);
-  status_->setText(QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.size()));
 }
 
 void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {

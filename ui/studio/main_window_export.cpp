@@ -126,6 +126,7 @@ void MainWindow::set_up_mouse() {
   style->on_band_end = [this](int x0, int y0, int x1, int y1, bool add) {
     marks_->hide_band();
     select_in_rectangle(x0, y0, x1, y1, add);  // renders
+    status_->setText(QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.size()));
   };
   style->on_grab = [this](int x, int y) {
     if (!snapshot_ || snapshot_->constraints.handles.empty()) return false;

@@ -63,23 +63,18 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
   apply_row->addWidget(revert_);
   apply_row->addWidget(apply_);
   layout->addLayout(apply_row);
-  apply_->setEnabled(false);
-  revert_->setEnabled(false);
+  set_edited(false);
 
   connect(mode_, qOverload<int>(&QComboBox::activated), this,
           [this](int) { Q_EMIT mode_chosen(mode_->currentText()); });
   connect(scenario_, qOverload<int>(&QComboBox::activated), this,
           [this](int) { Q_EMIT scenario_chosen(scenario_->currentText()); });
   connect(from_file, &QPushButton::clicked, this, &SolverPanel::config_file_wanted);
-  connect(form_, &SolverSettingsForm::edited, this, [this] {
-    apply_->setEnabled(true);
-    revert_->setEnabled(true);
-  });
+  connect(form_, &SolverSettingsForm::edited, this, [this] { set_edited(true); });
   connect(apply_, &QPushButton::clicked, this, [this] { Q_EMIT apply_wanted(form_->config()); });
   connect(revert_, &QPushButton::clicked, this, [this] {
     form_->set_config(in_use_);
-    apply_->setEnabled(false);
-    revert_->setEnabled(false);
+    set_edited(false);
   });
 }
 
@@ -96,8 +91,12 @@ void SolverPanel::show_state(const std::string& mode, const RunConfig& config, b
     }
   in_use_ = config;
   form_->set_config(config);
-  apply_->setEnabled(false);
-  revert_->setEnabled(false);
+  set_edited(false);
+}
+
+void SolverPanel::set_edited(bool edited) {
+  apply_->setEnabled(edited);
+  revert_->setEnabled(edited);
 }
 
 }  // namespace sdog::studio

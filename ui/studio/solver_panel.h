@@ -39,6 +39,8 @@ class SolverPanel : public QWidget {
   void apply_wanted(const sdog::RunConfig& config);
 
  private:
+  /// Apply and Revert are enabled while the form holds edits not applied.
+  void set_edited(bool edited);
   QComboBox* mode_;
   QComboBox* scenario_;
   SolverSettingsForm* form_;
