@@ -15,10 +15,13 @@ int default_blas_threads() {
 }
 
 bool set_blas_threads(int n) {
-  // Looked up at run time: CHOLMOD reaches the BLAS through Debian's libblas alternative, which
-  // may or may not be OpenBLAS.
-  using SetThreads = void (*)(int);
-  auto f = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  // Both looked up at run time: CHOLMOD reaches the BLAS through Debian's libblas alternative,
+  // which may or may not be OpenBLAS, and OpenMP comes with CHOLMOD, not with this program.
+  using SetInt = void (*)(int);
+  // With no active levels allowed every parallel region runs on one thread (also regions with an
+  // explicit num_threads clause, which OMP_NUM_THREADS cannot limit).
+  if (auto levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"))) levels(0);
+  auto f = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   if (!f) return false;
   f(n);
   return true;
