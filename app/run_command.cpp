@@ -137,10 +137,11 @@ void run(const RunArgs& a) {
   const int total = scenario.iterations + scenario.hold;
 
   RunCsv csv;
+  PatchesCsv patches;
   // The restoration allows a little slack over the tolerance only through rounding.
   Totals totals(2 * config.standard.sqp.constraint_tolerance);
   ProgressBar progress(total, !a.quiet);
-  std::vector<RunObserver*> observers{&csv, &totals, &progress};
+  std::vector<RunObserver*> observers{&csv, &patches, &totals, &progress};
   std::unique_ptr<vis::FrameWriter> frames;
   if (out && a.frames_every > 0) {
     frames = std::make_unique<vis::FrameWriter>(model, problem, *out, a.frames_every, total);
@@ -160,6 +161,7 @@ void run(const RunArgs& a) {
   std::vector<std::string> files;
   if (out && (status == "completed" || a.keep_failed)) {
     out->write_text("run.csv", csv.text());
+    if (!patches.empty()) out->write_text("patches.csv", patches.text());
     nlohmann::json j = {
         {"status", status},
         {"pattern", a.pattern.pattern},
@@ -211,7 +213,7 @@ void run(const RunArgs& a) {
               << totals.worst_iteration
               << "): the targets may ask for stretching (see dog_max in run.csv)\n";
   if (out)
-    std::cout << "wrote " << a.out << "/run.csv, run.json"
+    std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ") << "run.json"
               << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")
               << "\n";
 }
@@ -247,7 +249,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--config", a->config,
                   "JSON file with constraints, iteration counts, weights and solver options (command-line "
                   "options win); see README, 'Run configuration'");
-  cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu");
+  cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();

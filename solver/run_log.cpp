@@ -36,4 +36,23 @@ std::string run_csv_row(const IterationReport& r) {
   return row;
 }
 
+std::string patches_csv_header() {
+  return "iteration,mode,patch,thread,start_ms,ms,linear_ms,steps,factorizations,objective,dog_max,converged\n";
+}
+
+std::string patches_csv_rows(const IterationReport& r) {
+  std::string rows;
+  for (const PatchReport& p : r.step.patches)
+    rows += std::to_string(r.iteration) + "," + r.mode + "," + std::to_string(p.patch) + "," +
+            std::to_string(p.thread) + "," + number(p.start_ms) + "," + number(p.ms) + "," + number(p.linear_ms) +
+            "," + std::to_string(p.inner) + "," + std::to_string(p.factorizations) + "," + number(p.objective) +
+            "," + number(p.dog_max) + "," + (p.converged ? "1" : "0") + "\n";
+  return rows;
+}
+
+void PatchesCsv::on_iteration(const IterationReport& r, const Dofs&) {
+  text_ += patches_csv_rows(r);
+  rows_ += r.step.patches.size();
+}
+
 }  // namespace sdog

@@ -20,6 +20,16 @@ std::string run_csv_row(const IterationReport& r);
 /// Names of the columns that hold wall-clock times.
 std::vector<std::string> run_csv_time_columns();
 
+/// The per-patch log of the multi-patch modes (patches.csv): one row per patch and iteration,
+///   iteration, mode, patch, thread, start_ms, ms, linear_ms, steps, factorizations, objective,
+///   dog_max, converged
+/// (solver/patch_report.h). `thread` is the TBB worker that ran the solve and `start_ms` when it
+/// started, from the start of the patch round: together a timeline of thread use. Iterations of a
+/// single-mesh mode have no rows. With the colour sweep an iteration has several rounds: times and
+/// counts are summed over them, start and thread are those of the first.
+std::string patches_csv_header();
+std::string patches_csv_rows(const IterationReport& r);
+
 /// Collects the CSV text of a run.
 class RunCsv : public RunObserver {
  public:
@@ -29,6 +39,19 @@ class RunCsv : public RunObserver {
 
  private:
   std::string text_;
+};
+
+/// Collects patches.csv of a run; empty() while no iteration had patch solves.
+class PatchesCsv : public RunObserver {
+ public:
+  PatchesCsv() : text_(patches_csv_header()) {}
+  void on_iteration(const IterationReport& r, const Dofs&) override;
+  bool empty() const { return rows_ == 0; }
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+  size_t rows_ = 0;
 };
 
 }  // namespace sdog

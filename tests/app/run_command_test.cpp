@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
+#include <thread>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -106,6 +108,56 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
     if (steps.back() > 0) EXPECT_LT(residual->GetRange()[1], 1e-4) << file;
   }
   EXPECT_EQ(steps, (std::vector<int>{0, 10, 20, 25}));
+  EXPECT_FALSE(fs::exists(dir + "/patches.csv")) << "the standard mode has no patch solves";
+}
+
+// patches.csv of a patch mode: one row per patch and iteration, a timeline of the TBB workers.
+TEST(RunCommand, PatchModesWriteThePerPatchTimeline) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one core: no parallel patch solves to see";
+  const std::string dir = test::temp_dir("run_patches") + "/out";
+  const auto r = test::run_sdog("run '" + test::dataset("four_corner_arcs.svg") +
+                                "' --res 21x21 --iters 20 --hold 5 -q --frames-every 0 --mode subsolvers "
+                                "--threads 2 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("patches.csv"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
+  const int patches = j.at("mesh").at("patches").get<int>();
+  ASSERT_GE(patches, 2);
+  const Csv csv = read_csv(dir + "/patches.csv");
+  const std::vector<std::string> columns = {"iteration", "mode", "patch", "thread", "start_ms", "ms", "linear_ms",
+                                            "steps", "factorizations", "objective", "dog_max", "converged"};
+  ASSERT_EQ(csv.header, columns);
+  ASSERT_EQ(csv.rows.size(), static_cast<size_t>(25 * patches));
+  std::set<int> threads;
+  int overlapping = 0;  // iterations in which two patch solves ran at the same time
+  for (int k = 0; k < 25; ++k) {
+    std::vector<std::pair<double, double>> spans;
+    for (int p = 0; p < patches; ++p) {
+      const auto& row = csv.rows[static_cast<size_t>(k * patches + p)];
+      EXPECT_EQ(std::stoi(row[0]), k + 1);
+      EXPECT_EQ(row[1], "subsolvers");
+      EXPECT_EQ(std::stoi(row[2]), p);
+      const int thread = std::stoi(row[3]);
+      EXPECT_GE(thread, 0);
+      EXPECT_LT(thread, 2);
+      threads.insert(thread);
+      const double start = std::stod(row[4]), ms = std::stod(row[5]);
+      EXPECT_GE(start, 0);
+      EXPECT_GT(ms, 0);
+      EXPECT_LE(std::stod(row[6]), ms * 1.001 + 0.01) << "linear solves within the patch's time";
+      EXPECT_GE(std::stoi(row[7]), 0);  // a patch already at rest takes no step
+      EXPECT_LT(std::stod(row[10]), 1e-4) << "iteration " << k + 1 << " patch " << p;
+      EXPECT_EQ(row[11], "1");
+      spans.emplace_back(start, start + ms);
+    }
+    bool overlap = false;
+    for (size_t a = 0; a < spans.size(); ++a)
+      for (size_t b = a + 1; b < spans.size(); ++b)
+        overlap = overlap || (spans[a].first < spans[b].second && spans[b].first < spans[a].second);
+    overlapping += overlap;
+  }
+  EXPECT_EQ(threads.size(), 2u) << "both workers ran patch solves";
+  EXPECT_GT(overlapping, 0) << "patch solves overlapped in time in no iteration";
 }
 
 TEST(RunCommand, SameCsvWhateverTheThreadCount) {
