@@ -36,7 +36,7 @@ struct RunArgs {
   int threads = 0;
   bool keep_failed = false;
   bool quiet = false;
-  double link_weight = 0.1;
+  double link_weight = 0;
   bool no_fine_to_coarse = false;
   CLI::Option *link_weight_opt = nullptr;
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
@@ -258,7 +258,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
       ->capture_default_str();
   a->link_weight_opt = cmd->add_option("--link-weight", a->link_weight,
                                        "coarse, twolevel modes: weight of the link constraints between fine and coarse twins "
-                                       "($.coarse.link_weight, default 0.1; $.twolevel.link_weight, default 0)")
+                                       "($.coarse.link_weight and $.twolevel.link_weight, default 0)")
                            ->check(CLI::Range(0.0, 1e12));
   cmd->add_flag("--no-fine-to-coarse", a->no_fine_to_coarse,
                 "coarse mode: the coarse mesh is not pulled towards the fine one (one-way coupling)");
