@@ -15,15 +15,17 @@ int default_blas_threads() {
 }
 
 bool set_blas_threads(int n) {
-  // Both looked up at run time: CHOLMOD reaches the BLAS through Debian's libblas alternative,
-  // which may or may not be OpenBLAS, and OpenMP comes with CHOLMOD, not with this program.
+  // Both looked up at run time, once: CHOLMOD reaches the BLAS through Debian's libblas
+  // alternative, which may or may not be OpenBLAS, and OpenMP comes with CHOLMOD, not with this
+  // program.
   using SetInt = void (*)(int);
+  static const auto levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+  static const auto threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   // With no active levels allowed every parallel region runs on one thread (also regions with an
   // explicit num_threads clause, which OMP_NUM_THREADS cannot limit).
-  if (auto levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"))) levels(0);
-  auto f = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  if (!f) return false;
-  f(n);
+  if (levels) levels(0);
+  if (!threads) return false;
+  threads(n);
   return true;
 }
 

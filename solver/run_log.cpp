@@ -50,9 +50,4 @@ std::string patches_csv_rows(const IterationReport& r) {
   return rows;
 }
 
-void PatchesCsv::on_iteration(const IterationReport& r, const Dofs&) {
-  text_ += patches_csv_rows(r);
-  rows_ += r.step.patches.size();
-}
-
 }  // namespace sdog

@@ -45,13 +45,12 @@ class RunCsv : public RunObserver {
 class PatchesCsv : public RunObserver {
  public:
   PatchesCsv() : text_(patches_csv_header()) {}
-  void on_iteration(const IterationReport& r, const Dofs&) override;
-  bool empty() const { return rows_ == 0; }
+  void on_iteration(const IterationReport& r, const Dofs&) override { text_ += patches_csv_rows(r); }
+  bool empty() const { return text_.size() == patches_csv_header().size(); }
   const std::string& text() const { return text_; }
 
  private:
   std::string text_;
-  size_t rows_ = 0;
 };
 
 }  // namespace sdog
