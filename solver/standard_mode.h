@@ -2,7 +2,9 @@
 // The standard mode: the global SQP solver (sqp_solver.h) on the whole fine DOG, in folding mode
 // by default: after an iteration that leaves the sheet unfolded (check_folded), x is rolled back,
 // the fold-bias weight multiplied by 10 and the iteration solved again, up to a weight of 1e14;
-// after a folded iteration the weight returns to its base value. Off for scenarios that unfold
+// after a folded iteration the weight returns to its base value. When no weight folds the sheet, the
+// iteration keeps its attempt with the fewest unfolded sites (among those meeting the constraints as
+// well as the first attempt) and the base weight. Off for scenarios that unfold
 // (Scenario::keeps_folds false).
 #include <memory>
 

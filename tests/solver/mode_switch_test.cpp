@@ -77,9 +77,35 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
         << " against " << typical;
 
   // The standard mode's last iteration polishes the constraints as in a run of its own. (It does
-  // not refold creases the patch modes left unfolded: the fold bias has risen to its cap by then.)
+  // not refold creases the patch modes left unfolded: see StandardKeepsTheConstraintsWhenItCannotRefold.)
   EXPECT_LT(s.result.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_TRUE(std::isfinite(s.result.reports.back().diagnostics.terms[kBending]));
+}
+
+// The standard mode taking over a sheet another mode left with creases folded the wrong way: the
+// fold-bias escalation cannot refold it, and the iteration then keeps its least unfolded attempt
+// at the base weight instead of the last one at 1e14 (which broke the DOG constraints and left a
+// weighted objective of 1e14 behind; the reference's behaviour).
+TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
+  RunConfig config = test::short_run(30, 5);
+  config.switches = {{10, "standard"}};
+  const SwitchedRun s = run_with_switches(config, "twolevel");
+  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  const auto& reports = s.result.reports;
+  ASSERT_EQ(reports.size(), 35u);
+  const auto& before = reports[8];  // iteration 9, the two-level mode's last
+  ASSERT_FALSE(before.step.folded) << "the case this test is about: a sheet handed over unfolded";
+  int exhausted = 0;
+  for (size_t k = 9; k < reports.size(); ++k) {
+    const auto& r = reports[k];
+    ASSERT_EQ(r.mode, "standard");
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+    if (r.step.folded || r.step.fold_retries == 0) continue;
+    ++exhausted;
+    // The objective is at the base fold-bias weight again: of the order of the handed-over sheet's.
+    EXPECT_LT(r.diagnostics.objective, 10 * before.diagnostics.objective) << "iteration " << r.iteration;
+  }
+  EXPECT_GT(exhausted, 0) << "no iteration exhausted the escalation: the test no longer covers it";
 }
 
 // The coarse modes derive the coarse mesh from the state they take over: a switch into twolevel at a
