@@ -20,7 +20,7 @@ void CoarseLevel::check_usable(const DogModel& model, const std::string& mode_na
 }
 
 CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-                         const StandardOptions& standard, const std::string& mode_name)
+                         const StandardOptions& standard, const std::string& mode_name, double fold_sharpness)
     : model_(model), link_weight_(link_weight), prolongation_(checked(model, mode_name)) {
   const FineCoarseMap& map = model.map;
   Scenario coarse_scenario = scenario;
@@ -45,7 +45,7 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
   Weights weights = fine.weights;
   weights.link = link_weight;
   weights.edge_points = weights.positions;  // the carried position targets
-  problem_ = std::make_unique<DogProblem>(model.coarse, model.coarse_topology, weights);
+  problem_ = std::make_unique<DogProblem>(model.coarse, model.coarse_topology, weights, fold_sharpness);
   // Blocks before the solver fixes its pattern.
   for (const auto& p : carried_) problem_->edge_points.add(prolongation_.row(p.vertex));
   for (int v = 0; v < model.fine.vertex_count(); ++v)

@@ -27,9 +27,10 @@ namespace sdog {
 class CoarseLevel {
  public:
   /// `link_weight` 0: the coarse mesh is not pulled towards the fine one. `mode_name` names the mode
-  /// in usage errors. The model must outlive the level.
+  /// in usage errors; `fold_sharpness` that of the coarse fold bias (fold_bias.h). The model must
+  /// outlive the level.
   CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-              const StandardOptions& standard, const std::string& mode_name);
+              const StandardOptions& standard, const std::string& mode_name, double fold_sharpness = 1000);
   ~CoarseLevel();
   /// Throws the UsageError the constructor would throw: the model has no coarse mesh.
   static void check_usable(const DogModel& model, const std::string& mode_name);

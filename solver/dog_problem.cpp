@@ -21,11 +21,11 @@ const char* term_name(int index) {
   return names[index];
 }
 
-DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& w)
+DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& w, double fold_sharpness)
     : weights(w),
       isometry(topology, to_dofs(mesh.V)),
       sites(fold_sites(mesh)),
-      fold_bias(mesh, sites),
+      fold_bias(mesh, sites, fold_sharpness),
       dog(topology),
       mesh_(mesh),
       topology_(topology),

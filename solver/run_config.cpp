@@ -88,8 +88,9 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
-  f.expect_object({"link_weight"});
+  f.expect_object({"link_weight", "fold_sharpness"});
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
+  if (f.has("fold_sharpness")) o.fold_sharpness = f["fold_sharpness"].positive();
 }
 
 void apply_admm(const Field& f, AdmmOptions& o) {
@@ -360,7 +361,7 @@ nlohmann::json to_json(const RunConfig& c) {
             {"gamma", c.admm.gamma},
             {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
             {"inner", c.admm.inner}}},
-          {"twolevel", {{"link_weight", c.twolevel.link_weight}}},
+          {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness}}},
           {"switches", switches}};
 }
 

@@ -1,6 +1,7 @@
 #include "solver/subsolvers_mode.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/errors.h"
 #include "solver/crease_geometry.h"
@@ -13,6 +14,7 @@ std::string SubsolverOptions::validate() const {
   if (backend != "sqp" && backend != "ceres") return "backend must be \"sqp\" or \"ceres\", got \"" + backend + "\"";
   if (sweep != "jacobi" && sweep != "colours")
     return "sweep must be \"jacobi\" or \"colours\", got \"" + sweep + "\"";
+  if (!(fold_sharpness >= 0) || !std::isfinite(fold_sharpness)) return "fold_sharpness must be a finite number >= 0";
   return patch.validate();
 }
 
@@ -31,7 +33,13 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   }
   std::vector<WeightedTerm> terms = problem_.objective_terms();
   terms.push_back({&targets_, problem_.weights.stitching, false});
-  const PatchCoupling coupling{&frozen_, problem_.cross_patch_terms()};
+  PatchCoupling coupling{&frozen_, problem_.cross_patch_terms()};
+  if (options_.fold_sharpness > 0) {
+    fold_bias_ = std::make_unique<FoldBiasTerm>(mesh, problem_.sites, options_.fold_sharpness);
+    terms[kFoldBias].term = fold_bias_.get();
+    std::replace(coupling.split.begin(), coupling.split.end(), static_cast<const Term*>(&problem_.fold_bias),
+                 static_cast<const Term*>(fold_bias_.get()));
+  }
   for (int p = 0; p < mesh.patch_count(); ++p) {
     if (options_.backend == "ceres")
       patches_.push_back(std::make_unique<PatchSolver>(mesh, p, terms, problem_.dog, options_.patch, coupling));

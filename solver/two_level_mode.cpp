@@ -1,17 +1,28 @@
 #include "solver/two_level_mode.h"
 
+#include <cmath>
+
 namespace sdog {
+namespace {
+
+SubsolverOptions with_fold_sharpness(SubsolverOptions o, double k) {
+  o.fold_sharpness = k;
+  return o;
+}
+
+}  // namespace
 
 std::string TwoLevelOptions::validate() const {
   if (!(link_weight >= 0)) return "link_weight must be >= 0";
+  if (!(fold_sharpness > 0) || !std::isfinite(fold_sharpness)) return "fold_sharpness must be a finite number > 0";
   return "";
 }
 
 TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                            const TwoLevelOptions& options, const StandardOptions& standard,
                            const SubsolverOptions& subsolvers)
-    : coarse_(fine, model, scenario, options.link_weight, standard, "twolevel"),
-      fine_(fine, scenario, subsolvers, standard.sqp) {}
+    : coarse_(fine, model, scenario, options.link_weight, standard, "twolevel", options.fold_sharpness),
+      fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
 void TwoLevelMode::set_time(double t) {
   coarse_.set_time(t);

@@ -70,6 +70,28 @@ TEST(TwoLevelMode, FlattensAFoldedSheet) {
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-4);
 }
 
+// $.twolevel.fold_sharpness: a softer fold bias in the coarse step and the patches. At the
+// standard's k = 1000 the correction tips fine fold sites across the crease's osculating plane,
+// where the tanh has no slope left and the patch rounds cannot bring them back; at k = 100 they
+// refold. The run's objective still measures the fold bias with k = 1000.
+TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
+  RunConfig config = test::short_run(60, 20);
+  ASSERT_EQ(config.twolevel.fold_sharpness, 1000);
+  const test::RunResult sharp = run("twolevel", config, 2);
+  config.twolevel.fold_sharpness = 100;
+  const test::RunResult soft = run("twolevel", config, 2);
+  ASSERT_FALSE(sharp.summary.failed) << sharp.summary.failure;
+  ASSERT_FALSE(soft.summary.failed) << soft.summary.failure;
+  const Diagnostics& a = soft.reports.back().diagnostics;
+  const Diagnostics& b = sharp.reports.back().diagnostics;
+  EXPECT_LT(a.terms[kFoldBias], 0.5 * b.terms[kFoldBias]);
+  EXPECT_LT(a.objective, 0.5 * b.objective);
+  for (const auto& r : soft.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+  EXPECT_LT(a.dog_max, 1e-6);
+  config.twolevel.fold_sharpness = 0;
+  EXPECT_FALSE(config.twolevel.validate().empty());
+}
+
 TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
   const RunConfig config = test::short_run(6, 0);
   EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
