@@ -30,7 +30,8 @@ class CoarseLevel {
   /// in usage errors; `fold_sharpness` that of the coarse fold bias (fold_bias.h). The model must
   /// outlive the level.
   CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-              const StandardOptions& standard, const std::string& mode_name, double fold_sharpness = 1000);
+              const StandardOptions& standard, const std::string& mode_name,
+              double fold_sharpness = kFoldSharpness);
   ~CoarseLevel();
   /// Throws the UsageError the constructor would throw: the model has no coarse mesh.
   static void check_usable(const DogModel& model, const std::string& mode_name);

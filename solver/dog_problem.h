@@ -46,7 +46,8 @@ const char* term_name(int index);
 
 class DogProblem {
  public:
-  DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& weights = {}, double fold_sharpness = 1000);
+  DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& weights = {},
+             double fold_sharpness = kFoldSharpness);
   DogProblem(const DogProblem&) = delete;
   DogProblem& operator=(const DogProblem&) = delete;
 

@@ -11,9 +11,13 @@
 
 namespace sdog {
 
+/// The sharpness k of the standard solver's fold bias (the reference's).
+constexpr double kFoldSharpness = 1000;
+
 class FoldBiasTerm : public Term {
  public:
-  FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites, double sharpness = 1000);
+  FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites, double sharpness = kFoldSharpness);
+  double sharpness() const { return sharpness_; }
   const char* name() const override { return "fold_bias"; }
 
   template <class T>

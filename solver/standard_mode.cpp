@@ -48,6 +48,10 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
   if (!run()) return report;
   FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
   report.folded = check.folded;
+  if (report.folded) {
+    set_fold_bias(base_fold_bias_);
+    return report;
+  }
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -66,7 +70,7 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
     sqp_->set_multipliers(lambda0);
     set_fold_bias(weight *= 10);
     ++report.fold_retries;
-    if (!run()) {  // a retry the solver cannot take ends the escalation; the first attempt stands
+    if (!run()) {  // a retry the solver cannot take ends the escalation; the best attempt stands
       report.failed = false;
       report.failure.clear();
       break;
@@ -83,7 +87,6 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
     report.step_length = best.step_length;
     set_fold_bias(base_fold_bias_);
   }
-  if (report.folded && report.fold_retries == 0) set_fold_bias(base_fold_bias_);
   return report;
 }
 

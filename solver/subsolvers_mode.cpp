@@ -34,7 +34,7 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   std::vector<WeightedTerm> terms = problem_.objective_terms();
   terms.push_back({&targets_, problem_.weights.stitching, false});
   PatchCoupling coupling{&frozen_, problem_.cross_patch_terms()};
-  if (options_.fold_sharpness > 0) {
+  if (options_.fold_sharpness > 0 && options_.fold_sharpness != problem_.fold_bias.sharpness()) {
     fold_bias_ = std::make_unique<FoldBiasTerm>(mesh, problem_.sites, options_.fold_sharpness);
     terms[kFoldBias].term = fold_bias_.get();
     std::replace(coupling.split.begin(), coupling.split.end(), static_cast<const Term*>(&problem_.fold_bias),

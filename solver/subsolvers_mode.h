@@ -23,8 +23,8 @@ struct SubsolverOptions {
   /// (patch_colouring.h) step one after another, each from the state the previous left.
   std::string sweep = "jacobi";
   PatchOptions patch;           ///< of the Ceres backend (the SQP backend uses the standard options)
-  /// Sharpness k of the patches' own fold-bias term (fold_bias.h); 0: the problem's (k = 1000).
-  /// The run's objective and fold test stay those of the problem.
+  /// Sharpness k of the patches' fold-bias term (fold_bias.h); 0: the problem's. The run's
+  /// objective and fold test stay those of the problem.
   double fold_sharpness = 0;
   std::string validate() const;
 };
@@ -43,7 +43,7 @@ class SubsolversMode : public Mode {
   DogProblem& problem_;
   Scenario scenario_;
   SubsolverOptions options_;
-  std::unique_ptr<FoldBiasTerm> fold_bias_;  // with options_.fold_sharpness, when set
+  std::unique_ptr<FoldBiasTerm> fold_bias_;  // when options_.fold_sharpness differs from the problem's
   LinearPointTerm targets_{"stitch_targets"};  // one block per copy and stitching pair
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
   Dofs frozen_;                                // the state the round started from

@@ -34,7 +34,7 @@ struct TwoLevelOptions {
   /// cannot bring them back (4_corners 41x41: 11 of 120 sites stay unfolded, fold bias 44 of an
   /// objective of 47); at 100 they keep a slope and refold there, but the thesis grid is mixed
   /// (README, "The two-level mode"), so the default stays the standard's.
-  double fold_sharpness = 1000;
+  double fold_sharpness = kFoldSharpness;
   std::string validate() const;
 };
 
