@@ -33,6 +33,8 @@ struct CompareArgs {
   int iterations = 250;
   int hold = 50;
   std::string scenario = "corners";
+  std::string config;
+  CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr;
   int threads = 0;
   int repeat = 1;
   std::string out;
@@ -198,10 +200,13 @@ void compare(const CompareArgs& a) {
   check_scenario_name(a.scenario, "--scenario: ");
   const vis::ImageSize plot_size = vis::parse_image_size(a.plot_size);
   RunConfig config;
-  config.scenario = a.scenario;
-  config.iterations = a.iterations;
-  config.hold = a.hold;
-  validate_run_config(config, "command line");
+  if (!a.config.empty()) read_run_config(a.config, config);
+  if (a.scenario_opt->count() || a.config.empty()) config.scenario = a.scenario;
+  if (a.iterations_opt->count() || a.config.empty()) config.iterations = a.iterations;
+  if (a.hold_opt->count() || a.config.empty()) config.hold = a.hold;
+  if (!config.switches.empty())
+    throw UsageError(a.config + ": $.switches: sdog compare runs every mode on its own (use sdog run --switch)");
+  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
   const std::vector<BenchCase> cases = make_cases(a, modes);
   OutputSet out(a.out);
   vis::require_display();
@@ -281,14 +286,18 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
   cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
   cmd->add_option("--patterns-dir", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
-  cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
-      ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
-  cmd->add_option("--hold", a->hold, "iterations with the final targets")
-      ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
-  cmd->add_option("--scenario", a->scenario, "scenario of every run (" + join(scenario_names(), ", ") + ")")
-      ->capture_default_str();
+  a->iterations_opt = cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
+                          ->check(CLI::Range(0, 1000000))
+                          ->capture_default_str();
+  a->hold_opt = cmd->add_option("--hold", a->hold, "iterations with the final targets")
+                    ->check(CLI::Range(0, 1000000))
+                    ->capture_default_str();
+  a->scenario_opt =
+      cmd->add_option("--scenario", a->scenario, "scenario of every run (" + join(scenario_names(), ", ") + ")")
+          ->capture_default_str();
+  cmd->add_option("--config", a->config,
+                  "JSON file of weights, solver and mode options (as for sdog run; no switches) for every run; "
+                  "--iters, --hold and --scenario win");
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

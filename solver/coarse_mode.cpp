@@ -17,6 +17,7 @@ CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& 
     : fine_(fine), model_(model), scenario_(scenario), options_(options) {
   coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario, options.fine_to_coarse ? options.link_weight : 0.0,
                                           standard, "coarse");
+  projection_ = std::make_unique<FinalProjection>(fine, standard.sqp);
   // Fine link blocks (before the solvers fix their patterns): every coarse twin pair.
   fine.link.clear();  // a mode that ran on this problem before may have made them
   for (const auto& [v, c] : coarse_->links()) fine.link.add({{v, 1.0}});
@@ -62,7 +63,7 @@ void CoarseMode::set_crease_targets() {
 
 StepReport CoarseMode::iterate(Dofs& x, bool last) {
   const Dofs x0 = x, coarse0 = coarse_->state();
-  StepReport report = coarse_->step(x, last);
+  StepReport report = coarse_->step(x, false);  // not polished: it only drives the fine mesh
   if (report.failed) {
     report.failure = "coarse step: " + report.failure;
     return report;
@@ -71,7 +72,7 @@ StepReport CoarseMode::iterate(Dofs& x, bool last) {
   set_fine_link_targets();
   if (options_.prolongate) x = coarse_->prolongation().apply(coarse_->state());
   frozen_ = x;
-  if (!step_patch_round(patches_, x, last, report)) {
+  if (!step_patch_round(patches_, x, false, report) || (last && !projection_->project(x, report))) {
     x = x0;
     coarse_->set_state(coarse0);
     report.failure = "fine step: " + report.failure;

@@ -19,6 +19,7 @@
 #include "solver/coarse_level.h"
 #include "solver/curve_interpolation.h"
 #include "solver/dog_problem.h"
+#include "solver/final_projection.h"
 #include "solver/mode.h"
 #include "solver/patch_stepper.h"
 #include "solver/standard_mode.h"
@@ -64,6 +65,7 @@ class CoarseMode : public Mode {
   std::vector<CurveStencil> crease_stencils_;         // per block of crease_targets_
   Dofs frozen_;  // the fine state before the patch step: the other side of cross-patch blocks
   std::vector<std::unique_ptr<PatchStepper>> patches_;
+  std::unique_ptr<FinalProjection> projection_;  // the last iteration's (final_projection.h)
 };
 
 }  // namespace sdog

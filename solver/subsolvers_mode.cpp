@@ -20,7 +20,7 @@ std::string SubsolverOptions::validate() const {
 
 SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
                                const SqpOptions& sqp)
-    : problem_(problem), scenario_(scenario), options_(options) {
+    : problem_(problem), scenario_(scenario), options_(options), projection_(problem, sqp) {
   scenario_.install(problem_);
   const DogMesh& mesh = problem_.mesh();
   for (const auto& pair : mesh.stitching.pairs) {
@@ -66,10 +66,14 @@ StepReport SubsolversMode::iterate(Dofs& x, bool last) {
   for (const std::vector<char>& active : sweeps_) {
     refresh_targets(x);
     frozen_ = x;
-    if (!step_patch_round(patches_, x, last, report, &active)) {
+    if (!step_patch_round(patches_, x, false, report, &active)) {
       x = x0;
       return report;
     }
+  }
+  if (last && !projection_.project(x, report)) {
+    x = x0;
+    return report;
   }
   report.step_length = 1;
   report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;

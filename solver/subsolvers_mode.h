@@ -8,9 +8,13 @@
 // The fold bias and dihedral angle constraints couple two patches: each patch keeps their blocks
 // with the other patch's vertices frozen at the state the round started from (patch_term.h), so a
 // fixed point of the iteration is a stationary point of the whole objective's fold and angle parts.
+//
+// The run's last iteration is an ordinary round followed by a projection of the whole sheet onto
+// the DOG constraints to the final tolerance (final_projection.h), not a polishing patch round.
 #include <memory>
 
 #include "solver/dog_problem.h"
+#include "solver/final_projection.h"
 #include "solver/mode.h"
 #include "solver/patch_solver.h"
 #include "solver/patch_sqp.h"
@@ -49,6 +53,7 @@ class SubsolversMode : public Mode {
   Dofs frozen_;                                // the state the round started from
   std::vector<std::unique_ptr<PatchStepper>> patches_;
   std::vector<std::vector<char>> sweeps_;  // the patches stepping in each round of an iteration
+  FinalProjection projection_;             // the last iteration's (final_projection.h)
 };
 
 }  // namespace sdog

@@ -33,7 +33,10 @@ void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
 
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
-  StepReport coarse = coarse_.step(x, last);
+  // The coarse mesh only drives the fine one: it is not polished in the last iteration (its
+  // polish would move the fine state through the correction); the fine round ends with the
+  // final projection (final_projection.h).
+  StepReport coarse = coarse_.step(x, false);
   if (coarse.failed) {
     coarse.failure = "coarse step: " + coarse.failure;
     return coarse;

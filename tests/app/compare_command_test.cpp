@@ -106,6 +106,37 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   EXPECT_NE(r.err.find("case 2/2"), std::string::npos) << r.err;
 }
 
+// --config: the same JSON as sdog run's for every run (iteration counts, weights, mode options);
+// the command line's --iters wins, and switches are refused (every mode runs on its own).
+TEST(CompareCommand, ConfigFileSetsEveryRunAndTheCommandLineWins) {
+  SDOG_REQUIRE_DISPLAY();
+  const std::string dir = test::temp_dir("compare_config");
+  const std::string config =
+      test::write_file(dir, "c.json", R"({"iterations": 3, "hold": 1, "twolevel": {"fold_sharpness": 100}})");
+  const std::string base = "compare --pattern '" + kPattern + "' --res 15x11 --modes standard --plot-size 640x400 --config " + config;
+  const auto r = test::run_sdog(base + " --out " + dir + "/a");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Csv a = read_csv(dir + "/a/compare.csv");
+  ASSERT_EQ(a.rows.size(), 1u);
+  EXPECT_EQ(std::stoi(a.rows[0].at(a.column("iterations"))), 4);
+  const nlohmann::json json = nlohmann::json::parse(test::slurp(dir + "/a/compare.json"));
+  EXPECT_EQ(json.at("config").at("twolevel").at("fold_sharpness").get<double>(), 100);
+
+  const auto b = test::run_sdog(base + " --iters 5 --out " + dir + "/b");
+  ASSERT_EQ(b.code, 0) << b.err;
+  const Csv bc = read_csv(dir + "/b/compare.csv");
+  EXPECT_EQ(std::stoi(bc.rows.at(0).at(bc.column("iterations"))), 6);
+
+  const std::string switches =
+      test::write_file(dir, "s.json", R"({"switches": [{"iteration": 2, "mode": "subsolvers"}]})");
+  const auto c = test::run_sdog("compare --pattern '" + kPattern + "' --res 15x11 --modes standard --config " +
+                                switches + " --out " + dir + "/c");
+  EXPECT_EQ(c.code, 2) << c.err;
+  EXPECT_EQ(test::count_lines(c.err), 1) << c.err;
+  EXPECT_NE(c.err.find("$.switches"), std::string::npos) << c.err;
+  EXPECT_FALSE(fs::exists(dir + "/c"));
+}
+
 TEST(CompareCommand, UnknownModeIsAUsageErrorNamingIt) {
   const std::string dir = test::temp_dir("compare_mode");
   const auto r = test::run_sdog("compare --pattern '" + kPattern + "' --res 15x11 --modes standard,warp --out " + dir +

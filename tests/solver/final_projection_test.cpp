@@ -1,0 +1,97 @@
+// The last iteration of the patch modes (final_projection.h): an ordinary patch round, then the
+// whole sheet projected onto the DOG constraints to the final tolerance. The polishing patch
+// round it replaces moved the sheet far (twolevel, 4_corners 81x81: objective 3.65 to 19.7).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/dog_model.h"
+#include "solver/crease_geometry.h"
+#include "solver/diagnostics.h"
+#include "solver/final_projection.h"
+#include "tests/solver/run_recorder.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+const DogModel& model() {
+  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  return m;
+}
+
+// A state off the DOG constraints by about 1e-4 (a standard run's state, nudged), projected: on
+// the constraints to the final tolerance, moved by little more than it was nudged.
+TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
+  const test::RunResult r = test::run_mode("standard", model(), test::short_run(30, 0));
+  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
+  Dofs x = r.x;
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += 3e-5 * std::sin(1.7 * i);
+  const double before = diagnose(problem, x).dog_max;
+  ASSERT_GT(before, 1e-5);
+  const Dofs nudged = x;
+  const SqpOptions sqp;
+  FinalProjection projection(problem, sqp);
+  StepReport report;
+  ASSERT_TRUE(projection.project(x, report)) << report.failure;
+  EXPECT_LT(diagnose(problem, x).dog_max, sqp.final_constraint_tolerance);
+  EXPECT_GT(report.restoration_steps, 0);
+  // Near flat regions the constraints are nearly quadratic in the normal motion, so removing a
+  // residual r takes a move of about sqrt(r); the objective barely changes.
+  EXPECT_LT((x - nudged).lpNorm<Eigen::Infinity>(), std::sqrt(before));
+  EXPECT_NEAR(diagnose(problem, x).objective, diagnose(problem, nudged).objective,
+              1e-3 * diagnose(problem, nudged).objective);
+  // A state already on the constraints is left alone.
+  const Dofs projected = x;
+  StepReport again;
+  ASSERT_TRUE(projection.project(x, again));
+  EXPECT_EQ(again.restoration_steps, 0);
+  EXPECT_TRUE(x == projected);
+}
+
+struct Finish {
+  Diagnostics diagnostics;
+  int unfolded = 0;
+};
+
+// The state after iteration `k` of a run of `iterations` + `hold` iterations.
+Finish after(const char* name, RunConfig config, int k) {
+  DogProblem problem(model().fine, model().fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model().fine);
+  auto mode = make_mode(name, problem, scenario, config, &model());
+  Dofs x = scenario.start(model().fine);
+  struct Keep : RunObserver {
+    int k;
+    Dofs x;
+    Diagnostics d;
+    void on_iteration(const IterationReport& r, const Dofs& state) override {
+      if (r.iteration == k) x = state, d = r.diagnostics;
+    }
+  } keep;
+  keep.k = k;
+  const RunSummary summary = run_scenario(*mode, problem, scenario, x, {&keep});
+  EXPECT_FALSE(summary.failed) << name << ": " << summary.failure;
+  return {keep.d, check_folded(model().fine, problem.sites, keep.x).violations};
+}
+
+// The last iteration of a run in the patch modes is an ordinary iteration and the projection: the
+// same objective and folds as the same iteration in a longer run, and DOG below the final tolerance.
+TEST(FinalProjection, TheLastIterationOfThePatchModesKeepsTheResult) {
+  RunConfig config = test::short_run(60, 20);
+  config.twolevel.fold_sharpness = 100;
+  RunConfig longer = config;
+  longer.hold += 1;
+  for (const char* name : {"subsolvers", "twolevel", "coarse"}) {
+    const Finish last = after(name, config, 80);
+    const Finish ordinary = after(name, longer, 80);
+    EXPECT_LT(last.diagnostics.dog_max, config.standard.sqp.final_constraint_tolerance) << name;
+    EXPECT_GT(ordinary.diagnostics.dog_max, config.standard.sqp.final_constraint_tolerance) << name;
+    EXPECT_NEAR(last.diagnostics.objective, ordinary.diagnostics.objective, 1e-2 * ordinary.diagnostics.objective)
+        << name;
+    EXPECT_EQ(last.unfolded, ordinary.unfolded) << name;
+  }
+}
+
+}  // namespace
+}  // namespace sdog
