@@ -78,8 +78,7 @@ Finish after(const char* name, RunConfig config, int k) {
 // The last iteration of a run in the patch modes is an ordinary iteration and the projection: the
 // same objective and folds as the same iteration in a longer run, and DOG below the final tolerance.
 TEST(FinalProjection, TheLastIterationOfThePatchModesKeepsTheResult) {
-  RunConfig config = test::short_run(60, 20);
-  config.twolevel.fold_sharpness = 100;
+  const RunConfig config = test::short_run(60, 20);
   RunConfig longer = config;
   longer.hold += 1;
   for (const char* name : {"subsolvers", "twolevel", "coarse"}) {

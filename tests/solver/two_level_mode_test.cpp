@@ -70,16 +70,16 @@ TEST(TwoLevelMode, FlattensAFoldedSheet) {
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-4);
 }
 
-// $.twolevel.fold_sharpness: a softer fold bias in the coarse step and the patches. At the
+// $.twolevel.fold_sharpness (default 100): a softer fold bias in the coarse step and the patches. At the
 // standard's k = 1000 the correction tips fine fold sites across the crease's osculating plane,
 // where the tanh has no slope left and the patch rounds cannot bring them back; at k = 100 they
 // refold. The run's objective still measures the fold bias with k = 1000.
 TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
   RunConfig config = test::short_run(60, 20);
-  ASSERT_EQ(config.twolevel.fold_sharpness, 1000);
-  const test::RunResult sharp = run("twolevel", config, 2);
-  config.twolevel.fold_sharpness = 100;
+  ASSERT_EQ(config.twolevel.fold_sharpness, 100);  // the default
   const test::RunResult soft = run("twolevel", config, 2);
+  config.twolevel.fold_sharpness = kFoldSharpness;
+  const test::RunResult sharp = run("twolevel", config, 2);
   ASSERT_FALSE(sharp.summary.failed) << sharp.summary.failure;
   ASSERT_FALSE(soft.summary.failed) << soft.summary.failure;
   const Diagnostics& a = soft.reports.back().diagnostics;
