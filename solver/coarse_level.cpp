@@ -80,11 +80,11 @@ void CoarseLevel::set_time(double t) {
     problem_->edge_points.set_target(static_cast<int>(k), carried_[k].start + t * (carried_[k].end - carried_[k].start));
 }
 
-StepReport CoarseLevel::step(const Dofs& fine_x, bool last) {
+StepReport CoarseLevel::step(const Dofs& fine_x) {
   if (link_weight_ > 0)
     for (size_t i = 0; i < links_.size(); ++i)
       problem_->link.set_target(static_cast<int>(i), Eigen::Vector3d(vertex_of(fine_x, links_[i].first)));
-  return mode_->iterate(x_, last);
+  return mode_->iterate(x_, false);
 }
 
 }  // namespace sdog

@@ -38,8 +38,9 @@ class CoarseLevel {
 
   void set_time(double t);
   /// One standard iteration on the coarse mesh, with the link targets at the fine twins in `fine_x`
-  /// first (when the link weight is positive).
-  StepReport step(const Dofs& fine_x, bool last);
+  /// first (when the link weight is positive). Never a polishing iteration: the coarse mesh only
+  /// drives the fine one, whose last iteration ends with the final projection (final_projection.h).
+  StepReport step(const Dofs& fine_x);
 
   /// The coarse state for a fine state that did not come from this level (restriction.h), and a
   /// fresh start of the coarse solver.

@@ -63,7 +63,7 @@ void CoarseMode::set_crease_targets() {
 
 StepReport CoarseMode::iterate(Dofs& x, bool last) {
   const Dofs x0 = x, coarse0 = coarse_->state();
-  StepReport report = coarse_->step(x, false);  // not polished: it only drives the fine mesh
+  StepReport report = coarse_->step(x);
   if (report.failed) {
     report.failure = "coarse step: " + report.failure;
     return report;

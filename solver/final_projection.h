@@ -7,8 +7,9 @@
 // Why not a polishing patch round: the patches polish with their neighbours frozen and reach the
 // final tolerance only through large exact-Hessian steps, which tipped fine fold sites across
 // their crease and undid the run's result (twolevel, k = 100: 4_corners 81x81 objective 3.65 at
-// iteration 299 and 19.7 after the polish, 5.6 s; README, "The two-level mode"). The projection
-// moves the sheet by about the residual it removes (5e-5 to 5e-7).
+// iteration 299 and 19.7 after the polish, 5.6 s; README, "The last iteration of the patch modes").
+// The projection is the smallest move onto the constraints: about sqrt of the residual it removes
+// near flat regions, where the constraints are nearly quadratic in the normal motion.
 #include <memory>
 
 #include "solver/dog_problem.h"

@@ -33,10 +33,7 @@ void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
 
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
-  // The coarse mesh only drives the fine one: it is not polished in the last iteration (its
-  // polish would move the fine state through the correction); the fine round ends with the
-  // final projection (final_projection.h).
-  StepReport coarse = coarse_.step(x, false);
+  StepReport coarse = coarse_.step(x);
   if (coarse.failed) {
     coarse.failure = "coarse step: " + coarse.failure;
     return coarse;
