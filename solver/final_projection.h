@@ -1,8 +1,9 @@
 #pragma once
 // The last iteration of the patch modes (subsolvers, twolevel, coarse): after an ordinary patch
 // round (constraints to the per-iteration tolerance), the whole fine state is moved onto the DOG
-// constraints to the final tolerance by the standard solver's restoration steps (Gauss-Newton on
-// |c|^2 in the metric of the objective's Hessian: the smallest correction in that metric).
+// constraints to the final tolerance by SqpSolver::project (the standard solver's restoration
+// steps, Gauss-Newton on |c|^2 in the metric of the objective's Hessian: the smallest correction
+// in that metric; the standard mode finishes a polish that stops short with the same projection).
 //
 // Why not a polishing patch round: the patches polish with their neighbours frozen and reach the
 // final tolerance only through large exact-Hessian steps, which tipped fine fold sites across

@@ -31,7 +31,7 @@
 // 3. In the last iteration of a run only: a polishing iteration (up to polish_steps steps with the
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
-//    at rho_max.
+//    at rho_max. If the state is still above final_constraint_tolerance, project() finishes it.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
@@ -114,6 +114,18 @@ class SqpSolver {
   /// compute (a mode switch), whose constraint residual may be far above the tolerance.
   SqpReport restore_constraints(Dofs& x);
 
+  /// The projection onto the constraints that ends a run: chord and global restoration steps in
+  /// the polishing metric (polish_epsilon) until |c|_inf <= final_constraint_tolerance, at most
+  /// kProjectionSteps. Used by the patch modes' last iteration (final_projection.h) and by
+  /// iterate() when its polish stops short of the final tolerance. Near flat regions the DOG
+  /// constraints are degenerate (nearly quadratic in the normal motion) and these steps converge
+  /// only linearly, hence the many steps (twolevel on 4_corners 81x81 needed 66, from 4.8e-5 to
+  /// 4.2e-7, about 4 s once; with the restoration metric, restoration_epsilon 1e-6, it stalled at
+  /// 1.7e-6, and 1e-7 gave 8.4e-7 after 200 steps). A projection that cannot reach the tolerance keeps its
+  /// best state (reported in constraint_max); failed only for non-finite constraints.
+  SqpReport project(Dofs& x);
+  static constexpr int kProjectionSteps = 100;
+
   void set_weight(size_t term, double weight);
   double weight(size_t term) const { return objective_[term].weight; }
   const Eigen::VectorXd& multipliers() const { return lambda_; }
@@ -147,8 +159,8 @@ class SqpSolver {
   double augmented_lagrangian(const Dofs& x, double mu) const;
   double kkt_error(const Linearization& lin) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs, SqpReport& report) const;
-  /// Restoration phase; false (with report.failure set) on NaN.
-  bool restore(Dofs& x, Eigen::VectorXd& c, double tolerance, int max_steps, SqpReport& report);
+  /// Restoration phase; false (with report.failure set) on NaN. `local_steps`: local steps allowed.
+  bool restore(Dofs& x, Eigen::VectorXd& c, double tolerance, int max_steps, bool local_steps, SqpReport& report);
 
   int n_;
   std::vector<WeightedTerm> objective_;

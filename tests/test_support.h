@@ -4,6 +4,8 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -46,12 +48,36 @@ inline std::vector<std::string> all_reference_patterns() {
       GTEST_SKIP() << "../shared/reference/patterns is absent: reference checks skipped"; \
   } while (0)
 
-/// A fresh empty temporary directory for one test.
+/// The temporary directories this test process made: removed when it exits, unless a test
+/// failed (then they stay for inspection, named in the log) or SDOG_KEEP_TEST_FILES is set.
+class TempDirs {
+ public:
+  static TempDirs& instance() {
+    static TempDirs dirs;
+    return dirs;
+  }
+  void add(const std::filesystem::path& dir) { dirs_.push_back(dir); }
+  ~TempDirs() {
+    const bool failed = ::testing::UnitTest::GetInstance()->failed_test_count() > 0;
+    if (failed || std::getenv("SDOG_KEEP_TEST_FILES")) {
+      for (const auto& d : dirs_) std::fprintf(stderr, "kept test files: %s\n", d.c_str());
+      return;
+    }
+    std::error_code ignored;
+    for (const auto& d : dirs_) std::filesystem::remove_all(d, ignored);
+  }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+
+/// A fresh empty temporary directory for one test (see TempDirs for when it is removed).
 inline std::string temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("sdog_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  TempDirs::instance().add(dir);
   return dir.string();
 }
 

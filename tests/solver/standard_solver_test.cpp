@@ -59,6 +59,26 @@ TEST(StandardSolver, CornersProtocolOnAProjectPattern) {
   EXPECT_DOUBLE_EQ(last.objective_final_targets, last.diagnostics.objective);
 }
 
+// When the polish of the last iteration stops short of the final tolerance (4_corners 81x81 ended
+// at 4.6e-6 before), SqpSolver::project finishes it. Here the polish is starved (no exact-Hessian
+// steps, two restoration steps) so that it must stop short on a small case.
+TEST(StandardSolver, AShortPolishIsFinishedByTheProjection) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  RunConfig config = test::short_run(25, 5);  // the last iterations are held: comparable objectives
+  config.standard.sqp.polish_steps = 0;
+  config.standard.sqp.max_restoration_steps = 1;
+  const RunResult r = run(model, config);
+  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  const double final_tolerance = config.standard.sqp.final_constraint_tolerance;
+  // The iteration before the last one is far from the final tolerance (one restoration step).
+  ASSERT_GT(r.reports[28].diagnostics.dog_max, 10 * final_tolerance);
+  const auto& last = r.reports.back();
+  EXPECT_LT(last.diagnostics.dog_max, final_tolerance);
+  EXPECT_GT(last.step.restoration_steps, 2);  // more than the polish's own two
+  EXPECT_TRUE(last.step.folded);
+  EXPECT_NEAR(last.diagnostics.objective, r.reports[28].diagnostics.objective, 0.02 * r.reports[28].diagnostics.objective);
+}
+
 TEST(StandardSolver, FoldScenarioReachesTheDihedralAngle) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
