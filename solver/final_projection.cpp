@@ -10,16 +10,17 @@ bool FinalProjection::project(Dofs& x, StepReport& report) {
   if (!solver_)
     solver_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(), problem_.dog,
                                           options_);
-  const SqpReport r = solver_->project(x);
-  report.restoration_steps += r.restoration_steps;
-  report.factorizations += r.factorizations;
-  report.factor_ms += r.factor_ms;
-  if (r.failed) {
-    report.failed = true;
-    report.failure = "final projection onto the DOG constraints: " + r.failure;
-    return false;
-  }
-  return true;
+  return add_projection(solver_->project(x), report);
+}
+
+bool add_projection(const SqpReport& projection, StepReport& report) {
+  report.restoration_steps += projection.restoration_steps;
+  report.factorizations += projection.factorizations;
+  report.factor_ms += projection.factor_ms;
+  if (!projection.failed) return true;
+  report.failed = true;
+  report.failure = "final projection onto the DOG constraints: " + projection.failure;
+  return false;
 }
 
 }  // namespace sdog

@@ -36,4 +36,7 @@ class FinalProjection {
   std::unique_ptr<SqpSolver> solver_;  // built at the first projection (symbolic analysis)
 };
 
+/// Adds a projection's work (SqpSolver::project) to `report`; a failed projection fails the report.
+bool add_projection(const SqpReport& projection, StepReport& report);
+
 }  // namespace sdog

@@ -33,6 +33,11 @@ class Mode {
   /// One iteration on the fine positions x (rolled back on failure). `last`: the run's last
   /// iteration, which ends with the constraints restored to the final tolerance.
   virtual StepReport iterate(Dofs& x, bool last) = 0;
+  /// Called before every iteration (before set_time): how many iterations the run has after it (0
+  /// in its last one), or kOpenEnded when the run has no set end (the studio). Only twolevel uses
+  /// it, for its standard finish (two_level_mode.h).
+  virtual void set_iterations_left(int /*left*/) {}
+  static constexpr int kOpenEnded = -1;
   /// Takes x as the state the next iteration starts from although the mode did not compute it
   /// (another mode ran before it): a mode with state of its own besides x (the coarse positions of
   /// the two-resolution modes) derives that state from x. Fresh modes of the other kinds need

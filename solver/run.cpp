@@ -5,14 +5,15 @@
 namespace sdog {
 
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
-                              bool last) {
+                              int iterations_left) {
   IterationReport report;
   report.iteration = iteration;
   report.mode = mode.name();
   report.t = scenario.time_of(iteration);
+  mode.set_iterations_left(iterations_left);
   mode.set_time(report.t);
   const auto t0 = Clock::now();
-  report.step = mode.iterate(x, last);
+  report.step = mode.iterate(x, iterations_left == 0);
   report.iteration_ms = ms_since(t0);
   report.diagnostics = diagnose(problem, x);
   if (report.t < 1) {
@@ -36,7 +37,7 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     if (cancel && cancel->load()) break;
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
-    const IterationReport report = run_iteration(*current, problem, scenario, x, k, k == total);
+    const IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {

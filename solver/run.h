@@ -36,9 +36,10 @@ struct RunSummary {
 };
 
 /// Iteration `iteration` (1-based) of a run: the targets of its scenario time, one iteration of
-/// the mode on x, the diagnostics on `problem`.
+/// the mode on x, the diagnostics on `problem`. `iterations_left`: iterations of the run after this
+/// one (0: the last, which ends on the final constraint tolerance), or Mode::kOpenEnded.
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
-                              bool last);
+                              int iterations_left);
 
 /// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
 /// switch, see switch_mode in mode_factory.h), or nullptr to keep the current one. The returned

@@ -88,9 +88,10 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
-  f.expect_object({"link_weight", "fold_sharpness"});
+  f.expect_object({"link_weight", "fold_sharpness", "standard_finish"});
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
   if (f.has("fold_sharpness")) o.fold_sharpness = f["fold_sharpness"].positive();
+  if (f.has("standard_finish")) o.standard_finish = f["standard_finish"].integer(0);
 }
 
 void apply_admm(const Field& f, AdmmOptions& o) {
@@ -361,7 +362,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"gamma", c.admm.gamma},
             {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
             {"inner", c.admm.inner}}},
-          {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness}}},
+          {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness},
+                        {"standard_finish", c.twolevel.standard_finish}}},
           {"switches", switches}};
 }
 

@@ -26,7 +26,7 @@ void Session::rebuild() {
 }
 
 IterationReport Session::step() {
-  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, false);
+  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, Mode::kOpenEnded);
   if (!report.step.failed) ++iteration_;
   return report;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "solver/final_projection.h"
+
 namespace sdog {
 namespace {
 
@@ -15,23 +17,53 @@ SubsolverOptions with_fold_sharpness(SubsolverOptions o, double k) {
 std::string TwoLevelOptions::validate() const {
   if (!(link_weight >= 0)) return "link_weight must be >= 0";
   if (!(fold_sharpness > 0) || !std::isfinite(fold_sharpness)) return "fold_sharpness must be a finite number > 0";
+  if (standard_finish < 0) return "standard_finish must be >= 0";
   return "";
 }
 
 TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                            const TwoLevelOptions& options, const StandardOptions& standard,
                            const SubsolverOptions& subsolvers)
-    : coarse_(fine, model, scenario, options.link_weight, standard, "twolevel", options.fold_sharpness),
+    : problem_(fine),
+      scenario_(scenario),
+      standard_(standard),
+      standard_finish_(options.standard_finish),
+      coarse_(fine, model, scenario, options.link_weight, standard, "twolevel", options.fold_sharpness),
       fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
 void TwoLevelMode::set_time(double t) {
+  if (finish_) return finish_->set_time(t);
   coarse_.set_time(t);
   fine_.set_time(t);
 }
 
 void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
 
+void TwoLevelMode::set_iterations_left(int left) {
+  if (finish_ || left == kOpenEnded || left >= standard_finish_) return;
+  // As a switch to the standard mode (mode_factory.h): it installs the scenario's blocks in the
+  // fine problem, whose weights the two-level mode left as configured. Without fold retries (the
+  // escalation is capped at the base weight): from the sites the two-level iterations left across
+  // their crease the escalation to 1e14 wrecked the sheet (valley 61x61: objective 6.4e9 in the
+  // first finishing iteration, 30.6 at the end, against 1.59 without retries; README).
+  StandardOptions options = standard_;
+  options.max_fold_bias = problem_.weights.fold_bias;
+  finish_ = std::make_unique<StandardMode>(problem_, scenario_, options);
+}
+
+StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
+  // The last one is an ordinary standard iteration and the projection onto the constraints, not
+  // the standard's polish: its exact-Hessian steps rely on multipliers settled over a whole run,
+  // and after a few standard iterations they moved the sheet far (4_corners 81x81, 10 finishing
+  // iterations: objective 2.33 at iteration 299, 6.67 after the polish).
+  StepReport report = finish_->iterate(x, false);
+  if (!last || report.failed) return report;
+  add_projection(finish_->sqp().project(x), report);
+  return report;
+}
+
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
+  if (finish_) return finish_iteration(x, last);
   const Dofs x0 = x, c0 = coarse_.state();
   StepReport coarse = coarse_.step(x);
   if (coarse.failed) {

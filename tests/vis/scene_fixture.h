@@ -46,6 +46,7 @@ inline const vis::SceneState& arcs_twolevel_state() {
   static const vis::SceneState state = [] {
     RunConfig config = arcs_run_config();
     config.angles.clear();  // the coarse level does not carry angle constraints
+    config.twolevel.standard_finish = 0;  // the coarse mesh moves to the end (the links picture)
     return vis::run_scene_state(arcs_model(), "twolevel", config);
   }();
   return state;
