@@ -211,7 +211,13 @@ INSTANTIATE_TEST_SUITE_P(
                                  {"$.switches[0]", "iteration 26"}},
                       ConfigCase{"switches_unordered",
                                  R"({"switches": [{"iteration": 9, "mode": "subsolvers"}, {"iteration": 4, "mode": "standard"}]})",
-                                 {"$.switches[1]", "ascending"}}));
+                                 {"$.switches[1]", "ascending"}},
+                      ConfigCase{"negative_standard_finish", R"({"twolevel": {"standard_finish": -1}})",
+                                 {"$.twolevel.standard_finish"}},
+                      ConfigCase{"fractional_standard_finish", R"({"twolevel": {"standard_finish": 2.5}})",
+                                 {"$.twolevel.standard_finish"}},
+                      ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
+                                 {"$.twolevel.fold_sharpness"}}));
 
 TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   const std::string dir = test::temp_dir("config_good");
