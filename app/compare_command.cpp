@@ -99,7 +99,8 @@ nlohmann::json row_json(const CompareRow& r) {
   if (r.status == CompareStatus::Skipped) return j;
   j.update({{"vertices", r.vertices}, {"dof", r.dof}, {"iterations", r.iterations},
             {"final_objective", r.final_objective}, {"objective_ratio", optional(r.objective_ratio)},
-            {"median_ms", r.median_ms}, {"speedup", optional(r.speedup)}, {"dog_max", r.dog_max},
+            {"median_ms", r.median_ms}, {"speedup", optional(r.speedup)}, {"total_s", r.total_s},
+            {"total_speedup", optional(r.total_speedup)}, {"dog_max", r.dog_max},
             {"dog_max_run", r.dog_max_run}, {"stitch_gap_max", r.stitch_gap_max}, {"folded", r.folded}});
   return j;
 }
@@ -276,7 +277,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
   CLI::App* cmd = app.add_subcommand(
       "compare",
       "Run the thesis protocol with several solver modes and compare them: compare.csv (final objective and "
-      "its ratio to standard, median ms per iteration and the speedup, DOG residuals, stitching gap), "
+      "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its speedup, DOG residuals, stitching gap), "
       "series.csv, compare.json and PNG plots (needs an X display: use xvfb-run on a headless machine)");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");

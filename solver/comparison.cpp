@@ -68,7 +68,7 @@ CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int rep
   }
   row.vertices = model->fine.vertex_count();
   row.dof = 3 * row.vertices;
-  std::vector<double> run_medians;
+  std::vector<double> run_medians, run_totals;
   for (int k = 0; k < std::max(1, repeat); ++k) {
     SeriesRecorder recorder;
     std::vector<RunObserver*> all = observers;
@@ -90,6 +90,10 @@ CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int rep
     row.dog_max_run = std::max(row.dog_max_run, recorder.worst_dog);
     run_medians.push_back(median_iteration_ms(recorder.iteration_ms));
     row.median_ms = median(run_medians);
+    double total_ms = 0;
+    for (double ms : recorder.iteration_ms) total_ms += ms;
+    run_totals.push_back(total_ms / 1000);
+    row.total_s = median(run_totals);
     if (s.failed) {
       row.status = CompareStatus::Failed;
       row.note = s.failure;
@@ -106,17 +110,19 @@ void relate_to_standard(std::vector<CompareRow>& rows) {
   for (auto& r : rows) {
     r.objective_ratio.reset();
     r.speedup.reset();
+    r.total_speedup.reset();
     const auto it = standard.find({r.pattern, r.res});
     if (!r.completed() || it == standard.end()) continue;
     const CompareRow& s = *it->second;
     r.objective_ratio = r.final_objective / s.final_objective;
     r.speedup = s.median_ms / r.median_ms;
+    r.total_speedup = s.total_s / r.total_s;
   }
 }
 
 std::vector<std::string> compare_columns() {
   return {"pattern", "res",     "mode",        "vertices",       "dof",    "iterations",
-          "final_objective", "objective_ratio", "median_ms", "speedup", "dog_max", "dog_max_run",
+          "final_objective", "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "dog_max", "dog_max_run",
           "stitch_gap_max", "folded", "status", "note"};
 }
 
@@ -127,7 +133,8 @@ std::vector<std::string> compare_fields(const CompareRow& r) {
   } else {
     f.insert(f.end(), {std::to_string(r.vertices), std::to_string(r.dof), std::to_string(r.iterations),
                        number(r.final_objective, 9), optional_number(r.objective_ratio, 9), number(r.median_ms, 4),
-                       optional_number(r.speedup, 4), number(r.dog_max, 3), number(r.dog_max_run, 3),
+                       optional_number(r.speedup, 4), number(r.total_s, 4), optional_number(r.total_speedup, 4),
+                       number(r.dog_max, 3), number(r.dog_max_run, 3),
                        number(r.stitch_gap_max, 3), r.folded ? "1" : "0"});
   }
   f.push_back(to_string(r.status));

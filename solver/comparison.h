@@ -34,13 +34,17 @@ struct CompareRow {
   int iterations = 0;  ///< completed iterations (of the last repeat)
   double final_objective = 0;
   double median_ms = 0;  ///< median over the repeats of median_iteration_ms
+  /// Median over the repeats of the whole run's time: the sum of every iteration's time, first
+  /// and last included (a mode's start-up and its end, e.g. the two-level mode's standard finish).
+  double total_s = 0;
   double dog_max = 0;    ///< at the end
   double dog_max_run = 0;  ///< worst over every iteration of every repeat
   double stitch_gap_max = 0;  ///< at the end
   bool folded = false;        ///< at the end
-  /// final_objective / standard's, and standard's median_ms / median_ms, on the same pattern and
-  /// resolution; empty when standard was not run there or either run did not complete.
-  std::optional<double> objective_ratio, speedup;
+  /// final_objective / standard's, standard's median_ms / median_ms and standard's total_s /
+  /// total_s, on the same pattern and resolution; empty when standard was not run there or either
+  /// run did not complete.
+  std::optional<double> objective_ratio, speedup, total_speedup;
   std::vector<ComparePoint> series;  ///< of the last repeat
 
   bool completed() const { return status == CompareStatus::Completed; }
@@ -55,12 +59,12 @@ struct CompareRow {
 CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
                             const std::vector<RunObserver*>& observers = {});
 
-/// Fills objective_ratio and speedup of every row from the completed `standard` row of its
+/// Fills objective_ratio, speedup and total_speedup of every row from the completed `standard` row of its
 /// pattern and resolution.
 void relate_to_standard(std::vector<CompareRow>& rows);
 
 /// compare.csv: pattern, res, mode, vertices, dof, iterations, final_objective, objective_ratio,
-/// median_ms, speedup, dog_max, dog_max_run, stitch_gap_max, folded, status, note. Empty fields
+/// median_ms, speedup, total_s, total_speedup, dog_max, dog_max_run, stitch_gap_max, folded, status, note. Empty fields
 /// for what a row does not have (ratios without standard, numbers of a skipped run).
 std::vector<std::string> compare_columns();
 std::vector<std::string> compare_fields(const CompareRow& r);

@@ -37,7 +37,8 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   const Csv csv = read_csv(dir + "/compare.csv");
   const std::vector<std::string> columns = {
       "pattern", "res",           "mode",        "vertices", "dof",    "iterations", "final_objective",
-      "objective_ratio", "median_ms", "speedup", "dog_max",  "dog_max_run", "stitch_gap_max", "folded", "status"};
+      "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "dog_max",  "dog_max_run",
+      "stitch_gap_max", "folded", "status"};
   ASSERT_GE(csv.header.size(), columns.size());
   for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(csv.header[i], columns[i]) << "column " << i;
   ASSERT_EQ(csv.rows.size(), 2u);
@@ -77,6 +78,16 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   }
   EXPECT_EQ(series.rows[7][4], field(0, "final_objective"));
   EXPECT_EQ(series.rows[15][4], field(1, "final_objective"));
+  // total_s: the whole run, every iteration's time summed (the series rounds each to 4 digits).
+  for (int row : {0, 1}) {
+    double sum_ms = 0;
+    for (int k = 8 * row; k < 8 * row + 8; ++k) sum_ms += std::stod(series.rows[k][5]);
+    EXPECT_NEAR(number(row, "total_s"), sum_ms / 1000, 2e-3 * sum_ms / 1000) << "row " << row;
+    EXPECT_GT(number(row, "total_s") * 1000, number(row, "median_ms"));
+  }
+  EXPECT_DOUBLE_EQ(number(0, "total_speedup"), 1.0);
+  const double total_speedup = number(0, "total_s") / number(1, "total_s");
+  EXPECT_NEAR(number(1, "total_speedup"), total_speedup, 2e-3 * total_speedup);  // total_s has 4 digits
 
   // compare.json: command line, configuration, versions and the same table.
   const auto j = nlohmann::json::parse(test::slurp(dir + "/compare.json"));
