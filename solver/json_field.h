@@ -51,11 +51,12 @@ class Field {
     if (!(d > 0)) fail("expected a number > 0, got " + format_number(d));
     return d;
   }
-  double non_negative() const {
+  double at_least(double min) const {
     const double d = number();
-    if (!(d >= 0)) fail("expected a number >= 0, got " + format_number(d));
+    if (!(d >= min)) fail("expected a number >= " + format_number(min) + ", got " + format_number(d));
     return d;
   }
+  double non_negative() const { return at_least(0); }
   int integer(int min) const {
     if (!v_.is_number_integer()) fail("expected an integer");
     const long long i = v_.get<long long>();

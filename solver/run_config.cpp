@@ -88,10 +88,11 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
-  f.expect_object({"link_weight", "fold_sharpness", "standard_finish"});
+  f.expect_object({"link_weight", "fold_sharpness", "standard_finish", "finish_fold_bias_cap"});
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
   if (f.has("fold_sharpness")) o.fold_sharpness = f["fold_sharpness"].positive();
   if (f.has("standard_finish")) o.standard_finish = f["standard_finish"].integer(0);
+  if (f.has("finish_fold_bias_cap")) o.finish_fold_bias_cap = f["finish_fold_bias_cap"].at_least(1);
 }
 
 void apply_admm(const Field& f, AdmmOptions& o) {
@@ -363,7 +364,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"p", c.admm.p >= 0 ? json(c.admm.p) : json("0.001 (patches - 1)")},
             {"inner", c.admm.inner}}},
           {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness},
-                        {"standard_finish", c.twolevel.standard_finish}}},
+                        {"standard_finish", c.twolevel.standard_finish},
+                        {"finish_fold_bias_cap", c.twolevel.finish_fold_bias_cap}}},
           {"switches", switches}};
 }
 

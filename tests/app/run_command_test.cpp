@@ -216,6 +216,8 @@ INSTANTIATE_TEST_SUITE_P(
                                  {"$.twolevel.standard_finish"}},
                       ConfigCase{"fractional_standard_finish", R"({"twolevel": {"standard_finish": 2.5}})",
                                  {"$.twolevel.standard_finish"}},
+                      ConfigCase{"finish_fold_bias_cap_below_1", R"({"twolevel": {"finish_fold_bias_cap": 0.5}})",
+                                 {"$.twolevel.finish_fold_bias_cap", ">= 1"}},
                       ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
                                  {"$.twolevel.fold_sharpness"}}));
 

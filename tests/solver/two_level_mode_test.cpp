@@ -105,14 +105,14 @@ TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
   EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
 }
 
-// The standard finish ($.twolevel.standard_finish, default 10): the last iterations of a run are
+// The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a run are
 // standard iterations on the fine sheet (no patch solves, the coarse mesh stays), the last one an
 // ordinary iteration and the projection. Held longer than block Jacobi can settle, the finish ends
 // nearer the standard mode's objective than the plain two-level iteration, folded and on the
 // constraints.
 TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
-  const RunConfig config = test::short_run(60, 20);
-  ASSERT_EQ(config.twolevel.standard_finish, 10);  // the default
+  RunConfig config = test::short_run(60, 20);
+  config.twolevel.standard_finish = 10;
   const test::RunResult finished = run("twolevel", config, 2);
   const test::RunResult plain = run("twolevel", no_finish(config), 2);
   const test::RunResult standard = run("standard", config, 2);
@@ -132,6 +132,30 @@ TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
   EXPECT_TRUE(finished.reports.back().step.folded);
 }
 
+// The finish's fold retries ($.twolevel.finish_fold_bias_cap, default 10): a finishing iteration
+// that ends unfolded is tried again with the fold-bias weight raised tenfold, up to the cap; with
+// a cap of 1 there are no retries.
+TEST(TwoLevelMode, TheFinishRetriesFoldsUpToItsCap) {
+  RunConfig config = test::short_run(40, 20);
+  ASSERT_EQ(config.twolevel.finish_fold_bias_cap, 10);  // the default
+  const int first_finishing = 60 - config.twolevel.standard_finish + 1;
+  for (const double cap : {1.0, 10.0, 100.0}) {
+    config.twolevel.finish_fold_bias_cap = cap;
+    const test::RunResult r = run("twolevel", config, 2);
+    ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+    const int most = static_cast<int>(std::lround(std::log10(cap)));
+    int unfolded = 0;
+    for (const auto& rep : r.reports) {
+      if (rep.iteration < first_finishing || rep.step.folded) continue;
+      ++unfolded;
+      // An iteration that ends unfolded has used every retry the cap allows.
+      EXPECT_EQ(rep.step.fold_retries, most) << "cap " << cap << ", iteration " << rep.iteration;
+    }
+    EXPECT_GT(unfolded, 0) << "cap " << cap << ": the case should have finishing iterations that end unfolded";
+    EXPECT_LT(r.reports.back().diagnostics.dog_max, 5e-7) << "cap " << cap;
+  }
+}
+
 // The finish needs a run of known length: open-ended iterations (the studio) never finish, and 0
 // turns it off; a negative count is refused.
 TEST(TwoLevelMode, TheStandardFinishNeedsARunOfKnownLength) {
@@ -139,11 +163,12 @@ TEST(TwoLevelMode, TheStandardFinishNeedsARunOfKnownLength) {
   DogProblem problem(model().fine, model().fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, model().fine);
   TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
+  ASSERT_EQ(config.twolevel.standard_finish, 30);  // the default
   mode.set_iterations_left(Mode::kOpenEnded);
   EXPECT_FALSE(mode.finishing());
-  mode.set_iterations_left(10);
+  mode.set_iterations_left(30);
   EXPECT_FALSE(mode.finishing());
-  mode.set_iterations_left(9);
+  mode.set_iterations_left(29);
   EXPECT_TRUE(mode.finishing());
   config.twolevel.standard_finish = 0;
   TwoLevelMode never(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
