@@ -89,6 +89,7 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
 TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
   RunConfig config = test::short_run(30, 5);
   config.switches = {{10, "standard"}};
+  config.twolevel.standard_finish = 0;  // two-level iterations up to the switch (a finish would start at 6)
   const SwitchedRun s = run_with_switches(config, "twolevel");
   ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
   const auto& reports = s.result.reports;
