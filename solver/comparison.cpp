@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <numeric>
 
 #include "geometry/errors.h"
 
@@ -90,9 +91,7 @@ CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int rep
     row.dog_max_run = std::max(row.dog_max_run, recorder.worst_dog);
     run_medians.push_back(median_iteration_ms(recorder.iteration_ms));
     row.median_ms = median(run_medians);
-    double total_ms = 0;
-    for (double ms : recorder.iteration_ms) total_ms += ms;
-    run_totals.push_back(total_ms / 1000);
+    run_totals.push_back(std::accumulate(recorder.iteration_ms.begin(), recorder.iteration_ms.end(), 0.0) / 1000);
     row.total_s = median(run_totals);
     if (s.failed) {
       row.status = CompareStatus::Failed;

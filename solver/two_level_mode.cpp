@@ -29,8 +29,7 @@ TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenar
     : problem_(fine),
       scenario_(scenario),
       standard_(standard),
-      standard_finish_(options.standard_finish),
-      finish_fold_bias_cap_(options.finish_fold_bias_cap),
+      options_(options),
       coarse_(fine, model, scenario, options.link_weight, standard, "twolevel", options.fold_sharpness),
       fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
@@ -43,7 +42,7 @@ void TwoLevelMode::set_time(double t) {
 void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
 
 void TwoLevelMode::set_iterations_left(int left) {
-  if (finish_ || left == kOpenEnded || left >= standard_finish_) return;
+  if (finish_ || left == kOpenEnded || left >= options_.standard_finish) return;
   // As a switch to the standard mode (mode_factory.h): it installs the scenario's blocks in the
   // fine problem, whose weights the two-level mode left as configured. Fold retries only up to the
   // cap: from the sites the two-level iterations left across their crease the escalation to 1e14
@@ -52,7 +51,7 @@ void TwoLevelMode::set_iterations_left(int left) {
   // iterations: parallel_curves_4 27x45 folded at 3.14 instead of unfolded at 3.15, valley 41x41
   // folded at 2.64 instead of unfolded at 6.76; README).
   StandardOptions options = standard_;
-  options.max_fold_bias = problem_.weights.fold_bias * finish_fold_bias_cap_;
+  options.max_fold_bias = problem_.weights.fold_bias * options_.finish_fold_bias_cap;
   finish_ = std::make_unique<StandardMode>(problem_, scenario_, options);
 }
 
@@ -61,9 +60,9 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
   // the standard's polish: its exact-Hessian steps rely on multipliers settled over a whole run,
   // and after a few standard iterations they moved the sheet far (4_corners 81x81, 10 finishing
   // iterations: objective 2.33 at iteration 299, 6.67 after the polish).
+  const Dofs x0 = last ? x : Dofs();
   StepReport report = finish_->iterate(x, false);
-  if (!last || report.failed) return report;
-  add_projection(finish_->sqp().project(x), report);
+  if (last && !report.failed && !add_projection(finish_->sqp().project(x), report)) x = x0;  // rolled back
   return report;
 }
 

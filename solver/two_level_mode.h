@@ -80,8 +80,7 @@ class TwoLevelMode : public Mode {
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions standard_;
-  int standard_finish_;
-  double finish_fold_bias_cap_;
+  TwoLevelOptions options_;
   CoarseLevel coarse_;
   SubsolversMode fine_;
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
