@@ -14,16 +14,21 @@ int default_blas_threads() {
   return 2;
 }
 
-bool set_blas_threads(int n) {
-  // Both looked up at run time, once: CHOLMOD reaches the BLAS through Debian's libblas
-  // alternative, which may or may not be OpenBLAS, and OpenMP comes with CHOLMOD, not with this
-  // program.
-  using SetInt = void (*)(int);
+// Both looked up at run time, once: CHOLMOD reaches the BLAS through Debian's libblas
+// alternative, which may or may not be OpenBLAS, and OpenMP comes with CHOLMOD, not with this
+// program.
+using SetInt = void (*)(int);
+
+void serial_openmp_regions() {
   static const auto levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-  static const auto threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   // With no active levels allowed every parallel region runs on one thread (also regions with an
   // explicit num_threads clause, which OMP_NUM_THREADS cannot limit).
   if (levels) levels(0);
+}
+
+bool set_blas_threads(int n) {
+  static const auto threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  serial_openmp_regions();
   if (!threads) return false;
   threads(n);
   return true;

@@ -12,7 +12,12 @@
 // fixed team of 4 threads, whatever OMP_NUM_THREADS says. Waking that team per supernode cost more
 // than the loops save (4_corners 81x81, 2 cores: 137 ms per standard iteration, 80 ms without the
 // regions), and a team per patch thread oversubscribes the cores. So
-// set_blas_threads also makes every OpenMP region run on the calling thread.
+// set_blas_threads also makes every OpenMP region run on the calling thread. libgomp keeps that
+// limit per thread (a new thread starts from the process defaults), so threads that factorise
+// on their own, such as the TBB workers of the patch modes, call serial_openmp_regions() too:
+// without it every worker's first factorisation started a team of 4 OpenMP threads that then
+// spun beside the patch solves (4_corners 81x81, subsolvers, 2 patch threads: 56.6 ms per
+// iteration, 40 ms with the workers' teams idle instead of spinning).
 namespace sdog {
 
 /// The count from SDOG_BLAS_THREADS (1..64), else 2.
@@ -20,5 +25,8 @@ int default_blas_threads();
 /// Sets the BLAS (OpenBLAS) thread count if that BLAS is loaded and turns CHOLMOD's OpenMP
 /// regions serial if OpenMP is loaded; returns false if OpenBLAS is not loaded.
 bool set_blas_threads(int n);
+/// Makes every OpenMP region entered from the calling thread run on that thread (nothing if no
+/// OpenMP runtime is loaded).
+void serial_openmp_regions();
 
 }  // namespace sdog

@@ -53,6 +53,7 @@ class PatchSolver : public PatchStepper {
   PatchSolver& operator=(const PatchSolver&) = delete;
 
   int patch() const override { return patch_; }
+  int vertex_count() const override { return end_ - begin_; }
   PatchReport step(Dofs& x, bool last) override;
   /// Solves from x and writes the patch's vertices back into x (others are not touched).
   PatchReport solve(Dofs& x);

@@ -19,6 +19,7 @@ class PatchSqp : public PatchStepper {
   PatchSqp(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
            const SqpOptions& options, const PatchCoupling& coupling = {});
   int patch() const override { return patch_; }
+  int vertex_count() const override { return end_ - begin_; }
   PatchReport step(Dofs& x, bool last) override;
   void set_weight(size_t index, double weight) override { sqp_->set_weight(index, weight); }
 

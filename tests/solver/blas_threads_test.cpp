@@ -2,7 +2,15 @@
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <thread>
+
 #include "solver/blas_threads.h"
+#include "solver/patch_stepper.h"
 
 namespace sdog {
 namespace {
@@ -29,6 +37,49 @@ TEST(BlasThreads, OpenBlasTakesTheCount) {
   EXPECT_EQ(get_threads(), 1);
   ASSERT_TRUE(set_blas_threads(2));
   EXPECT_EQ(get_threads(), 2);
+}
+
+// Records the OpenMP active-level limit of the thread that steps it.
+class LevelProbe : public PatchStepper {
+ public:
+  LevelProbe(int patch, GetInt get_levels, std::mutex& mutex, std::set<int>& levels, std::set<int>& threads)
+      : patch_(patch), get_levels_(get_levels), mutex_(mutex), levels_(levels), threads_(threads) {}
+  int patch() const override { return patch_; }
+  int vertex_count() const override { return 1; }
+  PatchReport step(Dofs&, bool) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // gives the other worker a turn
+    std::lock_guard<std::mutex> lock(mutex_);
+    levels_.insert(get_levels_());
+    threads_.insert(tbb::this_task_arena::current_thread_index());
+    PatchReport r;
+    r.patch = patch_;
+    r.converged = true;
+    return r;
+  }
+  void set_weight(size_t, double) override {}
+
+ private:
+  int patch_;
+  GetInt get_levels_;
+  std::mutex& mutex_;
+  std::set<int>& levels_;
+  std::set<int>& threads_;
+};
+
+TEST(BlasThreads, PatchStepsRunOpenMpRegionsOnTheirOwnThread) {
+  // libgomp keeps the limit per thread: a TBB worker that factorises a patch must set it itself,
+  // or its factorisations start teams of 4 OpenMP threads that spin beside the other patches.
+  auto get_levels = reinterpret_cast<GetInt>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  if (!get_levels) GTEST_SKIP() << "no OpenMP runtime loaded (CHOLMOD built without OpenMP)";
+  std::mutex mutex;
+  std::set<int> levels, threads;
+  std::vector<std::unique_ptr<PatchStepper>> patches;
+  for (int i = 0; i < 8; ++i) patches.push_back(std::make_unique<LevelProbe>(i, get_levels, mutex, levels, threads));
+  Dofs x = Dofs::Zero(3);
+  tbb::task_arena arena(2);
+  arena.execute([&] { step_patches(patches, x, false); });
+  ASSERT_GE(threads.size(), 2u) << "the patches did not run on two threads, so this test checks nothing";
+  EXPECT_EQ(levels, std::set<int>{0});
 }
 
 }  // namespace
