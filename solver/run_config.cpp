@@ -88,11 +88,12 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
-  f.expect_object({"link_weight", "fold_sharpness", "standard_finish", "finish_fold_bias_cap"});
+  f.expect_object({"link_weight", "fold_sharpness", "standard_finish", "finish_fold_bias_cap", "concurrent_coarse"});
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
   if (f.has("fold_sharpness")) o.fold_sharpness = f["fold_sharpness"].positive();
   if (f.has("standard_finish")) o.standard_finish = f["standard_finish"].integer(0);
   if (f.has("finish_fold_bias_cap")) o.finish_fold_bias_cap = f["finish_fold_bias_cap"].at_least(1);
+  if (f.has("concurrent_coarse")) o.concurrent_coarse = f["concurrent_coarse"].boolean();
 }
 
 void apply_admm(const Field& f, AdmmOptions& o) {
@@ -365,7 +366,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"inner", c.admm.inner}}},
           {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness},
                         {"standard_finish", c.twolevel.standard_finish},
-                        {"finish_fold_bias_cap", c.twolevel.finish_fold_bias_cap}}},
+                        {"finish_fold_bias_cap", c.twolevel.finish_fold_bias_cap},
+                        {"concurrent_coarse", c.twolevel.concurrent_coarse}}},
           {"switches", switches}};
 }
 

@@ -9,6 +9,7 @@ namespace sdog {
 std::string StandardOptions::validate() const {
   if (const std::string m = sqp.validate(); !m.empty()) return m;
   if (!(max_fold_bias > 0)) return "max_fold_bias must be positive";
+  if (blas_threads < 0) return "blas_threads must be >= 0";
   return "";
 }
 
@@ -24,7 +25,8 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
 void StandardMode::set_time(double t) { scenario_.apply(problem_, t); }
 
 StepReport StandardMode::iterate(Dofs& x, bool last) {
-  set_blas_threads(default_blas_threads());  // a patch mode before may have lowered it
+  // Every iteration: a patch mode before may have lowered it.
+  set_blas_threads(options_.blas_threads > 0 ? options_.blas_threads : default_blas_threads());
   StepReport report;
   double constraint_max = 0;  // of the last attempt
   auto run = [&]() {

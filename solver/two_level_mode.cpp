@@ -1,5 +1,7 @@
 #include "solver/two_level_mode.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <cmath>
 
 #include "solver/final_projection.h"
@@ -10,6 +12,20 @@ namespace {
 SubsolverOptions with_fold_sharpness(SubsolverOptions o, double k) {
   o.fold_sharpness = k;
   return o;
+}
+
+// The coarse step beside the patch solves takes one BLAS thread, as each patch does.
+StandardOptions for_coarse_step(StandardOptions o, const TwoLevelOptions& t) {
+  if (t.concurrent_coarse) o.blas_threads = 1;
+  return o;
+}
+
+void add_coarse(const StepReport& coarse, StepReport& report) {
+  report.sqp_steps += coarse.sqp_steps;
+  report.factorizations += coarse.factorizations;
+  report.restoration_steps += coarse.restoration_steps;
+  report.fold_retries += coarse.fold_retries;
+  report.factor_ms += coarse.factor_ms;
 }
 
 }  // namespace
@@ -30,7 +46,8 @@ TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenar
       scenario_(scenario),
       standard_(standard),
       options_(options),
-      coarse_(fine, model, scenario, options.link_weight, standard, "twolevel", options.fold_sharpness),
+      coarse_(fine, model, scenario, options.link_weight, for_coarse_step(standard, options), "twolevel",
+              options.fold_sharpness),
       fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
 void TwoLevelMode::set_time(double t) {
@@ -39,7 +56,10 @@ void TwoLevelMode::set_time(double t) {
   fine_.set_time(t);
 }
 
-void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
+void TwoLevelMode::start_from(const Dofs& x) {
+  coarse_.start_from(x);
+  pending_.resize(0);
+}
 
 void TwoLevelMode::set_iterations_left(int left) {
   if (finish_ || left == kOpenEnded || left >= options_.standard_finish) return;
@@ -68,6 +88,10 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
 
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   if (finish_) return finish_iteration(x, last);
+  return options_.concurrent_coarse ? concurrent_iteration(x, last) : sequential_iteration(x, last);
+}
+
+StepReport TwoLevelMode::sequential_iteration(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
   StepReport coarse = coarse_.step(x);
   if (coarse.failed) {
@@ -83,11 +107,35 @@ StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
     report.failure = "fine step: " + report.failure;
     return report;
   }
-  report.sqp_steps += coarse.sqp_steps;
-  report.factorizations += coarse.factorizations;
-  report.restoration_steps += coarse.restoration_steps;
-  report.fold_retries += coarse.fold_retries;
-  report.factor_ms += coarse.factor_ms;
+  add_coarse(coarse, report);
+  return report;
+}
+
+StepReport TwoLevelMode::concurrent_iteration(Dofs& x, bool last) {
+  const Dofs x0 = x, c0 = coarse_.state();
+  if (pending_.size() == x.size()) x += pending_;
+  // The last iteration has no next one to carry a correction to: no coarse step.
+  if (last) {
+    StepReport report = fine_.iterate(x, last);
+    if (report.failed) {
+      x = x0;
+      report.failure = "fine step: " + report.failure;
+    }
+    return report;
+  }
+  const Dofs start = x;  // the coarse step's link targets; the round writes x meanwhile
+  StepReport coarse, report;
+  tbb::parallel_invoke([&] { coarse = coarse_.step(start); }, [&] { report = fine_.iterate(x, last); });
+  if (coarse.failed || report.failed) {
+    x = x0;
+    coarse_.set_state(c0);
+    StepReport& failed = coarse.failed ? coarse : report;
+    failed.failure = (coarse.failed ? "coarse step: " : "fine step: ") + failed.failure;
+    return failed;
+  }
+  const Prolongation& P = coarse_.prolongation();
+  pending_ = P.apply(coarse_.state()) - P.apply(c0);
+  add_coarse(coarse, report);
   return report;
 }
 

@@ -7,6 +7,11 @@
 //      x += P (c_new - c_old) (prolongation.h);
 //   3. fine step: one block-Jacobi round of the fine patches in parallel (subsolvers_mode.h), which
 //      restores the fine DOG constraints and settles the fine detail, the stitching and the folds.
+// Concurrent coarse step (`concurrent_coarse`, the default): the coarse step of an iteration runs
+// beside its fine round, on the other core, and its correction is applied at the start of the
+// next iteration (a lag of one iteration); the coarse step then costs no wall time when the
+// patches leave a core free. With a positive link weight the coarse step reads the fine state the
+// round starts from. Off: the three steps one after another, as listed.
 // Block Jacobi alone hands a drag on by one patch per iteration and lags far behind moving
 // targets; the correction moves the whole sheet at once. The coarse state enters the fine problem
 // only as a displacement, never as a target, so once the coarse mesh settles the fine iteration is
@@ -54,6 +59,8 @@ struct TwoLevelOptions {
   /// multiple of its base weight; 1: no retries. The standard mode's 1e14 wrecked sheets handed
   /// over with unfolded sites (valley 61x61: objective 6.4e9 in the first finishing iteration).
   double finish_fold_bias_cap = 10;
+  /// The coarse step beside the fine round, its correction one iteration later (see above).
+  bool concurrent_coarse = true;
   std::string validate() const;
 };
 
@@ -77,6 +84,8 @@ class TwoLevelMode : public Mode {
 
  private:
   StepReport finish_iteration(Dofs& x, bool last);
+  StepReport sequential_iteration(Dofs& x, bool last);
+  StepReport concurrent_iteration(Dofs& x, bool last);
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions standard_;
@@ -84,6 +93,7 @@ class TwoLevelMode : public Mode {
   CoarseLevel coarse_;
   SubsolversMode fine_;
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
+  Dofs pending_;  // concurrent coarse step: the correction of the last coarse step, not yet applied
 };
 
 }  // namespace sdog

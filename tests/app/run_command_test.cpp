@@ -219,7 +219,9 @@ INSTANTIATE_TEST_SUITE_P(
                       ConfigCase{"finish_fold_bias_cap_below_1", R"({"twolevel": {"finish_fold_bias_cap": 0.5}})",
                                  {"$.twolevel.finish_fold_bias_cap", ">= 1"}},
                       ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
-                                 {"$.twolevel.fold_sharpness"}}));
+                                 {"$.twolevel.fold_sharpness"}},
+                      ConfigCase{"concurrent_coarse_not_boolean", R"({"twolevel": {"concurrent_coarse": 1}})",
+                                 {"$.twolevel.concurrent_coarse"}}));
 
 TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   const std::string dir = test::temp_dir("config_good");

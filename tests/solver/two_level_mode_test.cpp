@@ -10,6 +10,7 @@
 
 #include "geometry/dog_model.h"
 #include "solver/mode_factory.h"
+#include "solver/subsolvers_mode.h"
 #include "solver/two_level_mode.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
@@ -101,8 +102,60 @@ TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
 }
 
 TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
-  const RunConfig config = no_finish(test::short_run(6, 0));
+  RunConfig config = no_finish(test::short_run(6, 0));
+  ASSERT_TRUE(config.twolevel.concurrent_coarse);  // the default
   EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
+  config.twolevel.concurrent_coarse = false;
+  EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
+}
+
+// $.twolevel.concurrent_coarse (default on): the coarse step runs beside the fine round and its
+// correction moves the fine sheet at the start of the next iteration. So the first iteration is a
+// plain block-Jacobi round, and the second is a round from its result moved by the first coarse
+// step's displacement, carried to the fine mesh.
+TEST(TwoLevelMode, TheConcurrentCoarseStepCorrectsOneIterationLater) {
+  const RunConfig config = no_finish(test::short_run(20, 0));
+  DogProblem fine(model().fine, model().fine_topology, config.weights);
+  DogProblem plain(model().fine, model().fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model().fine);
+  TwoLevelMode mode(fine, model(), scenario, config.twolevel, config.standard, config.subsolvers);
+  SubsolverOptions jacobi_options = config.subsolvers;
+  jacobi_options.fold_sharpness = config.twolevel.fold_sharpness;
+  SubsolversMode jacobi(plain, scenario, jacobi_options, config.standard.sqp);
+  const Prolongation& P = mode.coarse_level().prolongation();
+
+  Dofs x = scenario.start(model().fine), y = x;
+  const Dofs c0 = mode.coarse_state();
+  for (Mode* m : {static_cast<Mode*>(&mode), static_cast<Mode*>(&jacobi)}) m->set_time(scenario.time_of(1));
+  ASSERT_FALSE(mode.iterate(x, false).failed);
+  ASSERT_FALSE(jacobi.iterate(y, false).failed);
+  EXPECT_TRUE(x == y) << "the first iteration has no correction yet";
+  const Dofs c1 = mode.coarse_state();
+  ASSERT_GT((c1 - c0).norm(), 1e-3) << "the coarse step should have moved the coarse mesh";
+
+  for (Mode* m : {static_cast<Mode*>(&mode), static_cast<Mode*>(&jacobi)}) m->set_time(scenario.time_of(2));
+  y += P.apply(c1) - P.apply(c0);
+  ASSERT_FALSE(mode.iterate(x, false).failed);
+  ASSERT_FALSE(jacobi.iterate(y, false).failed);
+  EXPECT_TRUE(x == y) << "the second iteration starts from the first moved by the first coarse step";
+  EXPECT_GT((mode.coarse_state() - c1).norm(), 1e-3);
+}
+
+// Off: the coarse step, the correction and the round one after another in the same iteration;
+// the runs differ from the concurrent ones but keep the constraints and follow the drag alike.
+TEST(TwoLevelMode, TheSequentialVariantCorrectsInTheSameIteration) {
+  RunConfig config = no_finish(test::short_run(60, 20));
+  const test::RunResult concurrent = run("twolevel", config, 2);
+  config.twolevel.concurrent_coarse = false;
+  const test::RunResult sequential = run("twolevel", config, 2);
+  for (const auto* r : {&concurrent, &sequential}) {
+    ASSERT_FALSE(r->summary.failed) << r->summary.failure;
+    for (const auto& rep : r->reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+    EXPECT_LT(r->reports.back().diagnostics.dog_max, 1e-6);
+  }
+  const double a = concurrent.reports.back().diagnostics.objective, b = sequential.reports.back().diagnostics.objective;
+  EXPECT_NE(concurrent.reports.front().diagnostics.objective, sequential.reports.front().diagnostics.objective);
+  EXPECT_LT(std::abs(a - b), 0.25 * b) << "concurrent " << a << ", sequential " << b;
 }
 
 // The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a run are
