@@ -329,7 +329,12 @@ class StudioTest : public QObject {
     auto* links = qobject_cast<QCheckBox*>(form->field("fine-to-coarse links"));
     auto* backend = qobject_cast<QComboBox*>(form->field("patch backend"));
     auto* sweep = qobject_cast<QComboBox*>(form->field("patch sweep"));
-    QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && !form->field("no such field"));
+    auto* sharpness = qobject_cast<QDoubleSpinBox*>(form->field("twolevel fold sharpness"));
+    auto* concurrent = qobject_cast<QCheckBox*>(form->field("twolevel concurrent coarse step"));
+    QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && sharpness && concurrent &&
+            !form->field("no such field"));
+    QCOMPARE(sharpness->value(), window_->run_config().twolevel.fold_sharpness);
+    QCOMPARE(concurrent->isChecked(), window_->run_config().twolevel.concurrent_coarse);
     QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
     QCOMPARE(links->isChecked(), window_->run_config().coarse.fine_to_coarse);
     QVERIFY(!panel->apply_button()->isEnabled());
@@ -340,6 +345,8 @@ class StudioTest : public QObject {
     links->setChecked(false);
     backend->setCurrentText("ceres");
     sweep->setCurrentText("colours");
+    sharpness->setValue(250);
+    concurrent->setChecked(false);
     QVERIFY(panel->apply_button()->isEnabled());
     QCOMPARE(window_->run_config().weights.isometry, 20000.0);  // not applied yet
     window_->step(2);
@@ -353,6 +360,8 @@ class StudioTest : public QObject {
     QCOMPARE(applied.coarse.fine_to_coarse, false);
     QCOMPARE(applied.subsolvers.backend, std::string("ceres"));
     QCOMPARE(applied.subsolvers.sweep, std::string("colours"));
+    QCOMPARE(applied.twolevel.fold_sharpness, 250.0);
+    QCOMPARE(applied.twolevel.concurrent_coarse, false);
     QCOMPARE(applied.scenario, std::string("corners"));  // the rest is kept
     QVERIFY(!panel->apply_button()->isEnabled());
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again
