@@ -277,7 +277,8 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
   CLI::App* cmd = app.add_subcommand(
       "compare",
       "Run the thesis protocol with several solver modes and compare them: compare.csv (final objective and "
-      "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its speedup, DOG residuals, stitching gap), "
+      "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its "
+      "speedup, DOG residuals, stitching gap), "
       "series.csv, compare.json and PNG plots (needs an X display: use xvfb-run on a headless machine)");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");

@@ -121,8 +121,8 @@ void relate_to_standard(std::vector<CompareRow>& rows) {
 
 std::vector<std::string> compare_columns() {
   return {"pattern", "res",     "mode",        "vertices",       "dof",    "iterations",
-          "final_objective", "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "dog_max", "dog_max_run",
-          "stitch_gap_max", "folded", "status", "note"};
+          "final_objective", "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup",
+          "dog_max", "dog_max_run", "stitch_gap_max", "folded", "status", "note"};
 }
 
 std::vector<std::string> compare_fields(const CompareRow& r) {

@@ -59,13 +59,14 @@ struct CompareRow {
 CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
                             const std::vector<RunObserver*>& observers = {});
 
-/// Fills objective_ratio, speedup and total_speedup of every row from the completed `standard` row of its
-/// pattern and resolution.
+/// Fills objective_ratio, speedup and total_speedup of every row from the completed `standard`
+/// row of its pattern and resolution.
 void relate_to_standard(std::vector<CompareRow>& rows);
 
 /// compare.csv: pattern, res, mode, vertices, dof, iterations, final_objective, objective_ratio,
-/// median_ms, speedup, total_s, total_speedup, dog_max, dog_max_run, stitch_gap_max, folded, status, note. Empty fields
-/// for what a row does not have (ratios without standard, numbers of a skipped run).
+/// median_ms, speedup, total_s, total_speedup, dog_max, dog_max_run, stitch_gap_max, folded,
+/// status, note. Empty fields for what a row does not have (ratios without standard, numbers of a
+/// skipped run).
 std::vector<std::string> compare_columns();
 std::vector<std::string> compare_fields(const CompareRow& r);
 /// series.csv (long format): pattern, res, mode, iteration, objective, ms, dog_max, stitch_gap_max.

@@ -1,11 +1,11 @@
 #include "solver/patch_stepper.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
 #include <numeric>
-#include <tbb/task_arena.h>
 
 #include "solver/blas_threads.h"
 #include "solver/stopwatch.h"

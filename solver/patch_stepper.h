@@ -27,8 +27,9 @@ class PatchStepper {
 /// patch order, with start times and worker threads; the result does not depend on the thread
 /// count. Each thread takes the largest patch not yet started (greedy list scheduling), so the
 /// largest patch starts at once and small ones fill the gaps, also around work that runs beside
-/// the round (the two-level mode's coarse step). With `active`, only the patches marked there step (the others report a converged
-/// step that took no time and leave their vertices as they are).
+/// the round (the two-level mode's coarse step). With `active`, only the patches marked there
+/// step (the others report a converged step that took no time and leave their vertices as they
+/// are).
 std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
                                       const std::vector<char>* active = nullptr);
 

@@ -114,18 +114,13 @@ StepReport TwoLevelMode::sequential_iteration(Dofs& x, bool last) {
 StepReport TwoLevelMode::concurrent_iteration(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
   if (pending_.size() == x.size()) x += pending_;
-  // The last iteration has no next one to carry a correction to: no coarse step.
-  if (last) {
-    StepReport report = fine_.iterate(x, last);
-    if (report.failed) {
-      x = x0;
-      report.failure = "fine step: " + report.failure;
-    }
-    return report;
-  }
-  const Dofs start = x;  // the coarse step's link targets; the round writes x meanwhile
   StepReport coarse, report;
-  tbb::parallel_invoke([&] { coarse = coarse_.step(start); }, [&] { report = fine_.iterate(x, last); });
+  if (last) {
+    report = fine_.iterate(x, last);  // no next iteration to carry a correction to: no coarse step
+  } else {
+    const Dofs start = x;  // the coarse step's link targets; the round writes x meanwhile
+    tbb::parallel_invoke([&] { coarse = coarse_.step(start); }, [&] { report = fine_.iterate(x, last); });
+  }
   if (coarse.failed || report.failed) {
     x = x0;
     coarse_.set_state(c0);
@@ -133,8 +128,10 @@ StepReport TwoLevelMode::concurrent_iteration(Dofs& x, bool last) {
     failed.failure = (coarse.failed ? "coarse step: " : "fine step: ") + failed.failure;
     return failed;
   }
-  const Prolongation& P = coarse_.prolongation();
-  pending_ = P.apply(coarse_.state()) - P.apply(c0);
+  if (!last) {
+    const Prolongation& P = coarse_.prolongation();
+    pending_ = P.apply(coarse_.state()) - P.apply(c0);
+  }
   add_coarse(coarse, report);
   return report;
 }

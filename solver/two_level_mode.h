@@ -22,8 +22,9 @@
 // Standard finish: the last `standard_finish` iterations of a run (of a known length: not in the
 // studio) are standard iterations on the fine sheet (standard_mode.h, with fold retries up to
 // `finish_fold_bias_cap` times the base fold-bias weight), as if the run switched to the standard
-// mode there; the coarse mesh stays where it was. The last of them is an ordinary standard iteration and the projection onto the
-// constraints (as the patch modes' last iteration), not the standard's polish. Block Jacobi
+// mode there; the coarse mesh stays where it was. The last of them is an ordinary standard
+// iteration and the projection onto the constraints (as the patch modes' last iteration), not the
+// standard's polish. Block Jacobi
 // converges slowly on a held state: on the thesis grid 30 such iterations bring the geometric-mean
 // objective ratio to the standard mode from 2.17 to 1.04 (README, "The two-level mode").
 #include <memory>
