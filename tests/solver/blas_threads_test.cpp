@@ -11,6 +11,7 @@
 
 #include "solver/blas_threads.h"
 #include "solver/patch_stepper.h"
+#include "tests/solver/probe_patch.h"
 
 namespace sdog {
 namespace {
@@ -39,33 +40,6 @@ TEST(BlasThreads, OpenBlasTakesTheCount) {
   EXPECT_EQ(get_threads(), 2);
 }
 
-// Records the OpenMP active-level limit of the thread that steps it.
-class LevelProbe : public PatchStepper {
- public:
-  LevelProbe(int patch, GetInt get_levels, std::mutex& mutex, std::set<int>& levels, std::set<int>& threads)
-      : patch_(patch), get_levels_(get_levels), mutex_(mutex), levels_(levels), threads_(threads) {}
-  int patch() const override { return patch_; }
-  int vertex_count() const override { return 1; }
-  PatchReport step(Dofs&, bool) override {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // gives the other worker a turn
-    std::lock_guard<std::mutex> lock(mutex_);
-    levels_.insert(get_levels_());
-    threads_.insert(tbb::this_task_arena::current_thread_index());
-    PatchReport r;
-    r.patch = patch_;
-    r.converged = true;
-    return r;
-  }
-  void set_weight(size_t, double) override {}
-
- private:
-  int patch_;
-  GetInt get_levels_;
-  std::mutex& mutex_;
-  std::set<int>& levels_;
-  std::set<int>& threads_;
-};
-
 TEST(BlasThreads, PatchStepsRunOpenMpRegionsOnTheirOwnThread) {
   // libgomp keeps the limit per thread: a TBB worker that factorises a patch must set it itself,
   // or its factorisations start teams of 4 OpenMP threads that spin beside the other patches.
@@ -74,7 +48,13 @@ TEST(BlasThreads, PatchStepsRunOpenMpRegionsOnTheirOwnThread) {
   std::mutex mutex;
   std::set<int> levels, threads;
   std::vector<std::unique_ptr<PatchStepper>> patches;
-  for (int i = 0; i < 8; ++i) patches.push_back(std::make_unique<LevelProbe>(i, get_levels, mutex, levels, threads));
+  for (int i = 0; i < 8; ++i)
+    patches.push_back(std::make_unique<test::ProbePatch>(i, 1, [&](int) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // gives the other worker a turn
+      std::lock_guard<std::mutex> lock(mutex);
+      levels.insert(get_levels());
+      threads.insert(tbb::this_task_arena::current_thread_index());
+    }));
   Dofs x = Dofs::Zero(3);
   tbb::task_arena arena(2);
   arena.execute([&] { step_patches(patches, x, false); });

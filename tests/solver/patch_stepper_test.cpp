@@ -6,32 +6,10 @@
 #include <vector>
 
 #include "solver/patch_stepper.h"
+#include "tests/solver/probe_patch.h"
 
 namespace sdog {
 namespace {
-
-// Records the order in which the patches step.
-class OrderProbe : public PatchStepper {
- public:
-  OrderProbe(int patch, int vertices, std::mutex& mutex, std::vector<int>& order)
-      : patch_(patch), vertices_(vertices), mutex_(mutex), order_(order) {}
-  int patch() const override { return patch_; }
-  int vertex_count() const override { return vertices_; }
-  PatchReport step(Dofs&, bool) override {
-    std::lock_guard<std::mutex> lock(mutex_);
-    order_.push_back(patch_);
-    PatchReport r;
-    r.patch = patch_;
-    r.converged = true;
-    return r;
-  }
-  void set_weight(size_t, double) override {}
-
- private:
-  int patch_, vertices_;
-  std::mutex& mutex_;
-  std::vector<int>& order_;
-};
 
 TEST(StepPatches, LargestPatchesStartFirstAndReportsKeepPatchOrder) {
   std::mutex mutex;
@@ -39,7 +17,10 @@ TEST(StepPatches, LargestPatchesStartFirstAndReportsKeepPatchOrder) {
   const std::vector<int> sizes = {30, 900, 10, 500, 30};
   std::vector<std::unique_ptr<PatchStepper>> patches;
   for (int i = 0; i < static_cast<int>(sizes.size()); ++i)
-    patches.push_back(std::make_unique<OrderProbe>(i, sizes[i], mutex, order));
+    patches.push_back(std::make_unique<test::ProbePatch>(i, sizes[i], [&](int patch) {
+      std::lock_guard<std::mutex> lock(mutex);
+      order.push_back(patch);
+    }));
   Dofs x = Dofs::Zero(3);
   std::vector<PatchReport> reports;
   tbb::task_arena one(1);  // one thread: the queue order is the step order
