@@ -1,5 +1,7 @@
 #include "solver/coarse_level.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include "geometry/errors.h"
 #include "solver/crease_geometry.h"
 #include "solver/restriction.h"
@@ -53,7 +55,11 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
       links_.push_back({v, map.fine_to_coarse[v]});
       problem_->link.add({{map.fine_to_coarse[v], 1.0}});
     }
-  mode_ = std::make_unique<StandardMode>(*problem_, coarse_scenario, standard);
+  // One BLAS thread: the step may run beside the fine patch solves (run_beside), and its result
+  // must not depend on whether it did (OpenBLAS rounds differently with another thread count).
+  StandardOptions options = standard;
+  options.blas_threads = 1;
+  mode_ = std::make_unique<StandardMode>(*problem_, coarse_scenario, options);
   set_time(0);
   if (scenario.initial.size() > 0)
     start_from(scenario.initial);
@@ -62,6 +68,7 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
 }
 
 void CoarseLevel::start_from(const Dofs& fine_x) {
+  ahead_.reset();
   x_ = restrict_to_coarse(model_, fine_x);
   mode_->start_from(x_);
   mode_->sqp().restore_constraints(x_);  // the restriction is close to a DOG, not on it
@@ -75,16 +82,39 @@ void CoarseLevel::start_from(const Dofs& fine_x) {
 CoarseLevel::~CoarseLevel() = default;
 
 void CoarseLevel::set_time(double t) {
+  t_ = t;
   mode_->set_time(t);
   for (size_t k = 0; k < carried_.size(); ++k)
     problem_->edge_points.set_target(static_cast<int>(k), carried_[k].start + t * (carried_[k].end - carried_[k].start));
 }
 
 StepReport CoarseLevel::step(const Dofs& fine_x) {
+  if (ahead_ && ahead_->t == t_) {
+    StepReport report = std::move(ahead_->report);
+    if (!report.failed) x_ = std::move(ahead_->x);  // a failed step left the state as it was
+    ahead_.reset();
+    ++taken_ahead_;
+    return report;
+  }
+  // A step computed for another time (never in a run: its times are known in advance) is dropped;
+  // the multipliers of the coarse solver keep what it did.
+  ahead_.reset();
   if (link_weight_ > 0)
     for (size_t i = 0; i < links_.size(); ++i)
       problem_->link.set_target(static_cast<int>(i), Eigen::Vector3d(vertex_of(fine_x, links_[i].first)));
   return mode_->iterate(x_, false);
+}
+
+void CoarseLevel::run_beside(const std::function<void()>& work, std::optional<double> next_time) {
+  ahead_.reset();
+  if (!next_time || !can_step_ahead()) return work();
+  auto step_ahead = [&] {
+    set_time(*next_time);
+    Ahead a{*next_time, x_, {}};
+    a.report = mode_->iterate(a.x, false);
+    ahead_ = std::move(a);
+  };
+  tbb::parallel_invoke(work, step_ahead);
 }
 
 }  // namespace sdog

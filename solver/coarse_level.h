@@ -12,7 +12,16 @@
 // only. A run that starts from a given fine state
 // (scenario.initial) or takes over from another mode starts the coarse mesh from its restriction,
 // with the coarse folding mode off when the restriction is not folded (see start_from).
+//
+// Stepping ahead: without link targets (link weight 0, the default) a coarse step reads nothing of
+// the fine mesh, only the coarse state and the scenario's targets, so the step of iteration k + 1
+// can be computed during iteration k, beside its fine round (run_beside), and iteration k + 1
+// takes it instead of computing it: the same result as one after the other, bit for bit, since
+// the coarse step always factorises on one BLAS thread (blas_threads.h). The coarse step then
+// costs no wall time where the fine round leaves a core idle.
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,7 +49,16 @@ class CoarseLevel {
   /// One standard iteration on the coarse mesh, with the link targets at the fine twins in `fine_x`
   /// first (when the link weight is positive). Never a polishing iteration: the coarse mesh only
   /// drives the fine one, whose last iteration ends with the final projection (final_projection.h).
+  /// The step computed ahead for this time (run_beside) is taken instead when there is one.
   StepReport step(const Dofs& fine_x);
+  /// Runs `work` and, when `next_time` is given and the level can step ahead (link weight 0), the
+  /// coarse step of the next iteration (targets at `next_time`) beside it, in parallel (TBB). The
+  /// state stays that of this iteration until the next step() takes the step. `work` must not
+  /// touch this level.
+  void run_beside(const std::function<void()>& work, std::optional<double> next_time);
+  bool can_step_ahead() const { return link_weight_ == 0; }
+  /// Steps taken from run_beside so far (tests).
+  int steps_taken_ahead() const { return taken_ahead_; }
 
   /// The coarse state for a fine state that did not come from this level (restriction.h), and a
   /// fresh start of the coarse solver.
@@ -49,7 +67,11 @@ class CoarseLevel {
   const Dofs& state() const { return x_; }
   /// The coarse problem (its targets are those of the last set_time).
   const DogProblem& problem() const { return *problem_; }
-  void set_state(const Dofs& x) { x_ = x; }
+  /// Also drops a step computed ahead (it started from the state replaced).
+  void set_state(const Dofs& x) {
+    x_ = x;
+    ahead_.reset();
+  }
   const Prolongation& prolongation() const { return prolongation_; }
   /// Link pairs: fine vertex links()[i].first has coarse twin links()[i].second.
   const std::vector<std::pair<int, int>>& links() const { return links_; }
@@ -61,6 +83,14 @@ class CoarseLevel {
   std::unique_ptr<DogProblem> problem_;
   std::unique_ptr<StandardMode> mode_;
   Dofs x_;
+  double t_ = 0;  // scenario time of the targets
+  struct Ahead {
+    double t;  // the time it was computed for
+    Dofs x;
+    StepReport report;
+  };
+  std::optional<Ahead> ahead_;  // the next iteration's step, computed by run_beside
+  int taken_ahead_ = 0;
   std::vector<std::pair<int, int>> links_;
   std::vector<PositionConstraint> carried_;  // targets on fine-only vertices: blocks of edge_points
 };

@@ -72,7 +72,10 @@ StepReport CoarseMode::iterate(Dofs& x, bool last) {
   set_fine_link_targets();
   if (options_.prolongate) x = coarse_->prolongation().apply(coarse_->state());
   frozen_ = x;
-  if (!step_patch_round(patches_, x, false, report) || (last && !projection_->project(x, report))) {
+  bool fine_ok = false;
+  coarse_->run_beside([&] { fine_ok = step_patch_round(patches_, x, false, report); },
+                      options_.concurrent_coarse && !last ? next_time_ : std::nullopt);
+  if (!fine_ok || (last && !projection_->project(x, report))) {
     x = x0;
     coarse_->set_state(coarse0);
     report.failure = "fine step: " + report.failure;

@@ -11,8 +11,10 @@
 //      its link vertices (link weight);
 //   4. fine to coarse: the coarse link targets of the next iteration are the new fine positions
 //      (off with fine_to_coarse = false).
-// The coarse mesh and the carrying of position targets to it: coarse_level.h (angle constraints
-// are refused for now, a usage error).
+// With `concurrent_coarse` (the default) the coarse step of the next iteration runs beside the
+// fine round (CoarseLevel::run_beside: without link targets it reads nothing of the fine mesh), with
+// the same result as the steps one after another.
+// The coarse mesh and the carrying of position targets to it: coarse_level.h.
 #include <memory>
 
 #include "geometry/dog_model.h"
@@ -34,6 +36,9 @@ struct CoarseOptions {
   double link_weight = 0;
   bool fine_to_coarse = true;
   bool prolongate = false;  ///< start each fine step from the coarse state carried to the fine mesh
+  /// The next iteration's coarse step beside this one's fine round (coarse_level.h, "Stepping
+  /// ahead"); the results do not depend on it. Only without link targets (link weight 0).
+  bool concurrent_coarse = true;
   std::string validate() const;
 };
 
@@ -46,6 +51,7 @@ class CoarseMode : public Mode {
   ~CoarseMode() override;
   const char* name() const override { return "coarse"; }
   void set_time(double t) override;
+  void set_next_time(std::optional<double> t) override { next_time_ = t; }
   StepReport iterate(Dofs& x, bool last) override;
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
   void start_from(const Dofs& x) override;
@@ -61,6 +67,7 @@ class CoarseMode : public Mode {
   Scenario scenario_;
   CoarseOptions options_;
   std::unique_ptr<CoarseLevel> coarse_;
+  std::optional<double> next_time_;  // of the next iteration, when the run has one
   LinearPointTerm crease_targets_{"crease_targets"};  // per fine crease point copy
   std::vector<CurveStencil> crease_stencils_;         // per block of crease_targets_
   Dofs frozen_;  // the fine state before the patch step: the other side of cross-patch blocks

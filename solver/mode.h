@@ -1,6 +1,7 @@
 #pragma once
 // A solver mode: how one iteration of a deformation run is computed. Modes share the iteration
 // report, the scenario and the diagnostics; the run driver (run.h) is mode independent.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ class Mode {
   /// it, for its standard finish (two_level_mode.h).
   virtual void set_iterations_left(int /*left*/) {}
   static constexpr int kOpenEnded = -1;
+  /// Called before every iteration (after set_time): the scenario time of the next iteration, or
+  /// nothing in a run's last one. The two-resolution modes compute the next coarse step ahead,
+  /// beside this iteration's fine round (coarse_level.h).
+  virtual void set_next_time(std::optional<double> /*t*/) {}
   /// Takes x as the state the next iteration starts from although the mode did not compute it
   /// (another mode ran before it): a mode with state of its own besides x (the coarse positions of
   /// the two-resolution modes) derives that state from x. Fresh modes of the other kinds need

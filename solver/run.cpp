@@ -12,6 +12,7 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
   report.t = scenario.time_of(iteration);
   mode.set_iterations_left(iterations_left);
   mode.set_time(report.t);
+  mode.set_next_time(iterations_left == 0 ? std::nullopt : std::optional<double>(scenario.time_of(iteration + 1)));
   const auto t0 = Clock::now();
   report.step = mode.iterate(x, iterations_left == 0);
   report.iteration_ms = ms_since(t0);

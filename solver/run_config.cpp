@@ -81,10 +81,11 @@ void apply_patch_solver(const Field& f, SubsolverOptions& o) {
 }
 
 void apply_coarse(const Field& f, CoarseOptions& o) {
-  f.expect_object({"link_weight", "fine_to_coarse", "prolongate"});
+  f.expect_object({"link_weight", "fine_to_coarse", "prolongate", "concurrent_coarse"});
   if (f.has("prolongate")) o.prolongate = f["prolongate"].boolean();
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
   if (f.has("fine_to_coarse")) o.fine_to_coarse = f["fine_to_coarse"].boolean();
+  if (f.has("concurrent_coarse")) o.concurrent_coarse = f["concurrent_coarse"].boolean();
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
@@ -356,7 +357,8 @@ nlohmann::json to_json(const RunConfig& c) {
             {"max_outer", c.subsolvers.patch.max_outer},
             {"max_inner", c.subsolvers.patch.max_inner}}},
           {"coarse",
-           {{"link_weight", c.coarse.link_weight}, {"fine_to_coarse", c.coarse.fine_to_coarse}, {"prolongate", c.coarse.prolongate}}},
+           {{"link_weight", c.coarse.link_weight}, {"fine_to_coarse", c.coarse.fine_to_coarse}, {"prolongate", c.coarse.prolongate},
+            {"concurrent_coarse", c.coarse.concurrent_coarse}}},
           {"positions", positions},
           {"angles", angles},
           {"admm",

@@ -16,8 +16,9 @@ struct StandardOptions {
   SqpOptions sqp;
   bool folding = true;
   double max_fold_bias = 1e14;
-  /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The two-level
-  /// mode's coarse step, which runs beside the patch solves, uses 1.
+  /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
+  /// step of the two-resolution modes, which may run beside the patch solves, uses 1
+  /// (coarse_level.h).
   int blas_threads = 0;
   std::string validate() const;
 };

@@ -1,7 +1,5 @@
 #include "solver/two_level_mode.h"
 
-#include <tbb/parallel_invoke.h>
-
 #include <cmath>
 
 #include "solver/final_projection.h"
@@ -11,12 +9,6 @@ namespace {
 
 SubsolverOptions with_fold_sharpness(SubsolverOptions o, double k) {
   o.fold_sharpness = k;
-  return o;
-}
-
-// The coarse step beside the patch solves takes one BLAS thread, as each patch does.
-StandardOptions for_coarse_step(StandardOptions o, const TwoLevelOptions& t) {
-  if (t.concurrent_coarse) o.blas_threads = 1;
   return o;
 }
 
@@ -46,7 +38,7 @@ TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenar
       scenario_(scenario),
       standard_(standard),
       options_(options),
-      coarse_(fine, model, scenario, options.link_weight, for_coarse_step(standard, options), "twolevel",
+      coarse_(fine, model, scenario, options.link_weight, standard, "twolevel",
               options.fold_sharpness),
       fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
@@ -56,12 +48,10 @@ void TwoLevelMode::set_time(double t) {
   fine_.set_time(t);
 }
 
-void TwoLevelMode::start_from(const Dofs& x) {
-  coarse_.start_from(x);
-  pending_.resize(0);
-}
+void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
 
 void TwoLevelMode::set_iterations_left(int left) {
+  iterations_left_ = left;
   if (finish_ || left == kOpenEnded || left >= options_.standard_finish) return;
   // As a switch to the standard mode (mode_factory.h): it installs the scenario's blocks in the
   // fine problem, whose weights the two-level mode left as configured. Fold retries only up to the
@@ -88,10 +78,6 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
 
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   if (finish_) return finish_iteration(x, last);
-  return options_.concurrent_coarse ? concurrent_iteration(x, last) : sequential_iteration(x, last);
-}
-
-StepReport TwoLevelMode::sequential_iteration(Dofs& x, bool last) {
   const Dofs x0 = x, c0 = coarse_.state();
   StepReport coarse = coarse_.step(x);
   if (coarse.failed) {
@@ -100,37 +86,17 @@ StepReport TwoLevelMode::sequential_iteration(Dofs& x, bool last) {
   }
   const Prolongation& P = coarse_.prolongation();
   x += P.apply(coarse_.state()) - P.apply(c0);
-  StepReport report = fine_.iterate(x, last);
+  // The next iteration's coarse step beside the round, unless there is none: the run's last
+  // iteration, or the next one belongs to the standard finish.
+  const bool next_is_two_level = iterations_left_ == kOpenEnded || iterations_left_ - 1 >= options_.standard_finish;
+  StepReport report;
+  coarse_.run_beside([&] { report = fine_.iterate(x, last); },
+                     options_.concurrent_coarse && !last && next_is_two_level ? next_time_ : std::nullopt);
   if (report.failed) {
     x = x0;
     coarse_.set_state(c0);
     report.failure = "fine step: " + report.failure;
     return report;
-  }
-  add_coarse(coarse, report);
-  return report;
-}
-
-StepReport TwoLevelMode::concurrent_iteration(Dofs& x, bool last) {
-  const Dofs x0 = x, c0 = coarse_.state();
-  if (pending_.size() == x.size()) x += pending_;
-  StepReport coarse, report;
-  if (last) {
-    report = fine_.iterate(x, last);  // no next iteration to carry a correction to: no coarse step
-  } else {
-    const Dofs start = x;  // the coarse step's link targets; the round writes x meanwhile
-    tbb::parallel_invoke([&] { coarse = coarse_.step(start); }, [&] { report = fine_.iterate(x, last); });
-  }
-  if (coarse.failed || report.failed) {
-    x = x0;
-    coarse_.set_state(c0);
-    StepReport& failed = coarse.failed ? coarse : report;
-    failed.failure = (coarse.failed ? "coarse step: " : "fine step: ") + failed.failure;
-    return failed;
-  }
-  if (!last) {
-    const Prolongation& P = coarse_.prolongation();
-    pending_ = P.apply(coarse_.state()) - P.apply(c0);
   }
   add_coarse(coarse, report);
   return report;

@@ -7,11 +7,12 @@
 //      x += P (c_new - c_old) (prolongation.h);
 //   3. fine step: one block-Jacobi round of the fine patches in parallel (subsolvers_mode.h), which
 //      restores the fine DOG constraints and settles the fine detail, the stitching and the folds.
-// Concurrent coarse step (`concurrent_coarse`, the default): the coarse step of an iteration runs
-// beside its fine round, on the other core, and its correction is applied at the start of the
-// next iteration (a lag of one iteration); the coarse step then costs no wall time when the
-// patches leave a core free. With a positive link weight the coarse step reads the fine state the
-// round starts from. Off: the three steps one after another, as listed.
+// Concurrent coarse step (`concurrent_coarse`, the default): the coarse step of the next iteration
+// runs beside this iteration's fine round, on the other core (CoarseLevel::run_beside: without link
+// targets the coarse step reads nothing of the fine mesh), and the next iteration takes it: the
+// same result as the three steps one after another, as listed, but the coarse step costs no wall
+// time where the patches leave a core idle. With a positive link weight the coarse step reads the
+// fine state, and the steps run one after another.
 // Block Jacobi alone hands a drag on by one patch per iteration and lags far behind moving
 // targets; the correction moves the whole sheet at once. The coarse state enters the fine problem
 // only as a displacement, never as a target, so once the coarse mesh settles the fine iteration is
@@ -60,7 +61,8 @@ struct TwoLevelOptions {
   /// multiple of its base weight; 1: no retries. The standard mode's 1e14 wrecked sheets handed
   /// over with unfolded sites (valley 61x61: objective 6.4e9 in the first finishing iteration).
   double finish_fold_bias_cap = 10;
-  /// The coarse step beside the fine round, its correction one iteration later (see above).
+  /// The next iteration's coarse step beside this one's fine round (see above); the results do
+  /// not depend on it.
   bool concurrent_coarse = true;
   std::string validate() const;
 };
@@ -75,6 +77,7 @@ class TwoLevelMode : public Mode {
   StepReport iterate(Dofs& x, bool last) override;
   /// Within the last standard_finish iterations of a run the standard finish takes over.
   void set_iterations_left(int left) override;
+  void set_next_time(std::optional<double> t) override { next_time_ = t; }
   /// True once the standard finish computes the iterations.
   bool finishing() const { return finish_ != nullptr; }
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
@@ -85,8 +88,6 @@ class TwoLevelMode : public Mode {
 
  private:
   StepReport finish_iteration(Dofs& x, bool last);
-  StepReport sequential_iteration(Dofs& x, bool last);
-  StepReport concurrent_iteration(Dofs& x, bool last);
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions standard_;
@@ -94,7 +95,8 @@ class TwoLevelMode : public Mode {
   CoarseLevel coarse_;
   SubsolversMode fine_;
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
-  Dofs pending_;  // concurrent coarse step: the correction of the last coarse step, not yet applied
+  int iterations_left_ = kOpenEnded;      // after the current iteration
+  std::optional<double> next_time_;       // of the next iteration, when the run has one
 };
 
 }  // namespace sdog

@@ -221,7 +221,9 @@ INSTANTIATE_TEST_SUITE_P(
                       ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
                                  {"$.twolevel.fold_sharpness"}},
                       ConfigCase{"concurrent_coarse_not_boolean", R"({"twolevel": {"concurrent_coarse": 1}})",
-                                 {"$.twolevel.concurrent_coarse"}}));
+                                 {"$.twolevel.concurrent_coarse"}},
+                      ConfigCase{"coarse_concurrent_coarse_not_boolean", R"({"coarse": {"concurrent_coarse": "yes"}})",
+                                 {"$.coarse.concurrent_coarse"}}));
 
 TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   const std::string dir = test::temp_dir("config_good");

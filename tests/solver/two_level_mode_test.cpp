@@ -10,6 +10,7 @@
 
 #include "geometry/dog_model.h"
 #include "solver/mode_factory.h"
+#include "solver/run.h"
 #include "solver/subsolvers_mode.h"
 #include "solver/two_level_mode.h"
 #include "tests/solver/run_recorder.h"
@@ -109,53 +110,55 @@ TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
   EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
 }
 
-// $.twolevel.concurrent_coarse (default on): the coarse step runs beside the fine round and its
-// correction moves the fine sheet at the start of the next iteration. So the first iteration is a
-// plain block-Jacobi round, and the second is a round from its result moved by the first coarse
-// step's displacement, carried to the fine mesh.
-TEST(TwoLevelMode, TheConcurrentCoarseStepCorrectsOneIterationLater) {
-  const RunConfig config = no_finish(test::short_run(20, 0));
-  DogProblem fine(model().fine, model().fine_topology, config.weights);
-  DogProblem plain(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  TwoLevelMode mode(fine, model(), scenario, config.twolevel, config.standard, config.subsolvers);
-  SubsolverOptions jacobi_options = config.subsolvers;
-  jacobi_options.fold_sharpness = config.twolevel.fold_sharpness;
-  SubsolversMode jacobi(plain, scenario, jacobi_options, config.standard.sqp);
-  const Prolongation& P = mode.coarse_level().prolongation();
-
-  Dofs x = scenario.start(model().fine), y = x;
-  const Dofs c0 = mode.coarse_state();
-  for (Mode* m : {static_cast<Mode*>(&mode), static_cast<Mode*>(&jacobi)}) m->set_time(scenario.time_of(1));
-  ASSERT_FALSE(mode.iterate(x, false).failed);
-  ASSERT_FALSE(jacobi.iterate(y, false).failed);
-  EXPECT_TRUE(x == y) << "the first iteration has no correction yet";
-  const Dofs c1 = mode.coarse_state();
-  ASSERT_GT((c1 - c0).norm(), 1e-3) << "the coarse step should have moved the coarse mesh";
-
-  for (Mode* m : {static_cast<Mode*>(&mode), static_cast<Mode*>(&jacobi)}) m->set_time(scenario.time_of(2));
-  y += P.apply(c1) - P.apply(c0);
-  ASSERT_FALSE(mode.iterate(x, false).failed);
-  ASSERT_FALSE(jacobi.iterate(y, false).failed);
-  EXPECT_TRUE(x == y) << "the second iteration starts from the first moved by the first coarse step";
-  EXPECT_GT((mode.coarse_state() - c1).norm(), 1e-3);
-}
-
-// Off: the coarse step, the correction and the round one after another in the same iteration;
-// the runs differ from the concurrent ones but keep the constraints and follow the drag alike.
-TEST(TwoLevelMode, TheSequentialVariantCorrectsInTheSameIteration) {
-  RunConfig config = no_finish(test::short_run(60, 20));
-  const test::RunResult concurrent = run("twolevel", config, 2);
-  config.twolevel.concurrent_coarse = false;
-  const test::RunResult sequential = run("twolevel", config, 2);
-  for (const auto* r : {&concurrent, &sequential}) {
-    ASSERT_FALSE(r->summary.failed) << r->summary.failure;
-    for (const auto& rep : r->reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
-    EXPECT_LT(r->reports.back().diagnostics.dog_max, 1e-6);
+// $.twolevel.concurrent_coarse (default on): the next iteration's coarse step runs beside this
+// iteration's fine round and the next iteration takes it (CoarseLevel::run_beside). Without link
+// targets the coarse step reads nothing of the fine mesh, so the runs are those of the steps one
+// after another, bit for bit: the fine sheet and the coarse mesh after every iteration. Every
+// iteration but the first takes a step computed ahead, up to the standard finish; with link
+// targets none does.
+TEST(TwoLevelMode, TheCoarseStepComputedAheadChangesNoResult) {
+  struct Run {
+    std::vector<Dofs> fine, coarse;
+    int taken_ahead = 0;
+  };
+  auto run = [](RunConfig config, bool concurrent) {
+    config.twolevel.concurrent_coarse = concurrent;
+    DogProblem problem(model().fine, model().fine_topology, config.weights);
+    const Scenario scenario = make_scenario(config, model().fine);
+    TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
+    Run r;
+    Dofs x = scenario.start(model().fine);
+    const int total = config.iterations + config.hold;
+    for (int k = 1; k <= total; ++k) {
+      const IterationReport report = run_iteration(mode, problem, scenario, x, k, total - k);
+      EXPECT_FALSE(report.step.failed) << report.step.failure;
+      r.fine.push_back(x);
+      r.coarse.push_back(mode.coarse_state());
+    }
+    r.taken_ahead = mode.coarse_level().steps_taken_ahead();
+    return r;
+  };
+  RunConfig config = no_finish(test::short_run(14, 4));
+  ASSERT_TRUE(config.twolevel.concurrent_coarse);  // the default
+  const Run ahead = run(config, true), sequential = run(config, false);
+  EXPECT_EQ(ahead.taken_ahead, 17);
+  EXPECT_EQ(sequential.taken_ahead, 0);
+  ASSERT_EQ(ahead.fine.size(), 18u);
+  for (size_t k = 0; k < ahead.fine.size(); ++k) {
+    EXPECT_TRUE(ahead.fine[k] == sequential.fine[k]) << "iteration " << k + 1;
+    EXPECT_TRUE(ahead.coarse[k] == sequential.coarse[k]) << "iteration " << k + 1;
   }
-  const double a = concurrent.reports.back().diagnostics.objective, b = sequential.reports.back().diagnostics.objective;
-  EXPECT_NE(concurrent.reports.front().diagnostics.objective, sequential.reports.front().diagnostics.objective);
-  EXPECT_LT(std::abs(a - b), 0.25 * b) << "concurrent " << a << ", sequential " << b;
+  // With the standard finish (its last 10 of 18 iterations): ahead up to the finish only.
+  config.twolevel.standard_finish = 10;
+  const Run finished = run(config, true), finished_sequential = run(config, false);
+  EXPECT_EQ(finished.taken_ahead, 7);
+  EXPECT_TRUE(finished.fine.back() == finished_sequential.fine.back());
+  // With link targets the coarse step reads the fine state: nothing is computed ahead.
+  config = no_finish(test::short_run(6, 0));
+  config.twolevel.link_weight = 0.1;
+  const Run linked = run(config, true);
+  EXPECT_EQ(linked.taken_ahead, 0);
+  EXPECT_TRUE(linked.fine.back() == run(config, false).fine.back());
 }
 
 // The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a run are

@@ -331,10 +331,12 @@ class StudioTest : public QObject {
     auto* sweep = qobject_cast<QComboBox*>(form->field("patch sweep"));
     auto* sharpness = qobject_cast<QDoubleSpinBox*>(form->field("twolevel fold sharpness"));
     auto* concurrent = qobject_cast<QCheckBox*>(form->field("twolevel concurrent coarse step"));
+    auto* coarse_concurrent = qobject_cast<QCheckBox*>(form->field("coarse concurrent coarse step"));
     QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && sharpness && concurrent &&
-            !form->field("no such field"));
+            coarse_concurrent && !form->field("no such field"));
     QCOMPARE(sharpness->value(), window_->run_config().twolevel.fold_sharpness);
     QCOMPARE(concurrent->isChecked(), window_->run_config().twolevel.concurrent_coarse);
+    QCOMPARE(coarse_concurrent->isChecked(), window_->run_config().coarse.concurrent_coarse);
     QCOMPARE(isometry->value(), window_->run_config().weights.isometry);
     QCOMPARE(links->isChecked(), window_->run_config().coarse.fine_to_coarse);
     QVERIFY(!panel->apply_button()->isEnabled());
@@ -347,6 +349,7 @@ class StudioTest : public QObject {
     sweep->setCurrentText("colours");
     sharpness->setValue(250);
     concurrent->setChecked(false);
+    coarse_concurrent->setChecked(false);
     QVERIFY(panel->apply_button()->isEnabled());
     QCOMPARE(window_->run_config().weights.isometry, 20000.0);  // not applied yet
     window_->step(2);
@@ -362,6 +365,7 @@ class StudioTest : public QObject {
     QCOMPARE(applied.subsolvers.sweep, std::string("colours"));
     QCOMPARE(applied.twolevel.fold_sharpness, 250.0);
     QCOMPARE(applied.twolevel.concurrent_coarse, false);
+    QCOMPARE(applied.coarse.concurrent_coarse, false);
     QCOMPARE(applied.scenario, std::string("corners"));  // the rest is kept
     QVERIFY(!panel->apply_button()->isEnabled());
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again

@@ -140,13 +140,16 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
            "coarse mode: the coarse mesh is pulled towards the fine one too (off: --no-fine-to-coarse)");
   add_bool(f, "prolongate", [](RunConfig& c) -> bool& { return c.coarse.prolongate; },
            "coarse mode: each fine step starts from the coarse state carried to the fine mesh");
+  add_bool(f, "coarse concurrent coarse step", [](RunConfig& c) -> bool& { return c.coarse.concurrent_coarse; },
+           "coarse mode: the next iteration's coarse step runs beside this one's fine round (same results; "
+           "off: one after the other)");
   add_double(f, "twolevel link weight", [](RunConfig& c) -> double& { return c.twolevel.link_weight; }, 0, 1e9, 6,
              "twolevel mode: pull of the coarse link vertices towards their fine twins");
   add_double(f, "twolevel fold sharpness", [](RunConfig& c) -> double& { return c.twolevel.fold_sharpness; }, 1e-3,
              1e6, 3, "twolevel mode: sharpness k of the fold bias tanh(k B.e) in its coarse step and patches");
   add_bool(f, "twolevel concurrent coarse step", [](RunConfig& c) -> bool& { return c.twolevel.concurrent_coarse; },
-           "twolevel mode: the coarse step runs beside the fine round and its correction applies one iteration "
-           "later (off: coarse step, correction and round one after another)");
+           "twolevel mode: the next iteration's coarse step runs beside this one's fine round (same results; "
+           "off: one after the other)");
   layout->addStretch(1);
   set_config(config);
 }
