@@ -105,10 +105,15 @@ nlohmann::json row_json(const CompareRow& r) {
   return j;
 }
 
-// A fixed colour per mode name, so that every plot of a comparison (and of later ones) agrees.
+// A fixed colour per mode name, so that every plot of a comparison (and of later ones) agrees: the
+// palette's colours in the order of the modes, except that the sixth mode (coarse) takes the fifth
+// colour (orange) and the fifth mode the sixth (sky blue), which is hard to tell from the standard
+// mode's blue, and coarse is usually drawn beside it.
 vis::Rgb mode_color(const std::string& mode) {
   const auto names = mode_names();
-  return vis::series_color(static_cast<int>(std::find(names.begin(), names.end(), mode) - names.begin()));
+  int index = static_cast<int>(std::find(names.begin(), names.end(), mode) - names.begin());
+  if (index == 4 || index == 5) index = 9 - index;
+  return vis::series_color(index);
 }
 
 vis::ChartSeries mode_series(const CompareRow& r) {
