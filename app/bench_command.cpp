@@ -90,7 +90,7 @@ void register_bench_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
   cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
   cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
-  cmd->add_option("--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
+  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
   cmd->add_option("--iters", a->iterations, "moving iterations of the protocol (hold: a fifth of that)")
       ->check(CLI::Range(1, 100000))

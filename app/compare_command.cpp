@@ -291,7 +291,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
-  cmd->add_option("--patterns-dir", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
+  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
   a->iterations_opt = cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
                           ->check(CLI::Range(0, 1000000))

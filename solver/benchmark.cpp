@@ -127,9 +127,7 @@ std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mo
   for (const auto& [name, resolutions] : grid) {
     const std::string path = dir + "/" + name + ".svg";
     if (!std::filesystem::exists(path))
-      throw InputError(path +
-                       ": thesis pattern not found (pass the folder of the thesis patterns: --patterns of sdog bench, "
-                       "--patterns-dir of sdog compare)");
+      throw InputError(path + ": thesis pattern not found (pass the folder of the thesis patterns with --patterns-dir)");
     for (const char* res : resolutions) cases.push_back({path, res, mode});
   }
   return cases;

@@ -32,7 +32,7 @@ struct CoarseOptions {
   /// The thesis's ftc_weight (0.1 there). 0 (the default since session 6): no link constraints,
   /// the fine mesh follows the coarse one through the crease targets only; on the thesis grid
   /// this ended lower than 0.1 and 0.01 in 13 of 16 cases (median ratio to standard 6.4 against
-  /// 31) and never failed (README, "The coarse mode's link weight").
+  /// 31) and never failed (docs/solver-modes.md, "The coarse mode").
   double link_weight = 0;
   bool fine_to_coarse = true;
   bool prolongate = false;  ///< start each fine step from the coarse state carried to the fine mesh

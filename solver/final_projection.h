@@ -8,7 +8,8 @@
 // Why not a polishing patch round: the patches polish with their neighbours frozen and reach the
 // final tolerance only through large exact-Hessian steps, which tipped fine fold sites across
 // their crease and undid the run's result (twolevel, k = 100: 4_corners 81x81 objective 3.65 at
-// iteration 299 and 19.7 after the polish, 5.6 s; README, "The last iteration of the patch modes").
+// iteration 299 and 19.7 after the polish, 5.6 s; docs/solver-modes.md, "The last iteration of
+// the patch modes").
 // The projection is the smallest move onto the constraints: about sqrt of the residual it removes
 // near flat regions, where the constraints are nearly quadratic in the normal motion.
 #include <memory>

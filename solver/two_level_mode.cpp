@@ -59,7 +59,8 @@ void TwoLevelMode::set_iterations_left(int left) {
   // wrecked the sheet (valley 61x61: objective 6.4e9 in the first finishing iteration, 30.6 at the
   // end, against 1.59 without retries), while one step of x10 refolds sites that are close (30
   // iterations: parallel_curves_4 27x45 folded at 3.14 instead of unfolded at 3.15, valley 41x41
-  // folded at 2.64 instead of unfolded at 6.76; README).
+  // folded at 2.64 instead of unfolded at 6.76; docs/solver-modes.md, "The two-level mode's
+  // standard finish").
   StandardOptions options = standard_;
   options.max_fold_bias = problem_.weights.fold_bias * options_.finish_fold_bias_cap;
   finish_ = std::make_unique<StandardMode>(problem_, scenario_, options);

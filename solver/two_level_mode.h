@@ -25,9 +25,9 @@
 // `finish_fold_bias_cap` times the base fold-bias weight), as if the run switched to the standard
 // mode there; the coarse mesh stays where it was. The last of them is an ordinary standard
 // iteration and the projection onto the constraints (as the patch modes' last iteration), not the
-// standard's polish. Block Jacobi
-// converges slowly on a held state: on the thesis grid 30 such iterations bring the geometric-mean
-// objective ratio to the standard mode from 2.17 to 1.04 (README, "The two-level mode").
+// standard's polish. Block Jacobi converges slowly on a held state: on the thesis grid 30 such
+// iterations bring the geometric-mean objective ratio to the standard mode from 2.17 to 1.04
+// (docs/solver-modes.md, "The two-level mode's standard finish").
 #include <memory>
 
 #include "geometry/dog_model.h"
@@ -42,7 +42,7 @@ struct TwoLevelOptions {
   /// Pull of the coarse link vertices towards their fine twins. 0 (the default): the coarse mesh
   /// runs on its own and only drives the fine one; any pull closes a feedback loop (the coarse
   /// step follows the fine motion, which the correction then adds to the fine mesh again) that
-  /// made the flattening test diverge with 0.1 (README, "The two-level mode").
+  /// made the flattening test diverge with 0.1 (docs/solver-modes.md, "The two-level mode").
   double link_weight = 0;
   /// Sharpness k of the fold bias (fold_bias.h) in the coarse step and the fine patches; the run's
   /// objective and fold test keep the standard k = 1000. At 1000 the correction tips fine fold
@@ -50,12 +50,13 @@ struct TwoLevelOptions {
   /// cannot bring them back (4_corners 41x41: 11 of 120 sites stay unfolded, fold bias 44 of an
   /// objective of 47); at 100 they keep a slope and refold. Thesis grid, final objective over the
   /// standard's: geometric mean 2.17 with 100 against 4.15 with 1000, better in 11 of 16 cases
-  /// (README, "The two-level mode").
+  /// (docs/solver-modes.md, "The two-level mode").
   double fold_sharpness = 100;
   /// Iterations at the end of a run computed by the standard mode (see above); 0: none. Thesis
   /// grid, objective over the standard's (geometric mean / cases within 2% and folded / folded):
   /// 10 iterations without fold retries 1.09 / 6 / 12; 30 without 1.10 / 8 / 11 (valley 41x41
-  /// ends with a site stuck across its crease); 30 with retries up to 10x 1.04 / 10 / 15 (README).
+  /// ends with a site stuck across its crease); 30 with retries up to 10x 1.04 / 10 / 15
+  /// (docs/solver-modes.md, "The two-level mode's standard finish").
   int standard_finish = 30;
   /// The finish's fold retries (standard_mode.h) raise the fold-bias weight at most to this
   /// multiple of its base weight; 1: no retries. The standard mode's 1e14 wrecked sheets handed

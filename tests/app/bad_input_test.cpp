@@ -121,6 +121,19 @@ TEST(BadInputFiles, UnwritableOutputDirectory) {
   EXPECT_NE(r.err.find(blocker), std::string::npos) << r.err;
 }
 
+// The thesis grid's folder: one option name for both commands (and the other spelling accepted),
+// a missing folder named in one line before any work starts.
+TEST(BadInputFiles, MissingThesisPatternsFolder) {
+  const std::string out = test::temp_dir("grid_missing");
+  for (const std::string command : {std::string("bench --thesis-grid"), "compare --thesis-grid --modes standard --out " + out})
+    for (const char* option : {"--patterns-dir", "--patterns"}) {
+      const auto r = test::run_sdog(command + " " + option + " /nonexistent/thesis");
+      EXPECT_EQ(r.code, 1) << command << " " << option << ": " << r.err;
+      EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+      EXPECT_NE(r.err.find("/nonexistent/thesis/1_curve.svg: thesis pattern not found"), std::string::npos) << r.err;
+    }
+}
+
 TEST(BadInputFiles, MissingResolutionValueIsAUsageError) {
   const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res");
   EXPECT_EQ(r.code, 2);

@@ -80,7 +80,7 @@ TEST(CoarseMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   ASSERT_EQ(r.result.reports.size(), 15u);
   test::expect_dog_and_patch_reports(r.result, model().fine.patch_count());
   // The standard solver's end bar is 1e-6; the last polish of one patch here stops at 3.6e-6
-  // (an open point of issue 4, see README "Coarse mode").
+  // (an open point of issue 4, see README "The coarse mode").
   EXPECT_LT(r.result.reports.back().diagnostics.dog_max, 1e-5);
   // The dragged corner moved the fine mesh through the coarse one.
   EXPECT_GT(r.result.reports.back().diagnostics.terms[kBending], 1e-3);
