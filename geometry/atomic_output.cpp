@@ -20,12 +20,25 @@ OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
     created_.push_back(p.string());
     if (p == p.parent_path()) break;
   }
+  // A constructor that throws runs no destructor: remove what it created before throwing.
+  auto fail = [&](const std::string& message) {
+    for (const auto& d : created_) fs::remove(d, ec);
+    throw OutputError(message);
+  };
   fs::create_directories(dir_, ec);
-  if (ec) throw OutputError(dir_ + ": cannot create the output directory (" + ec.message() + ")");
-  if (!fs::is_directory(dir_)) throw OutputError(dir_ + ": exists and is not a directory");
+  if (ec) fail(dir_ + ": cannot create the output directory (" + ec.message() + ")");
+  if (!fs::is_directory(dir_)) fail(dir_ + ": exists and is not a directory");
   if (::access(dir_.c_str(), W_OK) != 0)
-    throw OutputError(dir_ + ": the output directory is not writable (" + std::strerror(errno) +
-                      ")");
+    fail(dir_ + ": the output directory is not writable (" + std::strerror(errno) + ")");
+  // access() says yes to root everywhere, also where no file can be made (/proc, /sys): create
+  // and remove a file, so that such a directory is refused now and not after the work.
+  const std::string probe = (fs::path(dir_) / (".sdog-probe." + std::to_string(::getpid()))).string();
+  std::ofstream test(probe, std::ios::binary);
+  test << 'x';
+  test.close();
+  const std::string why = std::strerror(errno);
+  fs::remove(probe, ec);
+  if (!test) fail(dir_ + ": the output directory is not writable (" + why + ")");
 }
 
 OutputSet::~OutputSet() {
@@ -53,7 +66,9 @@ void OutputSet::write_text(const std::string& name, const std::string& text) {
   std::ofstream out(tmp, std::ios::binary);
   out << text;
   out.close();
-  if (!out) throw OutputError(tmp + ": cannot write (" + std::strerror(errno) + ")");
+  if (!out)
+    throw OutputError((fs::path(dir_) / name).string() + ": cannot write (" + std::strerror(errno) + "; writing " +
+                      tmp + ")");
 }
 
 std::vector<std::string> OutputSet::commit() {

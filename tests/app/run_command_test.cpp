@@ -287,6 +287,22 @@ TEST(RunCommand, UnwritableOutputFailsBeforeTheWork) {
   test::expect_unwritable_output_fails(kSmallRun, "run_unwritable");
 }
 
+TEST(BenchCommand, UnwritableCsvFailsBeforeTheWork) {
+  const std::string dir = test::temp_dir("bench_unwritable");
+  test::write_file(dir, "file", "x");
+  auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv " + dir +
+                          "/file/bench.csv");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/file"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("15x11"), std::string::npos) << "benchmarked before failing:\n" << r.out;
+  // A directory that passes access() for root but takes no files (/proc): refused before the work too.
+  r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv /proc/bench.csv");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("/proc: the output directory is not writable"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("15x11"), std::string::npos) << "benchmarked before failing:\n" << r.out;
+}
+
 TEST(BenchCommand, WritesTheTableAsCsv) {
   const std::string dir = test::temp_dir("bench");
   const auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --modes standard --iters 12 --repeat 2 --csv " +

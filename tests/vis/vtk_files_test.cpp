@@ -88,5 +88,17 @@ TEST(VtkFiles, UnwritableDirectoryIsAnOutputError) {
   EXPECT_THROW(OutputSet out(file + "/sub"), OutputError);
 }
 
+// A directory where no file can be created although access() allows it (as for root in /proc) is
+// refused when the set is made, not when the first file is written.
+TEST(VtkFiles, DirectoryWhereNoFileCanBeMadeIsRefusedAtOnce) {
+  if (!std::filesystem::is_directory("/proc/self")) GTEST_SKIP() << "no /proc on this machine";
+  try {
+    OutputSet out("/proc");
+    FAIL() << "/proc was accepted as an output directory";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/proc: the output directory is not writable"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace sdog
