@@ -111,9 +111,9 @@ nlohmann::json row_json(const CompareRow& r) {
 // mode's blue, and coarse is usually drawn beside it.
 vis::Rgb mode_color(const std::string& mode) {
   const auto names = mode_names();
-  int index = static_cast<int>(std::find(names.begin(), names.end(), mode) - names.begin());
-  if (index == 4 || index == 5) index = 9 - index;
-  return vis::series_color(index);
+  const int index = static_cast<int>(std::find(names.begin(), names.end(), mode) - names.begin());
+  const int kOrange = 4, kSkyBlue = 5;
+  return vis::series_color(index == kSkyBlue ? kOrange : index == kOrange ? kSkyBlue : index);
 }
 
 vis::ChartSeries mode_series(const CompareRow& r) {

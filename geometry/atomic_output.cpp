@@ -28,10 +28,9 @@ OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
   fs::create_directories(dir_, ec);
   if (ec) fail(dir_ + ": cannot create the output directory (" + ec.message() + ")");
   if (!fs::is_directory(dir_)) fail(dir_ + ": exists and is not a directory");
-  if (::access(dir_.c_str(), W_OK) != 0)
-    fail(dir_ + ": the output directory is not writable (" + std::strerror(errno) + ")");
-  // access() says yes to root everywhere, also where no file can be made (/proc, /sys): create
-  // and remove a file, so that such a directory is refused now and not after the work.
+  // Writable means a file can be made in it: create and remove one, so that an unusable directory
+  // is refused now and not after the work (access() would say yes to root everywhere, also in
+  // /proc or /sys).
   const std::string probe = (fs::path(dir_) / (".sdog-probe." + std::to_string(::getpid()))).string();
   std::ofstream test(probe, std::ios::binary);
   test << 'x';
