@@ -54,16 +54,19 @@ void SymmetricBlockMatrix::set_zero() {
 
 void SymmetricBlockMatrix::add_dense(const int* vertices, int k, const double* H, double scale) {
   double* values = m_.valuePtr();
+  const int* outer = m_.outerIndexPtr();
   const int cols = 3 * k;
   for (int i = 0; i < k; ++i)
     for (int j = 0; j < k; ++j) {
       const int a = vertices[i], b = vertices[j];
       if (a < b) continue;
+      // Column (b, c) holds the block's rows consecutively: from row c of the diagonal block, or
+      // from row 0 of the off-diagonal block at the same place in all three columns (slot()).
+      const int offset = a == b ? 0 : slot(a, b, 0, 0) - outer[3 * b];
       for (int c = 0; c < 3; ++c) {
-        // Slots of column (b, c) are consecutive in r for a given a.
-        const int first = slot(a, b, a == b ? c : 0, c);
-        for (int r = (a == b ? c : 0); r < 3; ++r)
-          values[first + r - (a == b ? c : 0)] += scale * H[(3 * i + r) * cols + 3 * j + c];
+        const int r0 = a == b ? c : 0;
+        double* column = values + outer[3 * b + c] + (a == b ? 0 : offset - c);
+        for (int r = r0; r < 3; ++r) column[r - r0] += scale * H[(3 * i + r) * cols + 3 * j + c];
       }
     }
 }

@@ -17,6 +17,12 @@ struct CosineDerivatives {
 
 CosineDerivatives cosine_derivatives(const Eigen::Vector3d& u, const Eigen::Vector3d& v, bool second);
 
+/// The value alone, computed as cosine_derivatives computes it (bit for bit): constraint values
+/// are evaluated many times per iteration (line searches, restoration), without derivatives.
+inline double cosine_value(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+  return u.dot(v) / (u.norm() * v.norm());
+}
+
 /// The same cosine for any scalar type (automatic differentiation in tests).
 template <class T>
 T cosine(const T* u, const T* v) {

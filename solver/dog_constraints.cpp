@@ -54,9 +54,12 @@ void DogConstraints::evaluate(int b, const Eigen::Vector3d* p, double* r, double
   const int np = cosine_pairs(k, pairs);
   for (int q = 0; q < np; ++q) {
     const auto& cp = pairs[q];
+    if (!J) {
+      r[cp.row] += cp.sign * cosine_value(e[cp.a], e[cp.b]);
+      continue;
+    }
     const CosineDerivatives d = cosine_derivatives(e[cp.a], e[cp.b], false);
     r[cp.row] += cp.sign * d.value;
-    if (!J) continue;
     double* row = J + cp.row * cols;
     // de/dp0 = I, de_j/dp_{j+1} = -I.
     for (int c = 0; c < 3; ++c) {

@@ -304,6 +304,26 @@ TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessian) {
   }
 }
 
+// Constraint values alone (line searches, restoration) take a shorter path than values with the
+// Jacobian; both must give the same numbers to the last bit, or results would depend on which
+// path computed them.
+TEST(TermDerivatives, DogConstraintValuesAloneEqualThoseComputedWithTheJacobian) {
+  const auto& f = fixture();
+  const DogConstraints t(f.model.fine_topology);
+  const Dofs x = perturbed(f.rest, 12, 0.15, 0.4);
+  int rows = 0;
+  for (int b = 0; b < t.block_count(); ++b) {
+    std::vector<Eigen::Vector3d> p(t.block_size(b));
+    gather_block(t, b, x, p.data());
+    Eigen::VectorXd with_jacobian(t.residual_count(b));
+    Matrix J(t.residual_count(b), 3 * t.block_size(b));
+    t.evaluate(b, p.data(), with_jacobian.data(), J.data());
+    const Eigen::VectorXd alone = residuals(t, b, p);
+    for (int i = 0; i < t.residual_count(b); ++i, ++rows) EXPECT_EQ(alone[i], with_jacobian[i]) << "block " << b;
+  }
+  EXPECT_EQ(rows, t.row_count());
+}
+
 TEST(TermDerivatives, DogConstraintsVanishOnAFlatGridAndOnADevelopableBend) {
   const auto& f = fixture();
   const DogConstraints t(f.model.fine_topology);
