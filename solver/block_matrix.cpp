@@ -40,12 +40,16 @@ SymmetricBlockMatrix::SymmetricBlockMatrix(int vertex_count, const std::vector<c
     for (int c = 0; c < 3; ++c) diagonal_[3 * b + c] = slot(b, b, c, c);
 }
 
-int SymmetricBlockMatrix::slot(int a, int b, int r, int c) const {
-  const int col_start = m_.outerIndexPtr()[3 * b + c];
-  if (a == b) return col_start + (r - c);
+int SymmetricBlockMatrix::rank(int a, int b) const {
   const auto& rows = rows_of_[b];
-  const int k = static_cast<int>(std::lower_bound(rows.begin(), rows.end(), a) - rows.begin());
-  return col_start + (3 - c) + 3 * (k - 1) + r;
+  return static_cast<int>(std::lower_bound(rows.begin(), rows.end(), a) - rows.begin());
+}
+
+// Column 3b + c holds rows 3b + c .. 3b + 2 of the diagonal block (rank 0), then rows 3a .. 3a + 2
+// of each row vertex a of rank 1, 2, ...: entry (3a + r, 3b + c) is 3 rank + r - c past the
+// column's start.
+int SymmetricBlockMatrix::slot(int a, int b, int r, int c) const {
+  return m_.outerIndexPtr()[3 * b + c] + 3 * rank(a, b) + r - c;
 }
 
 void SymmetricBlockMatrix::set_zero() {
@@ -60,13 +64,10 @@ void SymmetricBlockMatrix::add_dense(const int* vertices, int k, const double* H
     for (int j = 0; j < k; ++j) {
       const int a = vertices[i], b = vertices[j];
       if (a < b) continue;
-      // Column (b, c) holds the block's rows consecutively: from row c of the diagonal block, or
-      // from row 0 of the off-diagonal block at the same place in all three columns (slot()).
-      const int offset = a == b ? 0 : slot(a, b, 0, 0) - outer[3 * b];
+      const int position = 3 * rank(a, b);  // as in slot(), looked up once for the whole block
       for (int c = 0; c < 3; ++c) {
-        const int r0 = a == b ? c : 0;
-        double* column = values + outer[3 * b + c] + (a == b ? 0 : offset - c);
-        for (int r = r0; r < 3; ++r) column[r - r0] += scale * H[(3 * i + r) * cols + 3 * j + c];
+        double* column = values + outer[3 * b + c] + position - c;
+        for (int r = (a == b ? c : 0); r < 3; ++r) column[r] += scale * H[(3 * i + r) * cols + 3 * j + c];
       }
     }
 }

@@ -33,6 +33,8 @@ class SymmetricBlockMatrix {
   int vertex_count() const { return static_cast<int>(rows_of_.size()); }
 
  private:
+  // Position of row vertex a >= b among column vertex b's row vertices (b itself is 0).
+  int rank(int a, int b) const;
   // Index in the value array of entry (row 3a + r, column 3b + c) for a >= b.
   int slot(int a, int b, int r, int c) const;
   std::vector<std::vector<int>> rows_of_;  // per column vertex b: sorted row vertices a >= b

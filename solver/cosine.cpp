@@ -5,8 +5,7 @@ namespace sdog {
 CosineDerivatives cosine_derivatives(const Eigen::Vector3d& u, const Eigen::Vector3d& v, bool second) {
   CosineDerivatives d;
   const double nu = u.norm(), nv = v.norm();
-  const double c = u.dot(v) / (nu * nv);
-  d.value = c;
+  const double c = d.value = cosine_value(u, v);
   d.du = v / (nu * nv) - c * u / (nu * nu);
   d.dv = u / (nu * nv) - c * v / (nv * nv);
   if (!second) return d;

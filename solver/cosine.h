@@ -17,8 +17,8 @@ struct CosineDerivatives {
 
 CosineDerivatives cosine_derivatives(const Eigen::Vector3d& u, const Eigen::Vector3d& v, bool second);
 
-/// The value alone, computed as cosine_derivatives computes it (bit for bit): constraint values
-/// are evaluated many times per iteration (line searches, restoration), without derivatives.
+/// The value alone (cosine_derivatives' value is this one): constraint values are evaluated many
+/// times per iteration (line searches, restoration), without derivatives.
 inline double cosine_value(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
   return u.dot(v) / (u.norm() * v.norm());
 }
