@@ -100,7 +100,8 @@ nlohmann::json row_json(const CompareRow& r) {
   j.update({{"vertices", r.vertices}, {"dof", r.dof}, {"iterations", r.iterations},
             {"final_objective", r.final_objective}, {"objective_ratio", optional(r.objective_ratio)},
             {"median_ms", r.median_ms}, {"speedup", optional(r.speedup)}, {"total_s", r.total_s},
-            {"total_speedup", optional(r.total_speedup)}, {"dog_max", r.dog_max},
+            {"total_speedup", optional(r.total_speedup)}, {"round_ms", r.round_ms},
+            {"speedup_paired", optional(r.speedup_paired)}, {"dog_max", r.dog_max},
             {"dog_max_run", r.dog_max_run}, {"stitch_gap_max", r.stitch_gap_max}, {"folded", r.folded}});
   return j;
 }
@@ -220,20 +221,39 @@ void compare(const CompareArgs& a) {
 
   std::vector<CompareRow> rows;
   print_fields(compare_columns());
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const BenchCase& c = cases[i];
-    const auto case_start = std::chrono::steady_clock::now();
-    ProgressBar progress(a.repeat * (config.iterations + config.hold), true);
-    rows.push_back(run_compare_case(c, config, a.repeat, {&progress}));
-    progress.finish();
+  // The modes of a pattern and resolution run in rounds (run_compare_rounds), one progress bar
+  // per run.
+  for (size_t first = 0; first < cases.size();) {
+    size_t end = first;
+    while (end < cases.size() && cases[end].pattern == cases[first].pattern && cases[end].res == cases[first].res)
+      ++end;
+    const std::vector<BenchCase> place(cases.begin() + first, cases.begin() + end);
+    const auto place_start = std::chrono::steady_clock::now();
+    std::unique_ptr<ProgressBar> progress;
+    auto observers = [&](const BenchCase& c, int round) -> std::vector<RunObserver*> {
+      if (progress) progress->finish();
+      progress = std::make_unique<ProgressBar>(config.iterations + config.hold, true);
+      if (a.repeat > 1)
+        std::cerr << "sdog compare: " << std::filesystem::path(c.pattern).stem().string() << " " << c.res
+                  << ": round " << round + 1 << "/" << a.repeat << ": " << c.mode << "\n"
+                  << std::flush;
+      return {progress.get()};
+    };
+    const std::vector<CompareRow> done = run_compare_rounds(place, config, a.repeat, observers);
+    if (progress) progress->finish();
+    rows.insert(rows.end(), done.begin(), done.end());
     relate_to_standard(rows);
-    const CompareRow& r = rows.back();
-    std::cerr << "sdog compare: case " << i + 1 << "/" << cases.size() << ": " << r.pattern << " " << r.res << " "
-              << r.mode << ": " << to_string(r.status) << " in " << format_number(seconds_since(case_start))
-              << " s (elapsed " << format_number(seconds_since(start)) << " s)"
-              << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on")) << "\n"
-              << std::flush;
-    print_fields(compare_fields(r));
+    for (size_t i = first; i < end; ++i) {
+      const CompareRow& r = rows[i];
+      std::cerr << "sdog compare: case " << i + 1 << "/" << cases.size() << ": " << r.pattern << " " << r.res << " "
+                << r.mode << ": " << to_string(r.status) << " (" << end - first << " cases in "
+                << format_number(seconds_since(place_start)) << " s, elapsed " << format_number(seconds_since(start))
+                << " s)" << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on"))
+                << "\n"
+                << std::flush;
+      print_fields(compare_fields(r));
+    }
+    first = end;
   }
 
   std::string table = csv_line(compare_columns()), series = series_csv_header();
@@ -269,7 +289,9 @@ void compare(const CompareArgs& a) {
   if (failed > 0)
     std::cerr << "sdog compare: " << failed << " of " << rows.size()
               << " runs did not complete (status column of compare.csv)\n";
-  std::cout << "sdog compare: " << rows.size() << " runs in " << format_number(seconds_since(start)) << " s; wrote "
+  std::cout << "sdog compare: " << rows.size() << " cases"
+            << (a.repeat > 1 ? " (" + std::to_string(a.repeat) + " rounds)" : std::string()) << " in "
+            << format_number(seconds_since(start)) << " s; wrote "
             << a.out << "/{compare.csv, series.csv, compare.json" << (plots.empty() ? "" : ", " + join(plots, ", "))
             << "}\n";
 }
@@ -308,7 +330,9 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--repeat", a->repeat, "runs per case (median_ms: the median of their medians)")
+  cmd->add_option("--repeat", a->repeat,
+                  "runs per case, in rounds over the modes (median_ms: the median of their medians; "
+                  "speedup_paired: the median of the rounds' ratios)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--out", a->out, "directory for compare.csv, series.csv, compare.json and the plots")->required();

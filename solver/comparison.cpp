@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <numeric>
 
@@ -55,51 +56,85 @@ const char* to_string(CompareStatus s) {
   return "?";
 }
 
-CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
-                            const std::vector<RunObserver*>& observers) {
+namespace {
+
+// One case of a comparison while its rounds run.
+struct CaseRuns {
   CompareRow row;
+  std::optional<DogModel> model;
+  std::vector<double> totals;  // seconds per completed run
+  bool stopped = false;        // skipped or failed: no more runs
+};
+
+CaseRuns start_case(const BenchCase& c) {
+  CaseRuns runs;
+  CompareRow& row = runs.row;
   row.pattern = std::filesystem::path(c.pattern).stem().string();
   row.res = c.res;
   row.mode = c.mode;
-  std::optional<DogModel> model;
   try {
-    model = build_case_model(c);
+    runs.model = build_case_model(c);
   } catch (const UsageError& e) {
-    return skipped(row, e.what());
+    row = skipped(row, e.what());
+    runs.stopped = true;
+    return runs;
   }
-  row.vertices = model->fine.vertex_count();
+  row.vertices = runs.model->fine.vertex_count();
   row.dof = 3 * row.vertices;
-  std::vector<double> run_medians, run_totals;
-  for (int k = 0; k < std::max(1, repeat); ++k) {
-    SeriesRecorder recorder;
-    std::vector<RunObserver*> all = observers;
-    all.push_back(&recorder);
-    RunSummary s;
-    try {
-      s = run_case(*model, c.mode, config, all);
-    } catch (const UsageError& e) {
-      return skipped(row, e.what());
-    } catch (const SolverError& e) {
-      return skipped(row, e.what());
-    }
-    row.series = std::move(recorder.points);
-    row.iterations = s.iterations;
-    row.final_objective = s.last.diagnostics.objective;
-    row.dog_max = s.last.diagnostics.dog_max;
-    row.stitch_gap_max = s.last.diagnostics.stitch_gap_max;
-    row.folded = s.last.step.folded;
-    row.dog_max_run = std::max(row.dog_max_run, recorder.worst_dog);
-    run_medians.push_back(median_iteration_ms(recorder.iteration_ms));
-    row.median_ms = median(run_medians);
-    run_totals.push_back(std::accumulate(recorder.iteration_ms.begin(), recorder.iteration_ms.end(), 0.0) / 1000);
-    row.total_s = median(run_totals);
-    if (s.failed) {
-      row.status = CompareStatus::Failed;
-      row.note = s.failure;
-      return row;
-    }
+  return runs;
+}
+
+void run_once(CaseRuns& runs, const RunConfig& config, std::vector<RunObserver*> observers) {
+  CompareRow& row = runs.row;
+  SeriesRecorder recorder;
+  observers.push_back(&recorder);
+  RunSummary s;
+  try {
+    s = run_case(*runs.model, row.mode, config, observers);
+  } catch (const UsageError& e) {
+    row = skipped(row, e.what());
+    runs.stopped = true;
+    return;
+  } catch (const SolverError& e) {
+    row = skipped(row, e.what());
+    runs.stopped = true;
+    return;
   }
-  return row;
+  row.series = std::move(recorder.points);
+  row.iterations = s.iterations;
+  row.final_objective = s.last.diagnostics.objective;
+  row.dog_max = s.last.diagnostics.dog_max;
+  row.stitch_gap_max = s.last.diagnostics.stitch_gap_max;
+  row.folded = s.last.step.folded;
+  row.dog_max_run = std::max(row.dog_max_run, recorder.worst_dog);
+  row.round_ms.push_back(median_iteration_ms(recorder.iteration_ms));
+  row.median_ms = median(row.round_ms);
+  runs.totals.push_back(std::accumulate(recorder.iteration_ms.begin(), recorder.iteration_ms.end(), 0.0) / 1000);
+  row.total_s = median(runs.totals);
+  if (s.failed) {
+    row.status = CompareStatus::Failed;
+    row.note = s.failure;
+    runs.stopped = true;
+  }
+}
+
+}  // namespace
+
+std::vector<CompareRow> run_compare_rounds(const std::vector<BenchCase>& cases, const RunConfig& config, int repeat,
+                                           const ObserversOfRun& observers) {
+  std::vector<CaseRuns> runs;
+  for (const auto& c : cases) runs.push_back(start_case(c));
+  for (int round = 0; round < std::max(1, repeat); ++round)
+    for (size_t i = 0; i < cases.size(); ++i)
+      if (!runs[i].stopped) run_once(runs[i], config, observers ? observers(cases[i], round) : std::vector<RunObserver*>{});
+  std::vector<CompareRow> rows;
+  for (auto& r : runs) rows.push_back(std::move(r.row));
+  return rows;
+}
+
+CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
+                            const std::vector<RunObserver*>& observers) {
+  return run_compare_rounds({c}, config, repeat, [&](const BenchCase&, int) { return observers; }).front();
 }
 
 void relate_to_standard(std::vector<CompareRow>& rows) {
@@ -110,18 +145,24 @@ void relate_to_standard(std::vector<CompareRow>& rows) {
     r.objective_ratio.reset();
     r.speedup.reset();
     r.total_speedup.reset();
+    r.speedup_paired.reset();
     const auto it = standard.find({r.pattern, r.res});
     if (!r.completed() || it == standard.end()) continue;
     const CompareRow& s = *it->second;
     r.objective_ratio = r.final_objective / s.final_objective;
     r.speedup = s.median_ms / r.median_ms;
     r.total_speedup = s.total_s / r.total_s;
+    if (r.round_ms.size() == s.round_ms.size()) {
+      std::vector<double> ratios;
+      for (size_t k = 0; k < r.round_ms.size(); ++k) ratios.push_back(s.round_ms[k] / r.round_ms[k]);
+      r.speedup_paired = median(ratios);
+    }
   }
 }
 
 std::vector<std::string> compare_columns() {
   return {"pattern", "res",     "mode",        "vertices",       "dof",    "iterations",
-          "final_objective", "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup",
+          "final_objective", "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "speedup_paired",
           "dog_max", "dog_max_run", "stitch_gap_max", "folded", "status", "note"};
 }
 
@@ -133,6 +174,7 @@ std::vector<std::string> compare_fields(const CompareRow& r) {
     f.insert(f.end(), {std::to_string(r.vertices), std::to_string(r.dof), std::to_string(r.iterations),
                        number(r.final_objective, 9), optional_number(r.objective_ratio, 9), number(r.median_ms, 4),
                        optional_number(r.speedup, 4), number(r.total_s, 4), optional_number(r.total_speedup, 4),
+                       optional_number(r.speedup_paired, 4),
                        number(r.dog_max, 3), number(r.dog_max_run, 3),
                        number(r.stitch_gap_max, 3), r.folded ? "1" : "0"});
   }

@@ -2,6 +2,7 @@
 // The mode comparison (`sdog compare`): the protocol of `sdog bench` (run_case) for several modes
 // on the same patterns and resolutions, one row per (pattern, resolution, mode) with the final
 // state, timing and the ratios to the standard mode, and the per-iteration series for the plots.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct CompareRow {
   int iterations = 0;  ///< completed iterations (of the last repeat)
   double final_objective = 0;
   double median_ms = 0;  ///< median over the repeats of median_iteration_ms
+  std::vector<double> round_ms;  ///< median_iteration_ms of each completed repeat, in order
   /// Median over the repeats of the whole run's time: the sum of every iteration's time, first
   /// and last included (a mode's start-up and its end, e.g. the two-level mode's standard finish).
   double total_s = 0;
@@ -45,12 +47,28 @@ struct CompareRow {
   /// total_s, on the same pattern and resolution; empty when standard was not run there or either
   /// run did not complete.
   std::optional<double> objective_ratio, speedup, total_speedup;
+  /// The median over the rounds (run_compare_rounds) of the standard's median_iteration_ms in the
+  /// round over this mode's: each ratio is of two runs made one shortly after the other, so it
+  /// is less moved by a load that drifts over the whole comparison than `speedup` is. Empty
+  /// unless both rows completed every round.
+  std::optional<double> speedup_paired;
   std::vector<ComparePoint> series;  ///< of the last repeat
 
   bool completed() const { return status == CompareStatus::Completed; }
   /// Time per iteration per degree of freedom (thesis Fig. 6.7).
   double ms_per_dof() const { return dof > 0 ? median_ms / dof : 0; }
 };
+
+/// The observers of one run: the case and its round (0-based).
+using ObserversOfRun = std::function<std::vector<RunObserver*>(const BenchCase&, int round)>;
+
+/// Runs `cases` (the modes of one pattern and resolution) `repeat` times each, in rounds: round k
+/// runs every case once, in order, before round k + 1 begins, so that the runs that are compared
+/// are made close together in time (side by side) on a machine whose load drifts. A case that
+/// is skipped or fails stops there (as in run_compare_case); the others go on. Rows in the order
+/// of `cases`.
+std::vector<CompareRow> run_compare_rounds(const std::vector<BenchCase>& cases, const RunConfig& config, int repeat,
+                                           const ObserversOfRun& observers = {});
 
 /// Runs a case `repeat` times with the configuration (scenario, iterations, hold, weights,
 /// solvers). A mode that cannot run the case (UsageError, SolverError from the model, the mode or
@@ -59,12 +77,12 @@ struct CompareRow {
 CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
                             const std::vector<RunObserver*>& observers = {});
 
-/// Fills objective_ratio, speedup and total_speedup of every row from the completed `standard`
+/// Fills objective_ratio, speedup, total_speedup and speedup_paired of every row from the completed `standard`
 /// row of its pattern and resolution.
 void relate_to_standard(std::vector<CompareRow>& rows);
 
 /// compare.csv: pattern, res, mode, vertices, dof, iterations, final_objective, objective_ratio,
-/// median_ms, speedup, total_s, total_speedup, dog_max, dog_max_run, stitch_gap_max, folded,
+/// median_ms, speedup, total_s, total_speedup, speedup_paired, dog_max, dog_max_run, stitch_gap_max, folded,
 /// status, note. Empty fields for what a row does not have (ratios without standard, numbers of a
 /// skipped run).
 std::vector<std::string> compare_columns();

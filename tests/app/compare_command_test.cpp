@@ -37,7 +37,7 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   const Csv csv = read_csv(dir + "/compare.csv");
   const std::vector<std::string> columns = {
       "pattern", "res",           "mode",        "vertices", "dof",    "iterations", "final_objective",
-      "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "dog_max",  "dog_max_run",
+      "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "speedup_paired", "dog_max",  "dog_max_run",
       "stitch_gap_max", "folded", "status"};
   ASSERT_GE(csv.header.size(), columns.size());
   for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(csv.header[i], columns[i]) << "column " << i;
@@ -66,6 +66,8 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   EXPECT_NEAR(number(1, "objective_ratio"), ratio, 1e-6 * ratio);
   const double speedup = number(0, "median_ms") / number(1, "median_ms");
   EXPECT_NEAR(number(1, "speedup"), speedup, 2e-3 * speedup);  // median_ms has 4 digits
+  // One round: the paired speedup is that round's ratio, the speedup itself.
+  EXPECT_NEAR(number(1, "speedup_paired"), speedup, 2e-3 * speedup);
 
   // series.csv: every iteration of both modes, long format; its last objective is the table's.
   const Csv series = read_csv(dir + "/series.csv");
