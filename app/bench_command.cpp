@@ -38,16 +38,15 @@ void print_row(const BenchResult& r) {
 void bench(const BenchArgs& a) {
   set_thread_count(a.threads);
   for (const auto& m : a.modes) check_mode_name(m, "--modes: ");
-  std::vector<BenchCase> cases;
+  // Per pattern and resolution (a place) the cases of every mode, which run in rounds.
+  std::vector<BenchCase> places;
   if (a.thesis_grid) {
-    for (const auto& m : a.modes)
-      for (auto& c : thesis_grid(a.patterns_dir, m)) cases.push_back(c);
+    places = thesis_grid(a.patterns_dir, "");
   } else {
     if (a.patterns.empty() || a.resolutions.empty())
       throw UsageError("give --pattern and --res (or --thesis-grid)");
     for (const auto& p : a.patterns)
-      for (const auto& r : a.resolutions)
-        for (const auto& m : a.modes) cases.push_back({p, r, m});
+      for (const auto& r : a.resolutions) places.push_back({p, r, ""});
   }
   std::unique_ptr<OutputSet> out;
   std::string csv_name;
@@ -63,16 +62,20 @@ void bench(const BenchArgs& a) {
               "median_ms", "ms/dof", "steps", "factor_ms", "facts", "objective", "dog_max");
   const bool tty = isatty(fileno(stderr));
   std::string csv = bench_csv_header();
-  for (const auto& c : cases) {
-    auto progress = [&](int repeat, int iteration, int total) {
+  for (const auto& place : places) {
+    std::vector<BenchCase> cases;
+    for (const auto& m : a.modes) cases.push_back({place.pattern, place.res, m});
+    auto progress = [&](const BenchCase& c, int repeat, int iteration, int total) {
       if (tty && (iteration % 10 == 0 || iteration == total))
-        std::fprintf(stderr, "\r  %s %s: run %d/%d, iteration %d/%d   ", c.res.c_str(), c.mode.c_str(), repeat + 1,
+        std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c.res.c_str(), c.mode.c_str(), repeat + 1,
                      options.repeat, iteration, total);
     };
-    const BenchResult r = run_benchmark(c, options, progress);
+    const std::vector<BenchResult> results = run_benchmark_rounds(cases, options, progress);
     if (tty) std::fprintf(stderr, "\r%70s\r", "");
-    print_row(r);
-    csv += bench_csv_row(r);
+    for (const auto& r : results) {
+      print_row(r);
+      csv += bench_csv_row(r);
+    }
   }
   if (out) {
     out->write_text(csv_name, csv);

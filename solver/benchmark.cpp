@@ -64,44 +64,76 @@ struct Recorder : RunObserver {
 
 }  // namespace
 
-BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
-                          const std::function<void(int, int, int)>& progress) {
-  const DogModel model = build_case_model(c);
-  RunConfig config;
-  config.iterations = options.iterations;
-  config.hold = options.iterations / 5;
+namespace {
+
+// One case of a benchmark while its rounds run: the sums over its runs' timing windows.
+struct BenchRuns {
+  DogModel model;
   BenchResult result;
+  double factor_ms = 0, sqp_steps = 0, factorizations = 0;
+  int window = 0;
+};
+
+BenchRuns start_bench_case(const BenchCase& c) {
+  BenchRuns runs{build_case_model(c), {}};
+  BenchResult& result = runs.result;
   result.pattern = std::filesystem::path(c.pattern).stem().string();
   result.res = c.res;
   result.mode = c.mode;
-  result.vertices = model.fine.vertex_count();
+  result.vertices = runs.model.fine.vertex_count();
   result.dof = 3 * result.vertices;
-  double factor_ms = 0, sqp_steps = 0, factorizations = 0;
-  int window = 0;
-  for (int k = 0; k < std::max(1, options.repeat); ++k) {
-    Recorder rec;
-    rec.repeat = k;
-    rec.total = config.iterations + config.hold;
-    rec.progress = &progress;
-    const RunSummary s = run_case(model, c.mode, config, {&rec});
-    if (s.failed) throw SolverError(result.pattern + " " + c.res + " " + c.mode + ": " + s.failure);
-    result.run_medians.push_back(median_iteration_ms(rec.iteration_ms));
-    factor_ms += rec.factor_ms;
-    sqp_steps += rec.sqp_steps;
-    factorizations += rec.factorizations;
-    window += rec.window;
-    result.final_objective = s.last.diagnostics.objective;
-    result.dog_max = s.last.diagnostics.dog_max;
-    result.dog_max_over_run = std::max(result.dog_max_over_run, rec.worst_dog);
-  }
+  return runs;
+}
+
+void finish_bench_case(BenchRuns& runs) {
+  BenchResult& result = runs.result;
   result.median_ms = median(result.run_medians);
   result.ms_per_dof = result.median_ms / result.dof;
-  if (window > 0) {
-    result.factor_ms = factor_ms / window;
-    result.sqp_steps = sqp_steps / window;
-    result.factorizations = factorizations / window;
+  if (runs.window > 0) {
+    result.factor_ms = runs.factor_ms / runs.window;
+    result.sqp_steps = runs.sqp_steps / runs.window;
+    result.factorizations = runs.factorizations / runs.window;
   }
-  return result;
+}
+
+}  // namespace
+
+std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& cases, const BenchOptions& options,
+                                              const BenchProgress& progress) {
+  RunConfig config;
+  config.iterations = options.iterations;
+  config.hold = options.iterations / 5;
+  std::vector<BenchRuns> runs;
+  for (const auto& c : cases) runs.push_back(start_bench_case(c));
+  for (int k = 0; k < std::max(1, options.repeat); ++k) {
+    for (size_t i = 0; i < cases.size(); ++i) {
+      BenchRuns& b = runs[i];
+      BenchResult& result = b.result;
+      const std::function<void(int, int, int)> report = [&](int repeat, int iteration, int total) {
+        if (progress) progress(cases[i], repeat, iteration, total);
+      };
+      Recorder rec;
+      rec.repeat = k;
+      rec.total = config.iterations + config.hold;
+      rec.progress = &report;
+      const RunSummary s = run_case(b.model, cases[i].mode, config, {&rec});
+      if (s.failed) throw SolverError(result.pattern + " " + cases[i].res + " " + cases[i].mode + ": " + s.failure);
+      result.run_medians.push_back(median_iteration_ms(rec.iteration_ms));
+      b.factor_ms += rec.factor_ms;
+      b.sqp_steps += rec.sqp_steps;
+      b.factorizations += rec.factorizations;
+      b.window += rec.window;
+      result.final_objective = s.last.diagnostics.objective;
+      result.dog_max = s.last.diagnostics.dog_max;
+      result.dog_max_over_run = std::max(result.dog_max_over_run, rec.worst_dog);
+    }
+  }
+  std::vector<BenchResult> results;
+  for (auto& b : runs) {
+    finish_bench_case(b);
+    results.push_back(std::move(b.result));
+  }
+  return results;
 }
 
 std::string bench_csv_header() {

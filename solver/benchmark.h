@@ -1,7 +1,7 @@
 #pragma once
-// The speed benchmark (`sdog bench`): the corners protocol on a pattern at a resolution with one
-// mode, repeated; per-iteration times over iterations 10-240 (the thesis's window), medians of the
-// repeats.
+// The speed benchmark (`sdog bench`): the corners protocol on a pattern at a resolution with each
+// mode, repeated in rounds (every mode once per round); per-iteration times over iterations 10-240
+// (the thesis's window), medians of the repeats.
 #include <functional>
 #include <string>
 #include <vector>
@@ -59,9 +59,16 @@ DogModel build_case_model(const BenchCase& c);
 RunSummary run_case(const DogModel& model, const std::string& mode, const RunConfig& config,
                     const std::vector<RunObserver*>& observers);
 
-/// Runs one case; `progress(repeat, iteration, total)` is called after every iteration.
-BenchResult run_benchmark(const BenchCase& c, const BenchOptions& options,
-                          const std::function<void(int, int, int)>& progress = {});
+/// Called after every iteration of a benchmark run: the case, its repeat (0-based), the
+/// iteration and the run's iteration count.
+using BenchProgress = std::function<void(const BenchCase&, int repeat, int iteration, int total)>;
+
+/// Runs `cases` (typically the modes of one pattern and resolution) `options.repeat` times each,
+/// in rounds: every case once, in order, before the next round begins, so that the runs whose
+/// times are compared are made close together on a machine whose load drifts. Results in the
+/// order of `cases`. Throws SolverError when a run fails.
+std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& cases, const BenchOptions& options,
+                                              const BenchProgress& progress = {});
 
 /// The CSV header and row of a result (columns: pattern, res, mode, vertices, dof, median_ms,
 /// ms_per_dof, sqp_steps, factor_ms, final_objective, dog_max, factorizations, dog_max_over_run,
