@@ -132,11 +132,6 @@ std::vector<CompareRow> run_compare_rounds(const std::vector<BenchCase>& cases, 
   return rows;
 }
 
-CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
-                            const std::vector<RunObserver*>& observers) {
-  return run_compare_rounds({c}, config, repeat, [&](const BenchCase&, int) { return observers; }).front();
-}
-
 void relate_to_standard(std::vector<CompareRow>& rows) {
   std::map<std::pair<std::string, std::string>, const CompareRow*> standard;
   for (const auto& r : rows)

@@ -62,28 +62,24 @@ struct CompareRow {
 /// The observers of one run: the case and its round (0-based).
 using ObserversOfRun = std::function<std::vector<RunObserver*>(const BenchCase&, int round)>;
 
-/// Runs `cases` (the modes of one pattern and resolution) `repeat` times each, in rounds: round k
-/// runs every case once, in order, before round k + 1 begins, so that the runs that are compared
-/// are made close together in time (side by side) on a machine whose load drifts. A case that
-/// is skipped or fails stops there (as in run_compare_case); the others go on. Rows in the order
-/// of `cases`.
+/// Runs `cases` (the modes of one pattern and resolution) `repeat` times each with the
+/// configuration (scenario, iterations, hold, weights, solvers), in rounds: round k runs every
+/// case once, in order, before round k + 1 begins, so that the runs that are compared are made
+/// close together in time (side by side) on a machine whose load drifts. A mode that cannot run
+/// its case (UsageError, SolverError from the model, the mode or the scenario) gives a Skipped row
+/// and a diverging run a Failed row, both with the reason in `note` and no further runs; the other
+/// cases go on. Other errors (an unreadable pattern) propagate. Rows in the order of `cases`;
+/// `observers` gives the extra observers of each run.
 std::vector<CompareRow> run_compare_rounds(const std::vector<BenchCase>& cases, const RunConfig& config, int repeat,
                                            const ObserversOfRun& observers = {});
 
-/// Runs a case `repeat` times with the configuration (scenario, iterations, hold, weights,
-/// solvers). A mode that cannot run the case (UsageError, SolverError from the model, the mode or
-/// the scenario) gives a Skipped row and a diverging run a Failed row, both with the reason in
-/// `note`; other errors (an unreadable pattern) propagate. `observers` also see every iteration.
-CompareRow run_compare_case(const BenchCase& c, const RunConfig& config, int repeat,
-                            const std::vector<RunObserver*>& observers = {});
-
-/// Fills objective_ratio, speedup, total_speedup and speedup_paired of every row from the completed `standard`
-/// row of its pattern and resolution.
+/// Fills objective_ratio, speedup, total_speedup and speedup_paired of every row from the
+/// completed `standard` row of its pattern and resolution.
 void relate_to_standard(std::vector<CompareRow>& rows);
 
 /// compare.csv: pattern, res, mode, vertices, dof, iterations, final_objective, objective_ratio,
-/// median_ms, speedup, total_s, total_speedup, speedup_paired, dog_max, dog_max_run, stitch_gap_max, folded,
-/// status, note. Empty fields for what a row does not have (ratios without standard, numbers of a
+/// median_ms, speedup, total_s, total_speedup, speedup_paired, dog_max, dog_max_run,
+/// stitch_gap_max, folded, status, note. Empty fields for what a row does not have (ratios without standard, numbers of a
 /// skipped run).
 std::vector<std::string> compare_columns();
 std::vector<std::string> compare_fields(const CompareRow& r);
