@@ -29,9 +29,11 @@ struct BenchArgs {
 };
 
 void print_row(const BenchResult& r) {
-  std::printf("%-18s %-6s %-9s %6d %6d %9.2f %9.5f %6.2f %9.2f %7.2f %10.4g %9.2g\n", r.pattern.c_str(), r.res.c_str(),
-              r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms, r.factorizations,
-              r.final_objective, r.dog_max);
+  char speedup[32] = "";
+  if (r.speedup) std::snprintf(speedup, sizeof speedup, "%.2f", *r.speedup);
+  std::printf("%-18s %-6s %-9s %6d %6d %9.2f %9.5f %6.2f %9.2f %7.2f %10.4g %9.2g %7s\n", r.pattern.c_str(),
+              r.res.c_str(), r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms,
+              r.factorizations, r.final_objective, r.dog_max, speedup);
   std::fflush(stdout);
 }
 
@@ -58,8 +60,8 @@ void bench(const BenchArgs& a) {
   BenchOptions options;
   options.iterations = a.iterations;
   options.repeat = a.repeat;
-  std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s\n", "pattern", "res", "mode", "verts", "dof",
-              "median_ms", "ms/dof", "steps", "factor_ms", "facts", "objective", "dog_max");
+  std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s %7s\n", "pattern", "res", "mode", "verts", "dof",
+              "median_ms", "ms/dof", "steps", "factor_ms", "facts", "objective", "dog_max", "speedup");
   const bool tty = isatty(fileno(stderr));
   std::string csv = bench_csv_header();
   for (const auto& place : places) {
@@ -70,7 +72,8 @@ void bench(const BenchArgs& a) {
         std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c.res.c_str(), c.mode.c_str(), repeat + 1,
                      options.repeat, iteration, total);
     };
-    const std::vector<BenchResult> results = run_benchmark_rounds(cases, options, progress);
+    std::vector<BenchResult> results = run_benchmark_rounds(cases, options, progress);
+    relate_bench_to_standard(results);
     if (tty) std::fprintf(stderr, "\r%70s\r", "");
     for (const auto& r : results) {
       print_row(r);

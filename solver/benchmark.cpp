@@ -16,6 +16,24 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+std::optional<double> paired_speedup(const std::vector<double>& reference_ms, const std::vector<double>& ms) {
+  if (ms.empty() || ms.size() != reference_ms.size()) return std::nullopt;
+  std::vector<double> ratios;
+  for (size_t k = 0; k < ms.size(); ++k) ratios.push_back(reference_ms[k] / ms[k]);
+  return median(ratios);
+}
+
+void relate_bench_to_standard(std::vector<BenchResult>& results) {
+  const auto standard =
+      std::find_if(results.begin(), results.end(), [](const BenchResult& r) { return r.mode == "standard"; });
+  if (standard == results.end()) return;
+  const BenchResult reference = *standard;
+  for (auto& r : results) {
+    r.speedup = reference.median_ms / r.median_ms;
+    r.speedup_paired = paired_speedup(reference.run_medians, r.run_medians);
+  }
+}
+
 bool in_timing_window(int iteration) { return iteration >= 10 && iteration <= 240; }
 
 double median_iteration_ms(const std::vector<double>& iteration_ms) {
@@ -138,15 +156,20 @@ std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& case
 
 std::string bench_csv_header() {
   return "pattern,res,mode,vertices,dof,median_ms,ms_per_dof,sqp_steps,factor_ms,final_objective,dog_max,"
-         "factorizations,dog_max_over_run,repeats\n";
+         "factorizations,dog_max_over_run,repeats,speedup,speedup_paired\n";
 }
 
 std::string bench_csv_row(const BenchResult& r) {
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%s,%s,%s,%d,%d,%.4g,%.4g,%.4g,%.4g,%.6g,%.3g,%.4g,%.3g,%zu\n", r.pattern.c_str(),
+  std::snprintf(buf, sizeof buf, "%s,%s,%s,%d,%d,%.4g,%.4g,%.4g,%.4g,%.6g,%.3g,%.4g,%.3g,%zu,", r.pattern.c_str(),
                 r.res.c_str(), r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms,
                 r.final_objective, r.dog_max, r.factorizations, r.dog_max_over_run, r.run_medians.size());
-  return buf;
+  auto optional = [](const std::optional<double>& v) {
+    char text[32] = "";
+    if (v) std::snprintf(text, sizeof text, "%.4g", *v);
+    return std::string(text);
+  };
+  return buf + optional(r.speedup) + "," + optional(r.speedup_paired) + "\n";
 }
 
 std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mode) {

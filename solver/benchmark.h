@@ -3,6 +3,7 @@
 // mode, repeated in rounds (every mode once per round); per-iteration times over iterations 10-240
 // (the thesis's window), medians of the repeats.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,11 +36,22 @@ struct BenchResult {
   double final_objective = 0;
   double dog_max = 0;     ///< at the last iteration
   double dog_max_over_run = 0;
-  std::vector<double> run_medians;  ///< per repeat
+  std::vector<double> run_medians;  ///< per repeat (round), in order
+  /// The standard mode's median_ms on the same pattern and resolution over this one's, and the
+  /// median of the rounds' own ratios (paired_speedup); empty when the standard was not run there.
+  std::optional<double> speedup, speedup_paired;
 };
 
 /// The median (upper median for even sizes; 0 when empty).
 double median(std::vector<double> values);
+
+/// The median over rounds k of reference_ms[k] / ms[k] (each ratio of two runs made one shortly
+/// after the other); empty unless both have the same, non-zero number of rounds.
+std::optional<double> paired_speedup(const std::vector<double>& reference_ms, const std::vector<double>& ms);
+
+/// Fills speedup and speedup_paired of `results` (one pattern and resolution) from its `standard`
+/// result, if it has one.
+void relate_bench_to_standard(std::vector<BenchResult>& results);
 
 /// The thesis's timing of a run from its per-iteration times (iteration 1 first): the median over
 /// iterations 10-240, which leaves out the first iterations (symbolic analysis, warm caches) and
@@ -72,7 +84,7 @@ std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& case
 
 /// The CSV header and row of a result (columns: pattern, res, mode, vertices, dof, median_ms,
 /// ms_per_dof, sqp_steps, factor_ms, final_objective, dog_max, factorizations, dog_max_over_run,
-/// repeats).
+/// repeats, speedup, speedup_paired; the last two empty without a standard result).
 std::string bench_csv_header();
 std::string bench_csv_row(const BenchResult& r);
 

@@ -147,11 +147,7 @@ void relate_to_standard(std::vector<CompareRow>& rows) {
     r.objective_ratio = r.final_objective / s.final_objective;
     r.speedup = s.median_ms / r.median_ms;
     r.total_speedup = s.total_s / r.total_s;
-    if (r.round_ms.size() == s.round_ms.size()) {
-      std::vector<double> ratios;
-      for (size_t k = 0; k < r.round_ms.size(); ++k) ratios.push_back(s.round_ms[k] / r.round_ms[k]);
-      r.speedup_paired = median(ratios);
-    }
+    r.speedup_paired = paired_speedup(s.round_ms, r.round_ms);
   }
 }
 

@@ -305,7 +305,7 @@ TEST(BenchCommand, UnwritableCsvFailsBeforeTheWork) {
 
 TEST(BenchCommand, WritesTheTableAsCsv) {
   const std::string dir = test::temp_dir("bench");
-  const auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --modes standard --iters 12 --repeat 2 --csv " +
+  const auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --modes standard,subsolvers --iters 12 --repeat 2 --csv " +
                                 dir + "/bench.csv");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("median_ms"), std::string::npos) << r.out;
@@ -313,8 +313,17 @@ TEST(BenchCommand, WritesTheTableAsCsv) {
   for (const char* name : {"pattern", "res", "mode", "vertices", "dof", "median_ms", "ms_per_dof", "sqp_steps", "factor_ms",
                            "final_objective", "dog_max"})
     EXPECT_GE(csv.column(name), 0) << name;
-  ASSERT_EQ(csv.rows.size(), 1u);
+  ASSERT_EQ(csv.rows.size(), 2u);
   const auto& row = csv.rows[0];
+  // The speedups over the standard run: 1 for the standard itself; for the other mode the ratio of
+  // the medians (4 digits each in the CSV).
+  EXPECT_EQ(csv.rows[1][csv.column("mode")], "subsolvers");
+  EXPECT_EQ(std::stod(row[csv.column("speedup")]), 1.0);
+  EXPECT_EQ(std::stod(row[csv.column("speedup_paired")]), 1.0);
+  const double speedup = std::stod(row[csv.column("median_ms")]) / std::stod(csv.rows[1][csv.column("median_ms")]);
+  EXPECT_NEAR(std::stod(csv.rows[1][csv.column("speedup")]), speedup, 2e-3 * speedup);
+  EXPECT_GT(std::stod(csv.rows[1][csv.column("speedup_paired")]), 0);
+  EXPECT_EQ(csv.rows[1][csv.column("repeats")], "2");
   EXPECT_EQ(row[csv.column("res")], "15x11");
   EXPECT_EQ(row[csv.column("mode")], "standard");
   const int vertices = std::stoi(row[csv.column("vertices")]);

@@ -1,4 +1,5 @@
-// The benchmark's rounds: every mode of a pattern and resolution runs once per round.
+// The benchmark's rounds (every mode of a pattern and resolution runs once per round) and its
+// speedups over the standard mode.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -38,6 +39,30 @@ TEST(Benchmark, RoundsRunEveryModeOnceBeforeTheNextRound) {
     EXPECT_EQ(r.dof, 3 * r.vertices);
     EXPECT_LT(r.dog_max, 1e-4);
   }
+}
+
+TEST(Benchmark, SpeedupsAreRelativeToTheStandardRun) {
+  BenchResult standard, other;
+  standard.mode = "standard";
+  standard.run_medians = {400, 100, 200};
+  standard.median_ms = 200;
+  other.mode = "twolevel";
+  other.run_medians = {100, 40, 100};  // round ratios 4, 2.5 and 2
+  other.median_ms = 100;
+  std::vector<BenchResult> results = {other, standard};
+  relate_bench_to_standard(results);
+  ASSERT_TRUE(results[0].speedup && results[0].speedup_paired);
+  EXPECT_DOUBLE_EQ(*results[0].speedup, 2.0);         // ratio of the medians
+  EXPECT_DOUBLE_EQ(*results[0].speedup_paired, 2.5);  // median of the rounds' ratios
+  EXPECT_DOUBLE_EQ(*results[1].speedup, 1.0);
+  // Without a standard result there is nothing to relate to.
+  std::vector<BenchResult> alone = {other};
+  relate_bench_to_standard(alone);
+  EXPECT_FALSE(alone[0].speedup.has_value());
+  EXPECT_FALSE(alone[0].speedup_paired.has_value());
+  // Rounds that do not pair up give no paired ratio.
+  EXPECT_FALSE(paired_speedup({100, 200}, {50}).has_value());
+  EXPECT_FALSE(paired_speedup({}, {}).has_value());
 }
 
 }  // namespace
