@@ -58,8 +58,8 @@ std::vector<std::string> resolve_modes(const std::vector<std::string>& requested
   return modes;
 }
 
-// Every (pattern, resolution) in order, each with every mode.
-std::vector<BenchCase> make_cases(const CompareArgs& a, const std::vector<std::string>& modes) {
+// Every (pattern, resolution) in order, each as its cases of every mode.
+std::vector<std::vector<BenchCase>> make_places(const CompareArgs& a, const std::vector<std::string>& modes) {
   std::vector<BenchCase> places;
   if (a.thesis_grid) {
     places = thesis_grid(a.patterns_dir, modes.front());
@@ -71,9 +71,9 @@ std::vector<BenchCase> make_cases(const CompareArgs& a, const std::vector<std::s
       for (const auto& r : a.resolutions) places.push_back({p, r, ""});
     }
   }
-  std::vector<BenchCase> cases;
-  for (const auto& place : places)
-    for (const auto& m : modes) cases.push_back({place.pattern, place.res, m});
+  std::vector<std::vector<BenchCase>> cases(places.size());
+  for (size_t i = 0; i < places.size(); ++i)
+    for (const auto& m : modes) cases[i].push_back({places[i].pattern, places[i].res, m});
   return cases;
 }
 
@@ -214,7 +214,8 @@ void compare(const CompareArgs& a) {
   if (!config.switches.empty())
     throw UsageError(a.config + ": $.switches: sdog compare runs every mode on its own (use sdog run --switch)");
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
-  const std::vector<BenchCase> cases = make_cases(a, modes);
+  const std::vector<std::vector<BenchCase>> places = make_places(a, modes);
+  const size_t case_count = places.size() * modes.size();
   OutputSet out(a.out);
   vis::require_display();
   set_thread_count(a.threads);
@@ -223,11 +224,8 @@ void compare(const CompareArgs& a) {
   print_fields(compare_columns());
   // The modes of a pattern and resolution run in rounds (run_compare_rounds), one progress bar
   // per run.
-  for (size_t first = 0; first < cases.size();) {
-    size_t end = first;
-    while (end < cases.size() && cases[end].pattern == cases[first].pattern && cases[end].res == cases[first].res)
-      ++end;
-    const std::vector<BenchCase> place(cases.begin() + first, cases.begin() + end);
+  for (const auto& place : places) {
+    const size_t first = rows.size();
     const auto place_start = std::chrono::steady_clock::now();
     std::unique_ptr<ProgressBar> progress;
     auto observers = [&](const BenchCase& c, int round) -> std::vector<RunObserver*> {
@@ -243,17 +241,16 @@ void compare(const CompareArgs& a) {
     if (progress) progress->finish();
     rows.insert(rows.end(), done.begin(), done.end());
     relate_to_standard(rows);
-    for (size_t i = first; i < end; ++i) {
+    for (size_t i = first; i < rows.size(); ++i) {
       const CompareRow& r = rows[i];
-      std::cerr << "sdog compare: case " << i + 1 << "/" << cases.size() << ": " << r.pattern << " " << r.res << " "
-                << r.mode << ": " << to_string(r.status) << " (" << end - first << " cases in "
+      std::cerr << "sdog compare: case " << i + 1 << "/" << case_count << ": " << r.pattern << " " << r.res << " "
+                << r.mode << ": " << to_string(r.status) << " (" << place.size() << " cases in "
                 << format_number(seconds_since(place_start)) << " s, elapsed " << format_number(seconds_since(start))
                 << " s)" << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on"))
                 << "\n"
                 << std::flush;
       print_fields(compare_fields(r));
     }
-    first = end;
   }
 
   std::string table = csv_line(compare_columns()), series = series_csv_header();

@@ -66,7 +66,8 @@ struct Recorder : RunObserver {
   std::vector<double> iteration_ms;
   double factor_ms = 0, sqp_steps = 0, factorizations = 0, worst_dog = 0;
   int window = 0;
-  const std::function<void(int, int, int)>* progress = nullptr;
+  const BenchProgress* progress = nullptr;
+  const BenchCase* bench_case = nullptr;
   void on_iteration(const IterationReport& r, const Dofs&) override {
     worst_dog = std::max(worst_dog, r.diagnostics.dog_max);
     iteration_ms.push_back(r.iteration_ms);
@@ -76,13 +77,9 @@ struct Recorder : RunObserver {
       sqp_steps += r.step.sqp_steps;
       factorizations += r.step.factorizations;
     }
-    if (progress && *progress) (*progress)(repeat, r.iteration, total);
+    if (progress && *progress) (*progress)(*bench_case, repeat, r.iteration, total);
   }
 };
-
-}  // namespace
-
-namespace {
 
 // One case of a benchmark while its rounds run: the sums over its runs' timing windows.
 struct BenchRuns {
@@ -127,13 +124,11 @@ std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& case
     for (size_t i = 0; i < cases.size(); ++i) {
       BenchRuns& b = runs[i];
       BenchResult& result = b.result;
-      const std::function<void(int, int, int)> report = [&](int repeat, int iteration, int total) {
-        if (progress) progress(cases[i], repeat, iteration, total);
-      };
       Recorder rec;
       rec.repeat = k;
       rec.total = config.iterations + config.hold;
-      rec.progress = &report;
+      rec.progress = &progress;
+      rec.bench_case = &cases[i];
       const RunSummary s = run_case(b.model, cases[i].mode, config, {&rec});
       if (s.failed) throw SolverError(result.pattern + " " + cases[i].res + " " + cases[i].mode + ": " + s.failure);
       result.run_medians.push_back(median_iteration_ms(rec.iteration_ms));
@@ -154,6 +149,16 @@ std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& case
   return results;
 }
 
+std::string csv_number(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string optional_csv_number(const std::optional<double>& v, int digits) {
+  return v ? csv_number(*v, digits) : std::string();
+}
+
 std::string bench_csv_header() {
   return "pattern,res,mode,vertices,dof,median_ms,ms_per_dof,sqp_steps,factor_ms,final_objective,dog_max,"
          "factorizations,dog_max_over_run,repeats,speedup,speedup_paired\n";
@@ -164,12 +169,7 @@ std::string bench_csv_row(const BenchResult& r) {
   std::snprintf(buf, sizeof buf, "%s,%s,%s,%d,%d,%.4g,%.4g,%.4g,%.4g,%.6g,%.3g,%.4g,%.3g,%zu,", r.pattern.c_str(),
                 r.res.c_str(), r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms,
                 r.final_objective, r.dog_max, r.factorizations, r.dog_max_over_run, r.run_medians.size());
-  auto optional = [](const std::optional<double>& v) {
-    char text[32] = "";
-    if (v) std::snprintf(text, sizeof text, "%.4g", *v);
-    return std::string(text);
-  };
-  return buf + optional(r.speedup) + "," + optional(r.speedup_paired) + "\n";
+  return buf + optional_csv_number(r.speedup, 4) + "," + optional_csv_number(r.speedup_paired, 4) + "\n";
 }
 
 std::vector<BenchCase> thesis_grid(const std::string& dir, const std::string& mode) {

@@ -82,6 +82,10 @@ using BenchProgress = std::function<void(const BenchCase&, int repeat, int itera
 std::vector<BenchResult> run_benchmark_rounds(const std::vector<BenchCase>& cases, const BenchOptions& options,
                                               const BenchProgress& progress = {});
 
+/// A number for a CSV field: printf's %g with `digits` significant digits; empty when absent.
+std::string csv_number(double v, int digits);
+std::string optional_csv_number(const std::optional<double>& v, int digits);
+
 /// The CSV header and row of a result (columns: pattern, res, mode, vertices, dof, median_ms,
 /// ms_per_dof, sqp_steps, factor_ms, final_objective, dog_max, factorizations, dog_max_over_run,
 /// repeats, speedup, speedup_paired; the last two empty without a standard result).

@@ -32,16 +32,6 @@ CompareRow skipped(CompareRow row, const std::string& why) {
   return row;
 }
 
-std::string number(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
-std::string optional_number(const std::optional<double>& v, int digits) {
-  return v ? number(*v, digits) : std::string();
-}
-
 }  // namespace
 
 const char* to_string(CompareStatus s) {
@@ -163,11 +153,11 @@ std::vector<std::string> compare_fields(const CompareRow& r) {
     f.resize(compare_columns().size() - 2);
   } else {
     f.insert(f.end(), {std::to_string(r.vertices), std::to_string(r.dof), std::to_string(r.iterations),
-                       number(r.final_objective, 9), optional_number(r.objective_ratio, 9), number(r.median_ms, 4),
-                       optional_number(r.speedup, 4), number(r.total_s, 4), optional_number(r.total_speedup, 4),
-                       optional_number(r.speedup_paired, 4),
-                       number(r.dog_max, 3), number(r.dog_max_run, 3),
-                       number(r.stitch_gap_max, 3), r.folded ? "1" : "0"});
+                       csv_number(r.final_objective, 9), optional_csv_number(r.objective_ratio, 9),
+                       csv_number(r.median_ms, 4), optional_csv_number(r.speedup, 4), csv_number(r.total_s, 4),
+                       optional_csv_number(r.total_speedup, 4), optional_csv_number(r.speedup_paired, 4),
+                       csv_number(r.dog_max, 3), csv_number(r.dog_max_run, 3), csv_number(r.stitch_gap_max, 3),
+                       r.folded ? "1" : "0"});
   }
   f.push_back(to_string(r.status));
   f.push_back(r.note);
@@ -179,8 +169,8 @@ std::string series_csv_header() { return "pattern,res,mode,iteration,objective,m
 std::string series_csv_rows(const CompareRow& r) {
   std::string out;
   for (const auto& p : r.series)
-    out += csv_line({r.pattern, r.res, r.mode, std::to_string(p.iteration), number(p.objective, 9), number(p.ms, 4),
-                     number(p.dog_max, 3), number(p.stitch_gap_max, 3)});
+    out += csv_line({r.pattern, r.res, r.mode, std::to_string(p.iteration), csv_number(p.objective, 9),
+                     csv_number(p.ms, 4), csv_number(p.dog_max, 3), csv_number(p.stitch_gap_max, 3)});
   return out;
 }
 
