@@ -89,12 +89,14 @@ void apply_coarse(const Field& f, CoarseOptions& o) {
 }
 
 void apply_twolevel(const Field& f, TwoLevelOptions& o) {
-  f.expect_object({"link_weight", "fold_sharpness", "standard_finish", "finish_fold_bias_cap", "concurrent_coarse"});
+  f.expect_object({"link_weight", "fold_sharpness", "standard_finish", "finish_fold_bias_cap", "concurrent_coarse",
+                   "coarse_every"});
   if (f.has("link_weight")) o.link_weight = f["link_weight"].non_negative();
   if (f.has("fold_sharpness")) o.fold_sharpness = f["fold_sharpness"].positive();
   if (f.has("standard_finish")) o.standard_finish = f["standard_finish"].integer(0);
   if (f.has("finish_fold_bias_cap")) o.finish_fold_bias_cap = f["finish_fold_bias_cap"].at_least(1);
   if (f.has("concurrent_coarse")) o.concurrent_coarse = f["concurrent_coarse"].boolean();
+  if (f.has("coarse_every")) o.coarse_every = f["coarse_every"].integer(1);
 }
 
 void apply_admm(const Field& f, AdmmOptions& o) {
@@ -369,7 +371,8 @@ nlohmann::json to_json(const RunConfig& c) {
           {"twolevel", {{"link_weight", c.twolevel.link_weight}, {"fold_sharpness", c.twolevel.fold_sharpness},
                         {"standard_finish", c.twolevel.standard_finish},
                         {"finish_fold_bias_cap", c.twolevel.finish_fold_bias_cap},
-                        {"concurrent_coarse", c.twolevel.concurrent_coarse}}},
+                        {"concurrent_coarse", c.twolevel.concurrent_coarse},
+                        {"coarse_every", c.twolevel.coarse_every}}},
           {"switches", switches}};
 }
 

@@ -28,6 +28,7 @@ std::string TwoLevelOptions::validate() const {
   if (standard_finish < 0) return "standard_finish must be >= 0";
   if (!(finish_fold_bias_cap >= 1) || !std::isfinite(finish_fold_bias_cap))
     return "finish_fold_bias_cap must be a finite number >= 1";
+  if (coarse_every < 1) return "coarse_every must be >= 1";
   return "";
 }
 
@@ -48,7 +49,10 @@ void TwoLevelMode::set_time(double t) {
   fine_.set_time(t);
 }
 
-void TwoLevelMode::start_from(const Dofs& x) { coarse_.start_from(x); }
+void TwoLevelMode::start_from(const Dofs& x) {
+  coarse_.start_from(x);
+  since_coarse_ = 0;  // a coarse step first, from the new coarse state
+}
 
 void TwoLevelMode::set_iterations_left(int left) {
   iterations_left_ = left;
@@ -80,22 +84,35 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   if (finish_) return finish_iteration(x, last);
   const Dofs x0 = x, c0 = coarse_.state();
-  StepReport coarse = coarse_.step(x);
-  if (coarse.failed) {
-    coarse.failure = "coarse step: " + coarse.failure;
-    return coarse;
+  const int since0 = since_coarse_;
+  const Dofs share0 = correction_share_;
+  const bool coarse_due = since_coarse_ % options_.coarse_every == 0 || correction_share_.size() != x.size();
+  StepReport coarse;
+  if (coarse_due) {
+    coarse = coarse_.step(x);
+    if (coarse.failed) {
+      coarse.failure = "coarse step: " + coarse.failure;
+      return coarse;
+    }
+    const Prolongation& P = coarse_.prolongation();
+    correction_share_ = (P.apply(coarse_.state()) - P.apply(c0)) / options_.coarse_every;
+    since_coarse_ = 0;
   }
-  const Prolongation& P = coarse_.prolongation();
-  x += P.apply(coarse_.state()) - P.apply(c0);
+  x += correction_share_;
+  ++since_coarse_;
   // The next iteration's coarse step beside the round, unless there is none: the run's last
-  // iteration, or the next one belongs to the standard finish.
+  // iteration, the next one belongs to the standard finish or takes no coarse step.
   const bool next_is_two_level = iterations_left_ == kOpenEnded || iterations_left_ - 1 >= options_.standard_finish;
+  const bool next_coarse_due = since_coarse_ % options_.coarse_every == 0;
   StepReport report;
   coarse_.run_beside([&] { report = fine_.iterate(x, last); },
-                     options_.concurrent_coarse && !last && next_is_two_level ? next_time_ : std::nullopt);
+                     options_.concurrent_coarse && !last && next_is_two_level && next_coarse_due ? next_time_
+                                                                                                   : std::nullopt);
   if (report.failed) {
     x = x0;
     coarse_.set_state(c0);
+    since_coarse_ = since0;
+    correction_share_ = share0;
     report.failure = "fine step: " + report.failure;
     return report;
   }

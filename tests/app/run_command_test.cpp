@@ -220,6 +220,8 @@ INSTANTIATE_TEST_SUITE_P(
                                  {"$.twolevel.finish_fold_bias_cap", ">= 1"}},
                       ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
                                  {"$.twolevel.fold_sharpness"}},
+                      ConfigCase{"coarse_every_zero", R"({"twolevel": {"coarse_every": 0}})",
+                                 {"$.twolevel.coarse_every"}},
                       ConfigCase{"concurrent_coarse_not_boolean", R"({"twolevel": {"concurrent_coarse": 1}})",
                                  {"$.twolevel.concurrent_coarse"}},
                       ConfigCase{"coarse_concurrent_coarse_not_boolean", R"({"coarse": {"concurrent_coarse": "yes"}})",

@@ -110,6 +110,31 @@ TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
   EXPECT_TRUE(run("twolevel", config, 1).x == run("twolevel", config, 2).x);
 }
 
+// A two-level run iteration by iteration: every iteration's fine and coarse states and the coarse
+// steps taken from those computed ahead.
+struct SteppedRun {
+  std::vector<Dofs> fine, coarse;
+  int taken_ahead = 0;
+};
+
+SteppedRun run_stepwise(RunConfig config, bool concurrent) {
+  config.twolevel.concurrent_coarse = concurrent;
+  DogProblem problem(model().fine, model().fine_topology, config.weights);
+  const Scenario scenario = make_scenario(config, model().fine);
+  TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
+  SteppedRun r;
+  Dofs x = scenario.start(model().fine);
+  const int total = config.iterations + config.hold;
+  for (int k = 1; k <= total; ++k) {
+    const IterationReport report = run_iteration(mode, problem, scenario, x, k, total - k);
+    EXPECT_FALSE(report.step.failed) << report.step.failure;
+    r.fine.push_back(x);
+    r.coarse.push_back(mode.coarse_state());
+  }
+  r.taken_ahead = mode.coarse_level().steps_taken_ahead();
+  return r;
+}
+
 // $.twolevel.concurrent_coarse (default on): the next iteration's coarse step runs beside this
 // iteration's fine round and the next iteration takes it (CoarseLevel::run_beside). Without link
 // targets the coarse step reads nothing of the fine mesh, so the runs are those of the steps one
@@ -117,30 +142,9 @@ TEST(TwoLevelMode, SameResultWhateverTheThreadCount) {
 // iteration but the first takes a step computed ahead, up to the standard finish; with link
 // targets none does.
 TEST(TwoLevelMode, TheCoarseStepComputedAheadChangesNoResult) {
-  struct Run {
-    std::vector<Dofs> fine, coarse;
-    int taken_ahead = 0;
-  };
-  auto run = [](RunConfig config, bool concurrent) {
-    config.twolevel.concurrent_coarse = concurrent;
-    DogProblem problem(model().fine, model().fine_topology, config.weights);
-    const Scenario scenario = make_scenario(config, model().fine);
-    TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
-    Run r;
-    Dofs x = scenario.start(model().fine);
-    const int total = config.iterations + config.hold;
-    for (int k = 1; k <= total; ++k) {
-      const IterationReport report = run_iteration(mode, problem, scenario, x, k, total - k);
-      EXPECT_FALSE(report.step.failed) << report.step.failure;
-      r.fine.push_back(x);
-      r.coarse.push_back(mode.coarse_state());
-    }
-    r.taken_ahead = mode.coarse_level().steps_taken_ahead();
-    return r;
-  };
   RunConfig config = no_finish(test::short_run(14, 4));
   ASSERT_TRUE(config.twolevel.concurrent_coarse);  // the default
-  const Run ahead = run(config, true), sequential = run(config, false);
+  const SteppedRun ahead = run_stepwise(config, true), sequential = run_stepwise(config, false);
   EXPECT_EQ(ahead.taken_ahead, 17);
   EXPECT_EQ(sequential.taken_ahead, 0);
   ASSERT_EQ(ahead.fine.size(), 18u);
@@ -150,15 +154,36 @@ TEST(TwoLevelMode, TheCoarseStepComputedAheadChangesNoResult) {
   }
   // With the standard finish (its last 10 of 18 iterations): ahead up to the finish only.
   config.twolevel.standard_finish = 10;
-  const Run finished = run(config, true), finished_sequential = run(config, false);
+  const SteppedRun finished = run_stepwise(config, true), finished_sequential = run_stepwise(config, false);
   EXPECT_EQ(finished.taken_ahead, 7);
   EXPECT_TRUE(finished.fine.back() == finished_sequential.fine.back());
   // With link targets the coarse step reads the fine state: nothing is computed ahead.
   config = no_finish(test::short_run(6, 0));
   config.twolevel.link_weight = 0.1;
-  const Run linked = run(config, true);
+  const SteppedRun linked = run_stepwise(config, true);
   EXPECT_EQ(linked.taken_ahead, 0);
-  EXPECT_TRUE(linked.fine.back() == run(config, false).fine.back());
+  EXPECT_TRUE(linked.fine.back() == run_stepwise(config, false).fine.back());
+}
+
+// $.twolevel.coarse_every = 2: a coarse step in every other iteration (the first, the third, ...),
+// computed ahead beside the round before it, its displacement spread over two iterations; the
+// fine sheet still keeps up with the drag and stays on its DOG constraints.
+TEST(TwoLevelMode, ACoarseStepEveryOtherIteration) {
+  RunConfig config = no_finish(test::short_run(14, 4));
+  config.twolevel.coarse_every = 2;
+  const SteppedRun ahead = run_stepwise(config, true), sequential = run_stepwise(config, false);
+  ASSERT_EQ(ahead.fine.size(), 18u);
+  EXPECT_EQ(ahead.taken_ahead, 8);  // the steps of iterations 3, 5, ..., 17
+  for (size_t k = 0; k < ahead.fine.size(); ++k) {
+    EXPECT_TRUE(ahead.fine[k] == sequential.fine[k]) << "iteration " << k + 1;
+    if (k % 2 == 1) EXPECT_TRUE(ahead.coarse[k] == ahead.coarse[k - 1]) << "iteration " << k + 1;
+    if (k % 2 == 0 && k > 0) EXPECT_FALSE(ahead.coarse[k] == ahead.coarse[k - 1]) << "iteration " << k + 1;
+  }
+  const test::RunResult every2 = run("twolevel", config, 2);
+  const test::RunResult jacobi = run("subsolvers", config, 2);
+  ASSERT_FALSE(every2.summary.failed) << every2.summary.failure;
+  EXPECT_TRUE(every2.reports.back().diagnostics.dog_max < 1e-5);
+  EXPECT_LT(every2.reports.back().diagnostics.stitch_gap_max, 0.5 * jacobi.reports.back().diagnostics.stitch_gap_max);
 }
 
 // The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a run are
