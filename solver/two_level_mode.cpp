@@ -51,7 +51,7 @@ void TwoLevelMode::set_time(double t) {
 
 void TwoLevelMode::start_from(const Dofs& x) {
   coarse_.start_from(x);
-  since_coarse_ = 0;  // a coarse step first, from the new coarse state
+  shares_left_ = 0;  // a coarse step first, from the new coarse state
 }
 
 void TwoLevelMode::set_iterations_left(int left) {
@@ -84,11 +84,9 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
 StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   if (finish_) return finish_iteration(x, last);
   const Dofs x0 = x, c0 = coarse_.state();
-  const int since0 = since_coarse_;
-  const Dofs share0 = correction_share_;
-  const bool coarse_due = since_coarse_ % options_.coarse_every == 0 || correction_share_.size() != x.size();
+  const int shares0 = shares_left_;
   StepReport coarse;
-  if (coarse_due) {
+  if (shares_left_ == 0) {
     coarse = coarse_.step(x);
     if (coarse.failed) {
       coarse.failure = "coarse step: " + coarse.failure;
@@ -96,23 +94,21 @@ StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
     }
     const Prolongation& P = coarse_.prolongation();
     correction_share_ = (P.apply(coarse_.state()) - P.apply(c0)) / options_.coarse_every;
-    since_coarse_ = 0;
+    shares_left_ = options_.coarse_every;
   }
   x += correction_share_;
-  ++since_coarse_;
+  --shares_left_;
   // The next iteration's coarse step beside the round, unless there is none: the run's last
   // iteration, the next one belongs to the standard finish or takes no coarse step.
   const bool next_is_two_level = iterations_left_ == kOpenEnded || iterations_left_ - 1 >= options_.standard_finish;
-  const bool next_coarse_due = since_coarse_ % options_.coarse_every == 0;
   StepReport report;
   coarse_.run_beside([&] { report = fine_.iterate(x, last); },
-                     options_.concurrent_coarse && !last && next_is_two_level && next_coarse_due ? next_time_
+                     options_.concurrent_coarse && !last && next_is_two_level && shares_left_ == 0 ? next_time_
                                                                                                    : std::nullopt);
   if (report.failed) {
     x = x0;
     coarse_.set_state(c0);
-    since_coarse_ = since0;
-    correction_share_ = share0;
+    shares_left_ = shares0;  // the share changed only if a coarse step is due again
     report.failure = "fine step: " + report.failure;
     return report;
   }

@@ -106,7 +106,7 @@ class TwoLevelMode : public Mode {
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
   int iterations_left_ = kOpenEnded;      // after the current iteration
   std::optional<double> next_time_;       // of the next iteration, when the run has one
-  int since_coarse_ = 0;                  // two-level iterations since the last coarse step
+  int shares_left_ = 0;                   // iterations still to take a share; 0: a coarse step is due
   Dofs correction_share_;                 // fine displacement per iteration of the last coarse step
 };
 
