@@ -8,10 +8,10 @@
 
 #include "app/commands.h"
 #include "app/threads.h"
-#include "geometry/atomic_output.h"
-#include "geometry/errors.h"
-#include "solver/benchmark.h"
-#include "solver/mode_factory.h"
+#include "base/atomic_output.h"
+#include "base/errors.h"
+#include "solver/experiments/benchmark.h"
+#include "solver/modes/mode_factory.h"
 
 namespace sdog::cli {
 namespace {

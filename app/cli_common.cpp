@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::cli {
 

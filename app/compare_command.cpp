@@ -14,11 +14,11 @@
 #include "app/progress.h"
 #include "app/threads.h"
 #include "app/versions.h"
-#include "geometry/atomic_output.h"
-#include "geometry/errors.h"
-#include "geometry/text_format.h"
-#include "solver/comparison.h"
-#include "solver/mode_factory.h"
+#include "base/atomic_output.h"
+#include "base/errors.h"
+#include "base/text_format.h"
+#include "solver/experiments/comparison.h"
+#include "solver/modes/mode_factory.h"
 #include "ui/vis/line_chart.h"
 
 namespace sdog::cli {

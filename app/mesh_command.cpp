@@ -5,8 +5,8 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "geometry/atomic_output.h"
-#include "geometry/text_format.h"
+#include "base/atomic_output.h"
+#include "base/text_format.h"
 #include "ui/vis/model_files.h"
 
 namespace sdog::cli {

@@ -3,7 +3,7 @@
 // objective, DOG constraint maximum, speed and remaining time.
 #include <chrono>
 
-#include "solver/run.h"
+#include "solver/run/run.h"
 
 namespace sdog::cli {
 

@@ -6,9 +6,9 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "geometry/atomic_output.h"
-#include "solver/mode_factory.h"
-#include "solver/run_config.h"
+#include "base/atomic_output.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run_config.h"
 #include "ui/vis/picture.h"
 
 namespace sdog::cli {

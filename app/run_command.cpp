@@ -11,12 +11,12 @@
 #include "app/progress.h"
 #include "app/threads.h"
 #include "app/versions.h"
-#include "geometry/atomic_output.h"
-#include "geometry/errors.h"
-#include "geometry/text_format.h"
-#include "solver/benchmark.h"
-#include "solver/mode_factory.h"
-#include "solver/run_log.h"
+#include "base/atomic_output.h"
+#include "base/errors.h"
+#include "base/text_format.h"
+#include "solver/experiments/benchmark.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run_log.h"
 #include "ui/vis/frame_writer.h"
 
 namespace sdog::cli {

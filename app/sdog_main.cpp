@@ -5,7 +5,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{

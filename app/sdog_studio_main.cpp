@@ -15,8 +15,8 @@
 #include <map>
 
 #include "app/versions.h"
-#include "geometry/errors.h"
-#include "solver/mode_factory.h"
+#include "base/errors.h"
+#include "solver/modes/mode_factory.h"
 #include "ui/studio/frame_rate.h"
 #include "ui/studio/main_window.h"
 #include "ui/vis/layers.h"

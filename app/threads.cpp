@@ -5,7 +5,7 @@
 #include <memory>
 #include <thread>
 
-#include "solver/blas_threads.h"
+#include "solver/sqp/blas_threads.h"
 
 namespace sdog::cli {
 

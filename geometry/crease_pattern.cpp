@@ -4,9 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/plane_geometry.h"
-#include "geometry/text_format.h"
+#include "base/text_format.h"
 
 namespace sdog {
 namespace {

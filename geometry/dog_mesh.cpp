@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "geometry/text_format.h"
+#include "base/text_format.h"
 
 namespace sdog {
 

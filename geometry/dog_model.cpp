@@ -1,6 +1,6 @@
 #include "geometry/dog_model.h"
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog {
 namespace {

@@ -4,8 +4,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "geometry/errors.h"
-#include "geometry/text_format.h"
+#include "base/errors.h"
+#include "base/text_format.h"
 
 namespace sdog {
 

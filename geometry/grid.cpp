@@ -5,8 +5,8 @@
 #include <cmath>
 #include <set>
 
-#include "geometry/errors.h"
-#include "geometry/text_format.h"
+#include "base/errors.h"
+#include "base/text_format.h"
 
 namespace sdog {
 

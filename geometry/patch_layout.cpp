@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "geometry/errors.h"
-#include "geometry/text_format.h"
+#include "base/errors.h"
+#include "base/text_format.h"
 
 namespace sdog {
 namespace {

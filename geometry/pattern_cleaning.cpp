@@ -7,9 +7,9 @@
 #include <set>
 #include <unordered_map>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/plane_geometry.h"
-#include "geometry/text_format.h"
+#include "base/text_format.h"
 
 namespace sdog {
 

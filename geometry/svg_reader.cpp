@@ -10,7 +10,7 @@
 #include <optional>
 #include <pugixml.hpp>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/svg_flatten.h"
 #include "geometry/svg_path_data.h"
 #include "geometry/svg_style.h"

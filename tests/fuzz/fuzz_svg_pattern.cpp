@@ -6,7 +6,7 @@
 #include <string>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/patch_layout.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

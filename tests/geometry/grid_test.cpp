@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/grid.h"
 
 namespace sdog {

@@ -7,7 +7,7 @@
 #include <map>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "tests/test_support.h"
 
 namespace sdog {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/patch_layout.h"
 #include "geometry/pattern_cleaning.h"
 #include "tests/geometry/pattern_builders.h"

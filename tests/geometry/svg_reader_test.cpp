@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "geometry/svg_flatten.h"
 #include "geometry/svg_path_data.h"
 #include "geometry/svg_reader.h"

@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
-#include "solver/admm_mode.h"
-#include "solver/crease_geometry.h"
-#include "solver/diagnostics.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
+#include "base/errors.h"
+#include "solver/modes/admm_mode.h"
+#include "solver/terms/crease_geometry.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

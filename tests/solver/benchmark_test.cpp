@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "solver/benchmark.h"
+#include "solver/experiments/benchmark.h"
 #include "tests/test_support.h"
 
 namespace sdog {

@@ -9,8 +9,8 @@
 #include <set>
 #include <thread>
 
-#include "solver/blas_threads.h"
-#include "solver/patch_stepper.h"
+#include "solver/sqp/blas_threads.h"
+#include "solver/patches/patch_stepper.h"
 #include "tests/solver/probe_patch.h"
 
 namespace sdog {

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "solver/block_matrix.h"
-#include "solver/linear_point_term.h"
+#include "solver/sqp/block_matrix.h"
+#include "solver/terms/linear_point_term.h"
 
 namespace sdog {
 namespace {

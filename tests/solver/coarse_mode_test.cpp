@@ -4,11 +4,11 @@
 #include <tbb/global_control.h>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
-#include "solver/coarse_mode.h"
-#include "solver/mode_factory.h"
-#include "solver/two_level_mode.h"
-#include "solver/run.h"
+#include "base/errors.h"
+#include "solver/modes/coarse_mode.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/modes/two_level_mode.h"
+#include "solver/run/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "solver/comparison.h"
+#include "solver/experiments/comparison.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -4,7 +4,7 @@
 #include <Eigen/Geometry>
 
 #include "geometry/dog_model.h"
-#include "solver/curve_interpolation.h"
+#include "solver/multilevel/curve_interpolation.h"
 #include "tests/test_support.h"
 
 namespace sdog {

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "geometry/dog_model.h"
-#include "solver/crease_geometry.h"
-#include "solver/diagnostics.h"
-#include "solver/final_projection.h"
+#include "solver/terms/crease_geometry.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/modes/final_projection.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -6,7 +6,7 @@
 #include <map>
 
 #include "geometry/dog_model.h"
-#include "solver/mode_factory.h"
+#include "solver/modes/mode_factory.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

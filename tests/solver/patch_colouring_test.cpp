@@ -6,7 +6,7 @@
 #include <set>
 
 #include "geometry/dog_model.h"
-#include "solver/patch_colouring.h"
+#include "solver/patches/patch_colouring.h"
 #include "tests/test_support.h"
 
 namespace sdog {

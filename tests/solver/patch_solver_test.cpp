@@ -3,11 +3,11 @@
 #include <tbb/global_control.h>
 
 #include "geometry/dog_model.h"
-#include "solver/dog_problem.h"
-#include "solver/patch_solver.h"
-#include "solver/patch_sqp.h"
-#include "solver/patch_term.h"
-#include "solver/run_config.h"
+#include "solver/problem/dog_problem.h"
+#include "solver/patches/ceres/patch_solver.h"
+#include "solver/patches/patch_sqp.h"
+#include "solver/patches/patch_term.h"
+#include "solver/run/run_config.h"
 #include "tests/test_support.h"
 
 namespace sdog {

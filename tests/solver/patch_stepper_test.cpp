@@ -5,7 +5,7 @@
 #include <mutex>
 #include <vector>
 
-#include "solver/patch_stepper.h"
+#include "solver/patches/patch_stepper.h"
 #include "tests/solver/probe_patch.h"
 
 namespace sdog {

@@ -4,7 +4,7 @@
 #include <functional>
 #include <utility>
 
-#include "solver/patch_stepper.h"
+#include "solver/patches/patch_stepper.h"
 
 namespace sdog::test {
 

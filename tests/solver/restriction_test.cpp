@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "geometry/dog_model.h"
-#include "solver/restriction.h"
+#include "solver/multilevel/restriction.h"
 #include "tests/test_support.h"
 
 namespace sdog {

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "geometry/dog_model.h"
-#include "solver/diagnostics.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
-#include "solver/run_config.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
+#include "solver/run/run_config.h"
 
 namespace sdog::test {
 

@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
-#include "solver/session.h"
-#include "solver/workspace.h"
+#include "base/errors.h"
+#include "solver/session/session.h"
+#include "solver/session/workspace.h"
 #include "tests/test_support.h"
 
 namespace sdog {

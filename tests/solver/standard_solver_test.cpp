@@ -7,11 +7,11 @@
 #include <limits>
 
 #include "geometry/dog_model.h"
-#include "solver/diagnostics.h"
-#include "solver/fold_seed.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
-#include "solver/run_config.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/problem/fold_seed.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
+#include "solver/run/run_config.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -4,10 +4,10 @@
 #include <tbb/global_control.h>
 
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
-#include "solver/diagnostics.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
+#include "base/errors.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -8,15 +8,15 @@
 #include <random>
 
 #include "geometry/dog_model.h"
-#include "solver/bending.h"
-#include "solver/ceres_cost.h"
-#include "solver/crease_geometry.h"
-#include "solver/dog_constraints.h"
-#include "solver/edge_angles.h"
-#include "solver/fold_bias.h"
-#include "solver/isometry.h"
-#include "solver/linear_point_term.h"
-#include "solver/patch_term.h"
+#include "solver/terms/bending.h"
+#include "solver/patches/ceres/ceres_cost.h"
+#include "solver/terms/crease_geometry.h"
+#include "solver/terms/dog_constraints.h"
+#include "solver/terms/edge_angles.h"
+#include "solver/terms/fold_bias.h"
+#include "solver/terms/isometry.h"
+#include "solver/terms/linear_point_term.h"
+#include "solver/patches/patch_term.h"
 #include "tests/test_support.h"
 
 namespace sdog {

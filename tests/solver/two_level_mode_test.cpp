@@ -9,10 +9,10 @@
 #include <cstdlib>
 
 #include "geometry/dog_model.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
-#include "solver/subsolvers_mode.h"
-#include "solver/two_level_mode.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
+#include "solver/modes/subsolvers_mode.h"
+#include "solver/modes/two_level_mode.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 

@@ -24,7 +24,7 @@
 #include <vtkCommand.h>
 #include <vtkRenderWindowInteractor.h>
 
-#include "solver/term.h"
+#include "solver/terms/term.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <set>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "tests/test_support.h"
 #include "tests/vis/image_compare.h"
 #include "ui/vis/line_chart.h"

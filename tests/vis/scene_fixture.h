@@ -4,7 +4,7 @@
 // scenario plus a 60 degree fold of crease 0, so that handles and angle sites show), and after 40
 // iterations of the twolevel mode (a moving coarse mesh for the links).
 #include "geometry/dog_model.h"
-#include "solver/run_config.h"
+#include "solver/run/run_config.h"
 #include "tests/test_support.h"
 #include "ui/vis/scene_state.h"
 

@@ -15,8 +15,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "geometry/errors.h"
-#include "solver/diagnostics.h"
+#include "base/errors.h"
+#include "solver/problem/diagnostics.h"
 #include "tests/vis/scene_fixture.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"

@@ -11,9 +11,9 @@
 
 #include <filesystem>
 
-#include "geometry/atomic_output.h"
+#include "base/atomic_output.h"
 #include "geometry/dog_model.h"
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "tests/test_support.h"
 #include "ui/vis/model_files.h"
 

@@ -14,8 +14,8 @@
 #include <algorithm>
 #include <exception>
 
-#include "geometry/errors.h"
-#include "solver/mode_factory.h"
+#include "base/errors.h"
+#include "solver/modes/mode_factory.h"
 #include "ui/studio/model_loader.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"

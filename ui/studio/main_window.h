@@ -19,9 +19,9 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/atomic_output.h"
-#include "solver/run_config.h"
-#include "solver/workspace.h"
+#include "base/atomic_output.h"
+#include "solver/run/run_config.h"
+#include "solver/session/workspace.h"
 #include "ui/studio/snapshot.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/offscreen.h"

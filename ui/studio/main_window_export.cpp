@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "geometry/atomic_output.h"
-#include "geometry/errors.h"
+#include "base/atomic_output.h"
+#include "base/errors.h"
 #include "ui/studio/click_drag_style.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/screen_picking.h"

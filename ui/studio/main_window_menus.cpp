@@ -9,7 +9,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 
-#include "solver/mode_factory.h"
+#include "solver/modes/mode_factory.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/solver_panel.h"

@@ -7,7 +7,7 @@
 #include <functional>
 #include <limits>
 
-#include "solver/dog_problem.h"
+#include "solver/problem/dog_problem.h"
 #include "ui/vis/palette.h"
 
 namespace sdog::studio {

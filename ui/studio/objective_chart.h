@@ -6,7 +6,7 @@
 #include <array>
 #include <deque>
 
-#include "solver/run.h"
+#include "solver/run/run.h"
 
 namespace sdog::studio {
 

@@ -4,8 +4,8 @@
 #include <QMetaType>
 #include <string>
 
-#include "solver/run.h"
-#include "solver/session.h"
+#include "solver/run/run.h"
+#include "solver/session/session.h"
 #include "ui/vis/scene_state.h"
 
 namespace sdog::studio {

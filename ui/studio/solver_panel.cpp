@@ -10,7 +10,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "solver/mode_factory.h"
+#include "solver/modes/mode_factory.h"
 #include "ui/studio/solver_settings.h"
 
 namespace sdog::studio {

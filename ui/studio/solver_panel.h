@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/run_config.h"
+#include "solver/run/run_config.h"
 
 class QAction;
 class QComboBox;

@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "solver/run_config.h"
+#include "solver/run/run_config.h"
 
 class QFormLayout;
 

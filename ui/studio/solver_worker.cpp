@@ -3,7 +3,7 @@
 #include <QMetaObject>
 #include <exception>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::studio {
 

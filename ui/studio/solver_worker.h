@@ -17,10 +17,10 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include "geometry/atomic_output.h"
-#include "solver/run_config.h"
-#include "solver/session.h"
-#include "solver/workspace.h"
+#include "base/atomic_output.h"
+#include "solver/run/run_config.h"
+#include "solver/session/session.h"
+#include "solver/session/workspace.h"
 #include "ui/studio/snapshot.h"
 #include "ui/vis/frame_writer.h"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "geometry/atomic_output.h"
-#include "geometry/errors.h"
+#include "base/atomic_output.h"
+#include "base/errors.h"
 #include "ui/vis/legends.h"
 
 namespace sdog::vis {

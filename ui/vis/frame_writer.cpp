@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "geometry/mesh_arrays.h"
-#include "solver/diagnostics.h"
+#include "solver/problem/diagnostics.h"
 #include "ui/vis/vtk_meshes.h"
 
 namespace sdog::vis {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "geometry/atomic_output.h"
+#include "base/atomic_output.h"
 #include "geometry/dog_model.h"
 #include "geometry/mesh_arrays.h"
-#include "solver/run.h"
+#include "solver/run/run.h"
 
 namespace sdog::vis {
 

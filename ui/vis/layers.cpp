@@ -4,7 +4,7 @@
 #include <optional>
 #include <sstream>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::vis {
 namespace {

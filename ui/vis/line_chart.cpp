@@ -18,7 +18,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::vis {
 namespace {

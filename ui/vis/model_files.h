@@ -6,7 +6,7 @@
 //   dashed pattern.vtp  the curves as drawn; cell arrays kind (0 boundary, 1 crease), index, dashed
 #include <string>
 
-#include "geometry/atomic_output.h"
+#include "base/atomic_output.h"
 #include "geometry/dog_model.h"
 
 namespace sdog::vis {

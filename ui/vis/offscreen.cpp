@@ -9,7 +9,7 @@
 #include <regex>
 #include <thread>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "ui/vis/vtk_meshes.h"
 
 // Last: Xlib defines macros (Status, Success, None) that clash with other headers.

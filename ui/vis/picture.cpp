@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::vis {
 

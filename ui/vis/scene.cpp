@@ -18,7 +18,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 #include "ui/vis/color_maps.h"
 #include "ui/vis/legends.h"
 #include "ui/vis/mesh_view.h"

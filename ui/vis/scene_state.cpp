@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/errors.h"
-#include "solver/mode_factory.h"
-#include "solver/run.h"
+#include "base/errors.h"
+#include "solver/modes/mode_factory.h"
+#include "solver/run/run.h"
 
 namespace sdog::vis {
 

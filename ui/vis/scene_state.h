@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "geometry/dog_model.h"
-#include "solver/diagnostics.h"
-#include "solver/run_config.h"
-#include "solver/scenario.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/run/run_config.h"
+#include "solver/problem/scenario.h"
 
 namespace sdog::vis {
 

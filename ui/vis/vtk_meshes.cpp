@@ -14,7 +14,7 @@
 
 #include <mutex>
 
-#include "geometry/errors.h"
+#include "base/errors.h"
 
 namespace sdog::vis {
 namespace {

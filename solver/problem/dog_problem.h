@@ -1,0 +1,81 @@
+#pragma once
+// The terms of a deformation problem on one DOG mesh, with the thesis's default weights:
+// bending 1, isometry 20000/|E| (|E| = all quad edges, duplicates included), stitching 10,
+// positions 25, edge points 25, angles 1000, fold bias 1, link 0 (used by the coarse modes).
+#include <string>
+#include <vector>
+
+#include "geometry/dog_mesh.h"
+#include "geometry/quad_topology.h"
+#include "solver/terms/bending.h"
+#include "solver/terms/crease_geometry.h"
+#include "solver/terms/dog_constraints.h"
+#include "solver/terms/edge_angles.h"
+#include "solver/terms/fold_bias.h"
+#include "solver/terms/isometry.h"
+#include "solver/terms/linear_point_term.h"
+#include "solver/terms/weighted_term.h"
+
+namespace sdog {
+
+struct Weights {
+  double bending = 1;
+  double isometry = 20000;  ///< divided by the number of quad edges
+  double stitching = 10;
+  double positions = 25;
+  double edge_points = 25;
+  double angles = 1000;
+  double fold_bias = 1;
+  double link = 0;
+  std::string validate() const;
+};
+
+/// Index of each objective term in DogProblem::objective_terms() (the run log's column order).
+enum TermIndex : int {
+  kBending = 0,
+  kIsometry,
+  kPositions,
+  kEdgePoints,
+  kStitching,
+  kAngles,
+  kFoldBias,
+  kLink,
+  kTermCount
+};
+const char* term_name(int index);
+
+class DogProblem {
+ public:
+  DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& weights = {},
+             double fold_sharpness = kFoldSharpness);
+  DogProblem(const DogProblem&) = delete;
+  DogProblem& operator=(const DogProblem&) = delete;
+
+  const DogMesh& mesh() const { return mesh_; }
+  const QuadTopology& topology() const { return topology_; }
+  const Dofs& rest() const { return rest_; }
+
+  /// The objective terms (in TermIndex order) with their effective weights.
+  std::vector<WeightedTerm> objective_terms() const;
+  /// The objective terms whose blocks join two patches and that a patch problem keeps with the
+  /// other patch frozen (patch_term.h): fold bias and dihedral angles. (Stitching, the other one,
+  /// becomes per-patch targets instead.)
+  std::vector<const Term*> cross_patch_terms() const { return {&fold_bias, &angles}; }
+  double effective_weight(int index) const;
+
+  Weights weights;
+  LinearPointTerm bending{"bending"};
+  IsometryTerm isometry;
+  LinearPointTerm positions{"positions"}, edge_points{"edge_points"}, stitching{"stitching"}, link{"link"};
+  EdgeAngleTerm angles;
+  std::vector<FoldSite> sites;
+  FoldBiasTerm fold_bias;
+  DogConstraints dog;
+
+ private:
+  const DogMesh& mesh_;
+  const QuadTopology& topology_;
+  Dofs rest_;
+};
+
+}  // namespace sdog

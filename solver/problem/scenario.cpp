@@ -1,0 +1,126 @@
+#include "solver/problem/scenario.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/problem/fold_seed.h"
+
+namespace sdog {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+// Vertices at a grid corner (several when a crease ends there); -1 if none.
+int grid_corner_vertex(const DogMesh& mesh, int i, int j, bool last) {
+  int found = -1;
+  for (int v = 0; v < mesh.vertex_count(); ++v)
+    if (mesh.grid[v] == Eigen::Vector2i(i, j)) {
+      found = v;
+      if (!last) break;
+    }
+  return found;
+}
+
+int nearest_vertex(const DogMesh& mesh, const Eigen::Vector2d& p) {
+  int best = 0;
+  for (int v = 1; v < mesh.vertex_count(); ++v)
+    if ((mesh.V.row(v).head<2>().transpose() - p).squaredNorm() <
+        (mesh.V.row(best).head<2>().transpose() - p).squaredNorm())
+      best = v;
+  return best;
+}
+
+// The crease point's position along a curve (its neighbours), if it has two neighbours.
+bool neighbours_of(const DogMesh& mesh, int point, CreaseNeighbours& nb) {
+  for (const auto& curve : mesh.stitching.curves)
+    for (int k = 0; k < static_cast<int>(curve.points.size()); ++k)
+      if (curve.points[k] == point) {
+        nb = crease_neighbours(curve, k);
+        return nb.prev >= 0 && nb.next >= 0;
+      }
+  return false;
+}
+
+}  // namespace
+
+double crease_tangent_angle(const DogMesh& mesh, int point) {
+  const auto& cp = mesh.stitching.points[point];
+  CreaseNeighbours nb;
+  if (cp.copies.size() != 2 || !neighbours_of(mesh, point, nb))
+    throw std::logic_error("crease point " + std::to_string(point) + " has no angle");
+  auto flat = [&](int q) {
+    const EdgePoint& e = mesh.stitching.points[q].copies.front();
+    return Eigen::Vector3d(e.t * mesh.V.row(e.v1) + (1 - e.t) * mesh.V.row(e.v2));
+  };
+  const Eigen::Vector3d T = circle_tangent(flat(nb.prev), flat(point), flat(nb.next));
+  const Eigen::Vector3d e = (mesh.V.row(cp.copies[0].v1) - mesh.V.row(cp.copies[0].v2)).transpose().normalized();
+  // alpha and pi - alpha give the same cosine target.
+  return std::acos(std::clamp(std::abs(T.dot(e)), 0.0, 1.0));
+}
+
+void Scenario::install(DogProblem& problem) const {
+  if (!keeps_folds) problem.weights.fold_bias = 0;  // nothing may push the creases to stay folded
+  problem.positions.clear();
+  for (const auto& pc : positions) problem.positions.add({{pc.vertex, 1.0}}, pc.start);
+  problem.angles.clear();
+  const Dofs& rest = problem.rest();
+  for (const auto& ac : angles) {
+    const auto& cp = problem.mesh().stitching.points[ac.point];
+    const EdgePoint& a = cp.copies[0];
+    const EdgePoint& b = cp.copies[1];
+    const double la = (vertex_of(rest, a.v1) - vertex_of(rest, a.v2)).norm();
+    const double lb = (vertex_of(rest, b.v1) - vertex_of(rest, b.v2)).norm();
+    problem.angles.add(a.v1, a.v2, b.v1, b.v2, la * lb, 1.0);
+  }
+  apply(problem, 0);
+}
+
+void Scenario::apply(DogProblem& problem, double t) const {
+  for (size_t k = 0; k < positions.size(); ++k)
+    problem.positions.set_target(static_cast<int>(k), positions[k].start + t * (positions[k].end - positions[k].start));
+  for (size_t k = 0; k < angles.size(); ++k) {
+    const auto& ac = angles[k];
+    const double theta = (ac.start_degrees + t * (ac.end_degrees - ac.start_degrees)) * kDegree;
+    problem.angles.set_cos(static_cast<int>(k), crease_edge_cosine(ac.alpha, theta));
+  }
+}
+
+double Scenario::time_of(int iteration) const {
+  return iterations <= 0 ? 1.0 : std::min(1.0, static_cast<double>(iteration) / iterations);
+}
+
+Dofs Scenario::start(const DogMesh& mesh) const {
+  return initial.size() > 0 ? initial : fold_seed(mesh, curve_signs);
+}
+
+Scenario corners_scenario(const DogMesh& mesh, int iterations, int hold) {
+  Scenario s;
+  s.name = "corners";
+  s.iterations = iterations;
+  s.hold = hold;
+  int a = grid_corner_vertex(mesh, 0, 0, false);
+  int c = grid_corner_vertex(mesh, mesh.nx() - 1, mesh.ny() - 1, true);
+  if (a < 0) a = nearest_vertex(mesh, {mesh.xs.front(), mesh.ys.front()});
+  if (c < 0) c = nearest_vertex(mesh, {mesh.xs.back(), mesh.ys.back()});
+  const Eigen::Vector3d pa = mesh.V.row(a).transpose(), pc = mesh.V.row(c).transpose();
+  s.positions.push_back({a, pa, pa});
+  s.positions.push_back({c, pc, Eigen::Vector3d(0.6 * pc.x(), 0.5 * (pc.y() + pa.y()), 0.4 * (pc.y() + pa.y()))});
+  return s;
+}
+
+Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int hold) {
+  Scenario s;
+  s.name = "fold";
+  s.iterations = iterations;
+  s.hold = hold;
+  for (const auto& site : fold_sites(mesh)) s.angles.push_back(angle_constraint(mesh, site.point, 0.0, degrees));
+  s.curve_signs.assign(mesh.stitching.curves.size(), degrees > 0 ? 1.0 : degrees < 0 ? -1.0 : 0.0);
+  return s;
+}
+
+AngleConstraint angle_constraint(const DogMesh& mesh, int point, double start_degrees, double end_degrees) {
+  return {point, start_degrees, end_degrees, crease_tangent_angle(mesh, point)};
+}
+
+}  // namespace sdog

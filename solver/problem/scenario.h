@@ -1,0 +1,71 @@
+#pragma once
+// Scenarios: what the user asks of the sheet over time. Targets move linearly with
+// t = iteration / iterations (clamped to 1; the run then holds them for `hold` iterations).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "solver/problem/dog_problem.h"
+
+namespace sdog {
+
+/// Soft position constraint on a vertex, target moving from `start` to `end` (mesh units).
+struct PositionConstraint {
+  int vertex;
+  Eigen::Vector3d start, end;
+};
+
+/// Dihedral angle at a crease point (its two edge copies), from start to end (degrees; 0 = flat).
+struct AngleConstraint {
+  int point;
+  double start_degrees = 0, end_degrees = 0;
+  double alpha = 0;  ///< crease_tangent_angle of the point (radians)
+};
+
+struct Scenario {
+  std::string name;
+  int iterations = 250;  ///< iterations over which targets move
+  int hold = 50;         ///< iterations with the final targets
+  std::vector<PositionConstraint> positions;
+  std::vector<AngleConstraint> angles;
+  /// Fold direction per crease curve for the start state (+1 valley, -1 mountain, 0 none); see
+  /// fold_seed.h.
+  std::vector<double> curve_signs;
+  /// The start state, if not the flat mesh (flatten_scenario.h); empty: start from the flat mesh.
+  Dofs initial;
+  /// False when the scenario unfolds the creases: install() sets the fold-bias weight to 0 and the
+  /// standard mode's folding mode (fold check and retries) is off.
+  bool keeps_folds = true;
+
+  /// Creates the problem's position and angle blocks (once; it fixes the sparsity pattern); zeroes
+  /// the fold-bias weight unless keeps_folds.
+  void install(DogProblem& problem) const;
+  /// Sets the targets for time t in [0, 1].
+  void apply(DogProblem& problem, double t) const;
+  /// t before iteration `k` (1-based): min(1, k / iterations).
+  double time_of(int iteration) const;
+  /// The state a run starts from: `initial` if given, else the flat mesh tilted towards
+  /// curve_signs (fold_seed.h).
+  Dofs start(const DogMesh& mesh) const;
+};
+
+/// The thesis protocol: vertex a (the bottom-left grid corner) held, vertex c (the top-right grid
+/// corner) moved from p_c to (0.6 x_c, 0.5 (y_c + y_a), 0.4 (y_c + y_a)) in 250 iterations, then
+/// held for 50. (Mesh units, origin at the sheet's bottom-left corner: the reference's frame up to
+/// a mirror in z, which leaves every objective value unchanged.)
+Scenario corners_scenario(const DogMesh& mesh, int iterations = 250, int hold = 50);
+
+/// Every crease point where a crease crosses the inside of a grid edge between two patches folds
+/// from flat to `degrees` (curved folding without dragging); positive angles fold valleys,
+/// negative ones mountains (the sign only picks the start tilt: the targets are cosines).
+Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250, int hold = 50);
+
+/// alpha at a crease point: the angle between the crease tangent (circle through the point and its
+/// neighbours, flat state) and the grid edge it crosses. Throws std::logic_error for points
+/// without two neighbours or two copies.
+double crease_tangent_angle(const DogMesh& mesh, int point);
+
+/// An angle constraint at a crease point with its alpha filled in.
+AngleConstraint angle_constraint(const DogMesh& mesh, int point, double start_degrees, double end_degrees);
+
+}  // namespace sdog

@@ -1,0 +1,55 @@
+#include "solver/run/run.h"
+
+#include "base/stopwatch.h"
+
+namespace sdog {
+
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
+                              int iterations_left) {
+  IterationReport report;
+  report.iteration = iteration;
+  report.mode = mode.name();
+  report.t = scenario.time_of(iteration);
+  mode.set_iterations_left(iterations_left);
+  mode.set_time(report.t);
+  mode.set_next_time(iterations_left == 0 ? std::nullopt : std::optional<double>(scenario.time_of(iteration + 1)));
+  const auto t0 = Clock::now();
+  report.step = mode.iterate(x, iterations_left == 0);
+  report.iteration_ms = ms_since(t0);
+  report.diagnostics = diagnose(problem, x);
+  if (report.t < 1) {
+    scenario.apply(problem, 1.0);
+    report.objective_final_targets = weighted_objective(problem, x);
+    scenario.apply(problem, report.t);
+  } else {
+    report.objective_final_targets = report.diagnostics.objective;
+  }
+  return report;
+}
+
+RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel,
+                        const ModeSchedule& schedule) {
+  Mode* current = &mode;
+  const auto start = Clock::now();
+  RunSummary summary;
+  const int total = scenario.iterations + scenario.hold;
+  for (int k = 1; k <= total; ++k) {
+    if (cancel && cancel->load()) break;
+    if (schedule)
+      if (Mode* next = schedule(k, x)) current = next;
+    const IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
+    for (RunObserver* o : observers) o->on_iteration(report, x);
+    summary.last = report;
+    if (report.step.failed) {
+      summary.failed = true;
+      summary.failure = "iteration " + std::to_string(k) + ": " + report.step.failure;
+      break;
+    }
+    summary.iterations = k;
+  }
+  summary.seconds = ms_since(start) / 1000;
+  return summary;
+}
+
+}  // namespace sdog

@@ -1,0 +1,57 @@
+#pragma once
+// A deformation run: the scenario's iterations (targets moving, then held), each computed by a
+// mode and reported with the same diagnostics, to observers (run log, frames, progress, GUI).
+#include <atomic>
+#include <functional>
+#include <vector>
+
+#include "solver/problem/diagnostics.h"
+#include "solver/modes/mode.h"
+
+namespace sdog {
+
+struct IterationReport {
+  int iteration = 0;  ///< 1-based
+  std::string mode;   ///< the mode that computed it
+  double t = 0;       ///< scenario time of the targets
+  Diagnostics diagnostics;
+  double objective_final_targets = 0;  ///< weighted objective with the targets of t = 1
+  StepReport step;
+  double iteration_ms = 0;
+};
+
+/// Receives every iteration (and the state after it).
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void on_iteration(const IterationReport& report, const Dofs& x) = 0;
+};
+
+struct RunSummary {
+  int iterations = 0;  ///< completed iterations
+  bool failed = false;
+  std::string failure;
+  IterationReport last;
+  double seconds = 0;
+};
+
+/// Iteration `iteration` (1-based) of a run: the targets of its scenario time, one iteration of
+/// the mode on x, the diagnostics on `problem`. `iterations_left`: iterations of the run after this
+/// one (0: the last, which ends on the final constraint tolerance), or Mode::kOpenEnded.
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
+                              int iterations_left);
+
+/// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
+/// switch, see switch_mode in mode_factory.h), or nullptr to keep the current one. The returned
+/// mode must stay alive until the run ends or the next switch.
+using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
+
+/// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
+/// problem the diagnostics are measured on (its targets follow the scenario too). Stops at the
+/// first failed iteration (x keeps the last good state) or when `cancel` becomes true. `schedule`
+/// may switch modes during the run.
+RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr,
+                        const ModeSchedule& schedule = {});
+
+}  // namespace sdog

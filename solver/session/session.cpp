@@ -1,0 +1,148 @@
+#include "solver/session/session.h"
+
+#include "base/errors.h"
+#include "solver/problem/fold_seed.h"
+#include "solver/modes/mode_factory.h"
+
+namespace sdog {
+
+Session::Session(const DogModel& model, const RunConfig& config, const std::string& mode)
+    : model_(model), config_(config), mode_name_(mode) {
+  check_mode_usable(mode, model);
+  base_ = make_scenario(config, model.fine);
+  problem_ = std::make_unique<DogProblem>(model.fine, model.fine_topology, config.weights);
+  x_ = base_.start(model.fine);
+  rebuild();
+}
+
+Session::~Session() = default;
+
+void Session::rebuild() {
+  scenario_ = base_;
+  for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
+  for (const auto& a : user_.angles)
+    scenario_.angles.push_back(angle_constraint(model_.fine, a.crease_point, a.degrees, a.degrees));
+  mode_ = switch_mode(mode_name_, *problem_, scenario_, config_, model_, x_);
+}
+
+IterationReport Session::step() {
+  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, Mode::kOpenEnded);
+  if (!report.step.failed) ++iteration_;
+  return report;
+}
+
+void Session::reset() {
+  x_ = base_.start(model_.fine);
+  iteration_ = 0;
+  rebuild();
+}
+
+void Session::set_mode(const std::string& mode) {
+  check_mode_usable(mode, model_);
+  mode_name_ = mode;
+  rebuild();
+}
+
+void Session::set_positions(const Dofs& x, int iteration) {
+  if (x.size() != x_.size())
+    throw InputError("positions for " + std::to_string(x.size() / 3) + " vertices, the mesh has " +
+                     std::to_string(x_.size() / 3));
+  if (!x.allFinite()) throw InputError("positions that are not finite numbers");
+  x_ = x;
+  iteration_ = iteration;
+  rebuild();
+}
+
+void Session::check_vertex(int vertex) const {
+  if (vertex < 0 || vertex >= model_.fine.vertex_count())
+    throw InputError("vertex " + std::to_string(vertex) + " does not exist (the fine mesh has " +
+                     std::to_string(model_.fine.vertex_count()) + " vertices)");
+}
+
+void Session::edit(const UserConstraints& next, bool merge) {
+  if (!merge || undo_.empty()) undo_.push_back(user_);
+  redo_.clear();
+  user_ = next;
+  rebuild();
+}
+
+int Session::add_handle(int vertex) { return add_handles({vertex}); }
+
+int Session::add_handles(const std::vector<int>& vertices) {
+  if (vertices.empty()) throw InputError("no vertices to make handles of");
+  for (int v : vertices) check_vertex(v);
+  const int first = static_cast<int>(user_.handles.size());
+  UserConstraints next = user_;
+  for (int v : vertices) next.handles.push_back({v, Eigen::Vector3d(vertex_of(x_, v))});
+  edit(next);
+  return first;
+}
+
+void Session::move_handle(int handle, const Eigen::Vector3d& target, bool merge) {
+  if (handle < 0 || handle >= static_cast<int>(user_.handles.size()))
+    throw InputError("handle " + std::to_string(handle) + " does not exist");
+  if (!target.allFinite()) throw InputError("a handle target that is not finite");
+  UserConstraints next = user_;
+  next.handles[handle].target = target;
+  edit(next, merge);
+}
+
+void Session::remove_handle(int handle) {
+  if (handle < 0 || handle >= static_cast<int>(user_.handles.size()))
+    throw InputError("handle " + std::to_string(handle) + " does not exist");
+  UserConstraints next = user_;
+  next.handles.erase(next.handles.begin() + handle);
+  edit(next);
+}
+
+int Session::add_angle(int crease_point, double degrees) {
+  const auto& points = model_.fine.stitching.points;
+  if (crease_point < 0 || crease_point >= static_cast<int>(points.size()))
+    throw InputError("crease point " + std::to_string(crease_point) + " does not exist (there are " +
+                     std::to_string(points.size()) + ")");
+  if (points[crease_point].copies.size() != 2)
+    throw InputError("crease point " + std::to_string(crease_point) + " lies between " +
+                     std::to_string(points[crease_point].copies.size()) +
+                     " patches; a dihedral angle needs exactly two");
+  if (!(std::abs(degrees) <= 180)) throw InputError("a dihedral angle must be in [-180, 180] degrees");
+  // A flat sheet is a symmetric point of the angle constraint (no out-of-plane gradient): tilt it
+  // towards the requested fold first, as the fold scenario's start state does.
+  if ((x_ - problem_->rest()).lpNorm<Eigen::Infinity>() < 1e-12) {
+    std::vector<double> signs(model_.fine.stitching.curves.size(), 0.0);
+    for (size_t c = 0; c < signs.size(); ++c)
+      for (int p : model_.fine.stitching.curves[c].points)
+        if (p == crease_point) signs[c] = degrees >= 0 ? 1.0 : -1.0;
+    x_ = fold_seed(model_.fine, signs);
+  }
+  UserConstraints next = user_;
+  next.angles.push_back({crease_point, degrees});
+  edit(next);
+  return static_cast<int>(user_.angles.size()) - 1;
+}
+
+void Session::remove_angle(int angle) {
+  if (angle < 0 || angle >= static_cast<int>(user_.angles.size()))
+    throw InputError("angle constraint " + std::to_string(angle) + " does not exist");
+  UserConstraints next = user_;
+  next.angles.erase(next.angles.begin() + angle);
+  edit(next);
+}
+
+void Session::set_constraints(const UserConstraints& constraints) {
+  for (const auto& h : constraints.handles) check_vertex(h.vertex);
+  edit(constraints);
+}
+
+bool Session::undo() { return travel(undo_, redo_); }
+bool Session::redo() { return travel(redo_, undo_); }
+
+bool Session::travel(std::vector<UserConstraints>& from, std::vector<UserConstraints>& to) {
+  if (from.empty()) return false;
+  to.push_back(user_);
+  user_ = from.back();
+  from.pop_back();
+  rebuild();
+  return true;
+}
+
+}  // namespace sdog

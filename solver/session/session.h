@@ -1,0 +1,110 @@
+#pragma once
+// An interactive run (the studio's model, Qt-free): a DOG model, its problem, a solver mode and
+// the fine positions, stepped one iteration at a time, with constraints the user adds, moves and
+// removes, undo and redo of those edits, and mode switches that keep the state.
+//
+// The targets are those of a base scenario (corners, fold, none: the run configuration's) plus the
+// user's constraints, which hold their targets from the start. Every edit rebuilds the mode on the
+// current positions (switch_mode; the modes keep their own copy of the targets, and adding or
+// removing a constraint changes the solver's sparsity pattern). Undo and redo restore the user's
+// constraints, not the positions: the sheet stays where the solver put it.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/dog_model.h"
+#include "solver/run/run.h"
+#include "solver/run/run_config.h"
+
+namespace sdog {
+
+/// The user's constraints: handles (a fine vertex held at a target) and dihedral angles at crease
+/// points.
+struct UserConstraints {
+  struct Handle {
+    int vertex;
+    Eigen::Vector3d target;
+  };
+  struct Angle {
+    int crease_point;
+    double degrees;
+  };
+  std::vector<Handle> handles;
+  std::vector<Angle> angles;
+};
+
+class Session {
+ public:
+  /// Throws UsageError for an unknown or unusable mode (a coarse mode without the coarse mesh).
+  Session(const DogModel& model, const RunConfig& config, const std::string& mode);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  const DogModel& model() const { return model_; }
+  const RunConfig& config() const { return config_; }
+  const std::string& mode() const { return mode_name_; }
+  /// Fine positions.
+  const Dofs& positions() const { return x_; }
+  /// The coarse positions of a mode that steps a coarse mesh (coarse, twolevel), else nullptr.
+  const Dofs* coarse_positions() const { return mode_->coarse_positions(); }
+  /// Scenario time of the last iteration (0 before the first).
+  double time() const { return iteration_ > 0 ? base_.time_of(iteration_) : 0.0; }
+  /// Iterations taken since the start or the last reset.
+  int iteration() const { return iteration_; }
+  /// Base scenario plus the user's constraints, as the solver sees them.
+  const Scenario& scenario() const { return scenario_; }
+  const DogProblem& problem() const { return *problem_; }
+  const UserConstraints& constraints() const { return user_; }
+
+  /// One iteration (targets at the base scenario's time of the next iteration). A failed iteration
+  /// leaves the positions as they were and is reported in the returned report's step.
+  IterationReport step();
+  /// Back to the start state (iteration 0); the constraints stay.
+  void reset();
+  /// Continue with another mode from the current positions (Mode::start_from).
+  void set_mode(const std::string& mode);
+  /// Replaces the positions (a loaded workspace); throws InputError on a size mismatch.
+  void set_positions(const Dofs& x, int iteration);
+
+  /// Editing. Each is one undoable edit; indices are positions in constraints().handles / .angles.
+  /// Throws InputError for a vertex or crease point that does not exist, or a crease point that is
+  /// not between exactly two patches.
+  int add_handle(int vertex);  ///< target: the vertex's current position
+  /// Several vertices made handles at once (rubber-band selection), as one edit; returns the
+  /// index of the first new handle.
+  int add_handles(const std::vector<int>& vertices);
+  /// `merge`: the move continues the last edit (a drag in progress) and is undone with it.
+  void move_handle(int handle, const Eigen::Vector3d& target, bool merge = false);
+  void remove_handle(int handle);
+  /// On the flat sheet, also tilts the sheet towards the fold (fold_seed.h), which is otherwise a
+  /// symmetric point the solver cannot leave.
+  int add_angle(int crease_point, double degrees);
+  void remove_angle(int angle);
+  /// Replaces every user constraint at once (a loaded workspace), as one edit.
+  void set_constraints(const UserConstraints& constraints);
+  bool can_undo() const { return !undo_.empty(); }
+  bool can_redo() const { return !redo_.empty(); }
+  bool undo();
+  bool redo();
+
+ private:
+  void edit(const UserConstraints& next, bool merge = false);  // records the undo step and rebuilds
+  // Undo (from undo_ to redo_) or redo (the other way).
+  bool travel(std::vector<UserConstraints>& from, std::vector<UserConstraints>& to);
+  void rebuild();
+  void check_vertex(int vertex) const;
+
+  const DogModel& model_;
+  RunConfig config_;
+  std::string mode_name_;
+  Scenario base_, scenario_;
+  std::unique_ptr<DogProblem> problem_;
+  std::unique_ptr<Mode> mode_;
+  Dofs x_;
+  int iteration_ = 0;
+  UserConstraints user_;
+  std::vector<UserConstraints> undo_, redo_;
+};
+
+}  // namespace sdog

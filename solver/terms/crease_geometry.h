@@ -1,0 +1,50 @@
+#pragma once
+// Geometry along the creases of a (deformed) DOG: neighbouring crease points, tangents, and the
+// folding test of the thesis.
+#include <vector>
+
+#include "geometry/dog_mesh.h"
+#include "solver/terms/term.h"
+
+namespace sdog {
+
+/// Crease point index k of a curve has neighbours prev and next along it (closed curves wrap);
+/// -1 at the ends of open curves.
+struct CreaseNeighbours {
+  int prev = -1, next = -1;
+};
+CreaseNeighbours crease_neighbours(const CreaseStitching::Curve& curve, int k);
+
+/// Position of an edge point in x: t p_v1 + (1 - t) p_v2.
+Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x);
+
+/// Position of a crease point (its first copy) in x.
+Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const Dofs& x);
+
+/// Unit tangent at p of the circle through b, p, f: normalize((p - b)|f - p| + (f - p)|p - b|).
+Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p, const Eigen::Vector3d& f);
+
+/// An interior crease point where the crease crosses the inside of a grid edge and exactly two
+/// patches meet: the places where folding is tested and biased.
+struct FoldSite {
+  int curve, index;  ///< position along the curve
+  int point;         ///< crease point
+  int prev, next;    ///< neighbouring crease points
+  bool flat;         ///< the crease is straight there in the rest state (no osculating plane)
+};
+std::vector<FoldSite> fold_sites(const DogMesh& mesh);
+
+struct FoldCheck {
+  bool folded = true;
+  int checked = 0;     ///< sites tested
+  int violations = 0;  ///< sites where both edge copies lie on the same side of the osculating plane
+};
+
+/// The thesis's folding test: at every fold site with 0.05 <= t <= 0.95, not flat at rest, the
+/// crease not (nearly) parallel to the edge (|cos| <= 0.9995) and curvature >= 1e-5, the two
+/// copies e1, e2 of the crossing edge must lie on opposite sides of the osculating plane,
+/// B.e1 * B.e2 <= 0 with B = (p - p_prev) x (p_next - p); that is, the two half-edges leaving the
+/// crease into their own patches are on the same side of the plane.
+FoldCheck check_folded(const DogMesh& mesh, const std::vector<FoldSite>& sites, const Dofs& x);
+
+}  // namespace sdog
