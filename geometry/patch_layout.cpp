@@ -228,159 +228,189 @@ void insert_polyline(std::vector<Traits::Curve_2>& segs, const Poly& pts, bool c
   }
 }
 
-}  // namespace
-
-PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl,
-                               const AxisLayout& yl, int closed_start_stride) {
-  const Grid grid(xl, yl);
-  const int nx = grid.nx(), ny = grid.ny();
-  const int ncx = nx - 1, ncy = ny - 1;
-  PatchLayout layout;
-  for (const auto& v : grid.X) layout.xs.push_back(CGAL::to_double(v));
-  for (const auto& v : grid.Y) layout.ys.push_back(CGAL::to_double(v));
-
-  // Snap boundary loops and creases.
+// Snaps the sheet's boundary loops (outer first, then the holes) to the grid. Throws UsageError
+// when one falls inside a single grid cell.
+std::vector<Poly> snap_boundary(const CleanPattern& pattern, const Grid& grid) {
   std::vector<Poly> loops;
   std::vector<Polyline2> rings{pattern.sheet.outer};
   rings.insert(rings.end(), pattern.sheet.holes.begin(), pattern.sheet.holes.end());
   for (size_t l = 0; l < rings.size(); ++l) {
     Poly loop = grid.snap_closed(rings[l], 1);
     if (loop.size() < 3 || !has_area(loop))
-      throw UsageError(pattern.source + ": at resolution " + std::to_string(nx) + "x" +
-                       std::to_string(ny) + " " +
+      throw UsageError(pattern.source + ": at resolution " + std::to_string(grid.nx()) + "x" +
+                       std::to_string(grid.ny()) + " " +
                        (l == 0 ? std::string("the sheet") : "hole " + std::to_string(l)) +
                        " falls inside a single grid cell; use a higher resolution");
     loops.push_back(std::move(loop));
   }
+  return loops;
+}
+
+// Snaps the creases to the grid (closed ones start on a line of index divisible by `stride`).
+// Throws UsageError when one falls inside a single grid cell.
+std::vector<Poly> snap_creases(const CleanPattern& pattern, const Grid& grid, int stride) {
   std::vector<Poly> creases;
   for (size_t k = 0; k < pattern.creases.size(); ++k) {
     const Crease& c = pattern.creases[k];
-    Poly snapped =
-        c.closed ? grid.snap_closed(c.points, closed_start_stride) : grid.snap_open(c.points);
+    Poly snapped = c.closed ? grid.snap_closed(c.points, stride) : grid.snap_open(c.points);
     if (snapped.size() < 2 || (c.closed && snapped.size() < 3))
-      throw UsageError(c.origin + ": at resolution " + std::to_string(nx) + "x" +
-                       std::to_string(ny) + " crease " + std::to_string(k) +
+      throw UsageError(c.origin + ": at resolution " + std::to_string(grid.nx()) + "x" +
+                       std::to_string(grid.ny()) + " crease " + std::to_string(k) +
                        " falls inside a single grid cell; use a higher resolution");
     creases.push_back(std::move(snapped));
   }
+  return creases;
+}
 
-  // The arrangement of the snapped curves; its bounded faces inside the sheet are the patches.
-  std::vector<Traits::Curve_2> segs;
-  for (const auto& l : loops) insert_polyline(segs, l, true);
-  for (size_t k = 0; k < creases.size(); ++k)
-    insert_polyline(segs, creases[k], pattern.creases[k].closed);
-  Arrangement arr;
-  CGAL::insert(arr, segs.begin(), segs.end());
+// Where the snapped segments lie in the grid: straight chords through cells, and the grid edges
+// that segments run along (which block the flood fill of uncut cells).
+struct CellCuts {
+  std::vector<std::vector<std::pair<Point, Point>>> chords;  ///< per cell j * ncx + i
+  std::vector<char> vblocked;  ///< vertical edge on line i, row j: i * ncy + j
+  std::vector<char> hblocked;  ///< horizontal edge on line j, column i: j * ncx + i
+};
 
-  // Cut cells and blocked grid edges.
-  std::vector<std::vector<std::pair<Point, Point>>> chords(static_cast<size_t>(ncx) * ncy);
-  std::vector<char> vblocked(static_cast<size_t>(nx) * ncy, 0),
-      hblocked(static_cast<size_t>(ny) * ncx, 0);
+CellCuts cut_cells(const Grid& grid, const std::vector<Traits::Curve_2>& segs) {
+  const int nx = grid.nx(), ny = grid.ny();
+  const int ncx = nx - 1, ncy = ny - 1;
+  CellCuts cuts;
+  cuts.chords.resize(static_cast<size_t>(ncx) * ncy);
+  cuts.vblocked.assign(static_cast<size_t>(nx) * ncy, 0);
+  cuts.hblocked.assign(static_cast<size_t>(ny) * ncx, 0);
   for (const auto& s : segs) {
     const Point a = s.source(), b = s.target();
     if (a.x() == b.x() && line_at(grid.X, a.x()) >= 0) {
       const int i = line_at(grid.X, a.x());
       const FT lo = CGAL::min(a.y(), b.y()), hi = CGAL::max(a.y(), b.y());
       for (int j = interval_at(grid.Y, lo); j < ncy && grid.Y[j] < hi; ++j)
-        vblocked[static_cast<size_t>(i) * ncy + j] = 1;
+        cuts.vblocked[static_cast<size_t>(i) * ncy + j] = 1;
     } else if (a.y() == b.y() && line_at(grid.Y, a.y()) >= 0) {
       const int j = line_at(grid.Y, a.y());
       const FT lo = CGAL::min(a.x(), b.x()), hi = CGAL::max(a.x(), b.x());
       for (int i = interval_at(grid.X, lo); i < ncx && grid.X[i] < hi; ++i)
-        hblocked[static_cast<size_t>(j) * ncx + i] = 1;
+        cuts.hblocked[static_cast<size_t>(j) * ncx + i] = 1;
     } else {
       const Point mid((a.x() + b.x()) / 2, (a.y() + b.y()) / 2);
       const int i = interval_at(grid.X, mid.x()), j = interval_at(grid.Y, mid.y());
-      chords[static_cast<size_t>(j) * ncx + i].push_back({a, b});
+      cuts.chords[static_cast<size_t>(j) * ncx + i].push_back({a, b});
     }
   }
+  return cuts;
+}
 
-  // Query points: one per piece of a cut cell, one per connected region of uncut cells.
-  std::vector<Point> queries;
-  std::vector<int> query_of_component;
-  std::vector<int> component(static_cast<size_t>(ncx) * ncy, -1);
-  std::vector<std::vector<int>> piece_queries(static_cast<size_t>(ncx) * ncy);
-  std::vector<int> stack;
+// One interior point of each piece into which the chords split cell (i, j), sorted by y, then x.
+std::vector<Point> piece_samples(const Grid& grid, int i, int j,
+                                 const std::vector<std::pair<Point, Point>>& chords) {
+  std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
+                            Point(grid.X[i + 1], grid.Y[j + 1]), Point(grid.X[i], grid.Y[j + 1])}};
+  for (const auto& [p, q] : chords) {
+    std::vector<Poly> next;
+    for (const auto& piece : pieces) {
+      Poly left, right;
+      split_convex(piece, p, q, left, right);
+      if (has_area(left)) next.push_back(std::move(left));
+      if (has_area(right)) next.push_back(std::move(right));
+    }
+    pieces = std::move(next);
+  }
+  std::vector<Point> samples;
+  for (const auto& piece : pieces) samples.push_back(vertex_average(piece));
+  std::sort(samples.begin(), samples.end(), [](const Point& u, const Point& v) {
+    return u.y() < v.y() || (u.y() == v.y() && u.x() < v.x());
+  });
+  return samples;
+}
+
+// Gives component `id` to the uncut cells reachable from `cell` without crossing a snapped curve.
+void flood_fill(int cell, int id, int ncx, int ncy, const CellCuts& cuts,
+                std::vector<int>& component) {
+  component[cell] = id;
+  std::vector<int> stack(1, cell);
+  while (!stack.empty()) {
+    const int c = stack.back();
+    stack.pop_back();
+    const int ci = c % ncx, cj = c / ncx;
+    auto visit = [&](int ni, int nj, bool blocked) {
+      if (ni < 0 || nj < 0 || ni >= ncx || nj >= ncy || blocked) return;
+      const int nc = nj * ncx + ni;
+      if (component[nc] >= 0 || !cuts.chords[nc].empty()) return;
+      component[nc] = id;
+      stack.push_back(nc);
+    };
+    visit(ci - 1, cj, cuts.vblocked[static_cast<size_t>(ci) * ncy + cj]);
+    visit(ci + 1, cj, cuts.vblocked[static_cast<size_t>(ci + 1) * ncy + cj]);
+    visit(ci, cj - 1, cuts.hblocked[static_cast<size_t>(cj) * ncx + ci]);
+    visit(ci, cj + 1, cuts.hblocked[static_cast<size_t>(cj + 1) * ncx + ci]);
+  }
+}
+
+// The points to locate in the arrangement: one per piece of a cut cell, one per connected region
+// (component) of uncut cells.
+struct CellQueries {
+  std::vector<Point> points;
+  std::vector<int> of_component;            ///< query of each component
+  std::vector<int> component;               ///< component of each uncut cell, else -1
+  std::vector<std::vector<int>> of_pieces;  ///< queries of the pieces of each cut cell
+};
+
+CellQueries cell_queries(const Grid& grid, const CellCuts& cuts) {
+  const int ncx = grid.nx() - 1, ncy = grid.ny() - 1;
+  CellQueries q;
+  q.component.assign(static_cast<size_t>(ncx) * ncy, -1);
+  q.of_pieces.resize(static_cast<size_t>(ncx) * ncy);
   for (int j = 0; j < ncy; ++j) {
     for (int i = 0; i < ncx; ++i) {
       const int cell = j * ncx + i;
-      if (!chords[cell].empty()) {
-        std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
-                                  Point(grid.X[i + 1], grid.Y[j + 1]),
-                                  Point(grid.X[i], grid.Y[j + 1])}};
-        for (const auto& [p, q] : chords[cell]) {
-          std::vector<Poly> next;
-          for (const auto& piece : pieces) {
-            Poly left, right;
-            split_convex(piece, p, q, left, right);
-            if (has_area(left)) next.push_back(std::move(left));
-            if (has_area(right)) next.push_back(std::move(right));
-          }
-          pieces = std::move(next);
-        }
-        std::vector<Point> samples;
-        for (const auto& piece : pieces) samples.push_back(vertex_average(piece));
-        std::sort(samples.begin(), samples.end(), [](const Point& u, const Point& v) {
-          return u.y() < v.y() || (u.y() == v.y() && u.x() < v.x());
-        });
-        for (const auto& s : samples) {
-          piece_queries[cell].push_back(static_cast<int>(queries.size()));
-          queries.push_back(s);
+      if (!cuts.chords[cell].empty()) {
+        for (const auto& s : piece_samples(grid, i, j, cuts.chords[cell])) {
+          q.of_pieces[cell].push_back(static_cast<int>(q.points.size()));
+          q.points.push_back(s);
         }
         continue;
       }
-      if (component[cell] >= 0) continue;
-      // Flood fill the uncut cells reachable without crossing a snapped curve.
-      const int id = static_cast<int>(query_of_component.size());
-      query_of_component.push_back(static_cast<int>(queries.size()));
-      queries.push_back(grid.cell_centre(i, j));
-      component[cell] = id;
-      stack.assign(1, cell);
-      while (!stack.empty()) {
-        const int c = stack.back();
-        stack.pop_back();
-        const int ci = c % ncx, cj = c / ncx;
-        auto visit = [&](int ni, int nj, bool blocked) {
-          if (ni < 0 || nj < 0 || ni >= ncx || nj >= ncy || blocked) return;
-          const int nc = nj * ncx + ni;
-          if (component[nc] >= 0 || !chords[nc].empty()) return;
-          component[nc] = id;
-          stack.push_back(nc);
-        };
-        visit(ci - 1, cj, vblocked[static_cast<size_t>(ci) * ncy + cj]);
-        visit(ci + 1, cj, vblocked[static_cast<size_t>(ci + 1) * ncy + cj]);
-        visit(ci, cj - 1, hblocked[static_cast<size_t>(cj) * ncx + ci]);
-        visit(ci, cj + 1, hblocked[static_cast<size_t>(cj + 1) * ncx + ci]);
-      }
+      if (q.component[cell] >= 0) continue;
+      const int id = static_cast<int>(q.of_component.size());
+      q.of_component.push_back(static_cast<int>(q.points.size()));
+      q.points.push_back(grid.cell_centre(i, j));
+      flood_fill(cell, id, ncx, ncy, cuts, q.component);
     }
   }
+  return q;
+}
 
-  // Locate the queries; faces inside the sheet become patches in order of first appearance.
-  const auto faces = locate_faces(arr, queries);
-  std::unordered_map<const void*, int> patch_of_face;
-  auto patch_of_query = [&](int q) {
-    const auto& f = faces[q];
+// Patch id of each arrangement face met so far (by face address); -1 for faces in holes.
+using FacePatches = std::unordered_map<const void*, int>;
+
+// Locates the queries and fills the owners of every cell; faces inside the sheet become patches
+// in the order in which the cells meet them. Returns the patch of each face met.
+FacePatches assign_cells(const Arrangement& arr, const CellCuts& cuts, const CellQueries& q,
+                         const std::vector<Poly>& loops, PatchLayout& layout) {
+  const auto faces = locate_faces(arr, q.points);
+  FacePatches patch_of_face;
+  auto patch_of_query = [&](int query) {
+    const auto& f = faces[query];
     if (f->is_unbounded()) return -1;
     auto it = patch_of_face.find(key_of(f));
     if (it != patch_of_face.end()) return it->second;
     bool hole = false;
-    for (size_t l = 1; l < loops.size() && !hole; ++l) hole = inside_loop(queries[q], loops[l]);
+    for (size_t l = 1; l < loops.size() && !hole; ++l)
+      hole = inside_loop(q.points[query], loops[l]);
     const int id = hole ? -1 : layout.patch_count++;
     patch_of_face.emplace(key_of(f), id);
     return id;
   };
   layout.cell_offsets.assign(1, 0);
-  std::vector<int> component_patch(query_of_component.size(), -2);
-  for (int cell = 0; cell < ncx * ncy; ++cell) {
+  std::vector<int> component_patch(q.of_component.size(), -2);
+  for (int cell = 0; cell < layout.cell_count(); ++cell) {
     std::vector<int> owners;
-    if (!chords[cell].empty()) {
-      for (int q : piece_queries[cell]) {
-        const int p = patch_of_query(q);
+    if (!cuts.chords[cell].empty()) {
+      for (int query : q.of_pieces[cell]) {
+        const int p = patch_of_query(query);
         if (p >= 0) owners.push_back(p);
       }
     } else {
-      int& p = component_patch[component[cell]];
-      if (p == -2) p = patch_of_query(query_of_component[component[cell]]);
+      int& p = component_patch[q.component[cell]];
+      if (p == -2) p = patch_of_query(q.of_component[q.component[cell]]);
       if (p >= 0) owners.push_back(p);
     }
     std::sort(owners.begin(), owners.end());
@@ -388,10 +418,13 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
     layout.cell_patches.insert(layout.cell_patches.end(), owners.begin(), owners.end());
     layout.cell_offsets.push_back(static_cast<int>(layout.cell_patches.size()));
   }
+  return patch_of_face;
+}
 
-  // Final patch order: by owned cells, lexicographically (see the header).
+// Final patch order: by owned cells, lexicographically (see the header).
+void sort_patches(PatchLayout& layout, FacePatches& patch_of_face) {
   std::vector<std::vector<int>> cells_of(layout.patch_count);
-  for (int cell = 0; cell < ncx * ncy; ++cell)
+  for (int cell = 0; cell < layout.cell_count(); ++cell)
     for (int k = 0; k < layout.owner_count(cell); ++k)
       cells_of[layout.owners(cell)[k]].push_back(cell);
   std::vector<int> order(layout.patch_count);
@@ -403,8 +436,28 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
   for (auto& [face, id] : patch_of_face)
     if (id >= 0) id = new_id[id];
   renumber_patches(layout, new_id);
+}
 
-  // Crease points: unique snapped points with the patches around them.
+// Patches of the faces around an arrangement vertex, ascending.
+std::vector<int> patches_around(const Arrangement::Vertex_const_handle& v,
+                                const FacePatches& patch_of_face) {
+  std::vector<int> patches;
+  auto circ = v->incident_halfedges();
+  const auto first = circ;
+  do {
+    auto it = patch_of_face.find(key_of(circ->face()));
+    if (it != patch_of_face.end() && it->second >= 0) patches.push_back(it->second);
+  } while (++circ != first);
+  std::sort(patches.begin(), patches.end());
+  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  return patches;
+}
+
+// Crease points: the unique snapped points (numbered in curve order) with their grid edges and
+// the patches around them, and the curves as lists of those points.
+void add_crease_points(PatchLayout& layout, const Arrangement& arr, const Grid& grid,
+                       const CleanPattern& pattern, const std::vector<Poly>& creases,
+                       const FacePatches& patch_of_face) {
   std::map<Point, int> point_index;
   std::vector<Point> unique_points;
   for (size_t k = 0; k < creases.size(); ++k) {
@@ -426,15 +479,34 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
     PatchLayout::CreasePoint& cp = layout.points[point_index.at(p)];
     cp.position = approx(p);
     cp.edge = grid.edge_point(p);
-    auto circ = (*v)->incident_halfedges();
-    const auto first = circ;
-    do {
-      auto it = patch_of_face.find(key_of(circ->face()));
-      if (it != patch_of_face.end() && it->second >= 0) cp.patches.push_back(it->second);
-    } while (++circ != first);
-    std::sort(cp.patches.begin(), cp.patches.end());
-    cp.patches.erase(std::unique(cp.patches.begin(), cp.patches.end()), cp.patches.end());
+    cp.patches = patches_around(*v, patch_of_face);
   }
+}
+
+}  // namespace
+
+PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl,
+                               const AxisLayout& yl, int closed_start_stride) {
+  const Grid grid(xl, yl);
+  PatchLayout layout;
+  for (const auto& v : grid.X) layout.xs.push_back(CGAL::to_double(v));
+  for (const auto& v : grid.Y) layout.ys.push_back(CGAL::to_double(v));
+  const std::vector<Poly> loops = snap_boundary(pattern, grid);
+  const std::vector<Poly> creases = snap_creases(pattern, grid, closed_start_stride);
+
+  // The arrangement of the snapped curves; its bounded faces inside the sheet are the patches.
+  std::vector<Traits::Curve_2> segs;
+  for (const auto& l : loops) insert_polyline(segs, l, true);
+  for (size_t k = 0; k < creases.size(); ++k)
+    insert_polyline(segs, creases[k], pattern.creases[k].closed);
+  Arrangement arr;
+  CGAL::insert(arr, segs.begin(), segs.end());
+
+  const CellCuts cuts = cut_cells(grid, segs);
+  const CellQueries queries = cell_queries(grid, cuts);
+  FacePatches patch_of_face = assign_cells(arr, cuts, queries, loops, layout);
+  sort_patches(layout, patch_of_face);
+  add_crease_points(layout, arr, grid, pattern, creases, patch_of_face);
   for (const auto& l : loops) {
     Polyline2 ring;
     for (const auto& p : l) ring.push_back(approx(p));
