@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "base/errors.h"
-#include "geometry/plane_geometry.h"
 #include "base/text_format.h"
+#include "geometry/plane_geometry.h"
 
 namespace sdog {
 namespace {
@@ -109,30 +109,33 @@ void check_not_far(const SvgCurve& c, const CreasePattern& pattern, const std::s
   }
 }
 
-}  // namespace
-
-CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {
-  CreasePattern pattern;
-  pattern.source = drawing.source;
-
-  // Tolerances are relative to the sheet size; before the boundary is known use the viewBox (or
-  // the drawing's extent).
+// The tolerance for closing curves: closed_fraction of the sheet size, which is not known yet, so
+// of the viewBox (or, without one, of the drawing's extent).
+double closing_tolerance(const SvgDrawing& drawing, double closed_fraction) {
   Box2 extent = drawing.viewbox;
   if (!drawing.has_viewbox) {
     Polyline2 all;
     for (const auto& c : drawing.curves) all.insert(all.end(), c.points.begin(), c.points.end());
     if (!all.empty()) extent = box_of(all);
   }
-  const double tol = closed_fraction * std::max(extent.width(), extent.height());
+  return closed_fraction * std::max(extent.width(), extent.height());
+}
 
+// The drawing's curves sorted: black ones into closed boundary loops (open pieces chained end to
+// end within `tol`), the others kept as crease curves in drawing order.
+struct SortedCurves {
   std::vector<Polyline2> loops;
   std::vector<std::string> loop_origins;
+  std::vector<const SvgCurve*> creases;
+};
+
+SortedCurves sort_curves(const SvgDrawing& drawing, double tol) {
+  SortedCurves out;
   std::vector<OpenCurve> open_boundary;
-  std::vector<const SvgCurve*> crease_curves;
   for (const auto& c : drawing.curves) {
     if (c.points.size() < 2) continue;
     if (!c.is_boundary) {
-      crease_curves.push_back(&c);
+      out.creases.push_back(&c);
       continue;
     }
     Polyline2 pts = c.points;
@@ -140,8 +143,8 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
     if (closed) {
       if (!c.closed) pts.pop_back();
       drop_repeated_points(pts, true);
-      loops.push_back(std::move(pts));
-      loop_origins.push_back(origin_of(drawing.source, c));
+      out.loops.push_back(std::move(pts));
+      out.loop_origins.push_back(origin_of(drawing.source, c));
     } else {
       open_boundary.push_back({pts, origin_of(drawing.source, c)});
     }
@@ -150,72 +153,94 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
     const std::string origin = open_boundary.front().origin;
     for (auto& loop : chain_into_loops(std::move(open_boundary), tol)) {
       drop_repeated_points(loop, true);
-      loops.push_back(std::move(loop));
-      loop_origins.push_back(origin);
+      out.loops.push_back(std::move(loop));
+      out.loop_origins.push_back(origin);
     }
   }
+  return out;
+}
 
-  Sheet& sheet = pattern.sheet;
-  if (loops.empty()) {
-    if (!drawing.has_viewbox)
-      throw InputError(drawing.source +
-                       ": the drawing has neither a viewBox nor a black boundary curve, so the "
-                       "sheet is unknown; add viewBox=\"0 0 W H\" to <svg>");
-    const Box2& b = drawing.viewbox;
-    if (!(b.width() > 0) || !(b.height() > 0))
-      throw InputError(drawing.source + ": the sheet has zero area (viewBox " +
-                       format_number(b.width()) + " x " + format_number(b.height()) +
-                       "); give the viewBox a positive width and height");
-    sheet.outer = {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}};
-    sheet.from_viewbox = true;
-  } else {
-    for (size_t k = 0; k < loops.size(); ++k) {
-      if (loops[k].size() < 3)
-        throw InputError(loop_origins[k] +
-                         ": the sheet boundary has fewer than 3 distinct points (zero area)");
-    }
-    check_simple(loops, loop_origins);
-    size_t outer = 0;
-    for (size_t k = 1; k < loops.size(); ++k)
-      if (std::abs(signed_area(loops[k])) > std::abs(signed_area(loops[outer]))) outer = k;
-    const Box2 b = box_of(loops[outer]);
-    const double area = std::abs(signed_area(loops[outer]));
-    const double L = std::max(b.width(), b.height());
-    if (!(area > 1e-12 * L * L) || !(L > 0))
-      throw InputError(loop_origins[outer] + ": the sheet has zero area (its boundary encloses " +
-                       format_number(area) + " square units)");
-    sheet.outer = loops[outer];
-    if (signed_area(sheet.outer) < 0) std::reverse(sheet.outer.begin(), sheet.outer.end());
-    for (size_t k = 0; k < loops.size(); ++k) {
-      if (k == outer) continue;
-      if (point_in_polygon(loops[k].front(), sheet.outer) != 1)
-        throw InputError(loop_origins[k] + ": this boundary loop lies outside the sheet (" +
-                         loop_origins[outer] + "); holes must lie inside the outer boundary");
-      Polyline2 hole = loops[k];
-      if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
-      sheet.holes.push_back(std::move(hole));
-    }
+// The sheet of a drawing without boundary curves: its viewBox rectangle (bbox not yet set).
+Sheet sheet_from_viewbox(const SvgDrawing& drawing) {
+  if (!drawing.has_viewbox)
+    throw InputError(drawing.source +
+                     ": the drawing has neither a viewBox nor a black boundary curve, so the "
+                     "sheet is unknown; add viewBox=\"0 0 W H\" to <svg>");
+  const Box2& b = drawing.viewbox;
+  if (!(b.width() > 0) || !(b.height() > 0))
+    throw InputError(drawing.source + ": the sheet has zero area (viewBox " +
+                     format_number(b.width()) + " x " + format_number(b.height()) +
+                     "); give the viewBox a positive width and height");
+  Sheet sheet;
+  sheet.outer = {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}};
+  sheet.from_viewbox = true;
+  return sheet;
+}
+
+// The sheet of boundary loops: the loop of largest area is the outer boundary (made
+// counter-clockwise), the others are holes inside it (made clockwise); bbox not yet set.
+Sheet sheet_from_loops(const std::vector<Polyline2>& loops,
+                       const std::vector<std::string>& loop_origins) {
+  for (size_t k = 0; k < loops.size(); ++k) {
+    if (loops[k].size() < 3)
+      throw InputError(loop_origins[k] +
+                       ": the sheet boundary has fewer than 3 distinct points (zero area)");
   }
-  sheet.bbox = box_of(sheet.outer);
+  check_simple(loops, loop_origins);
+  size_t outer = 0;
+  for (size_t k = 1; k < loops.size(); ++k)
+    if (std::abs(signed_area(loops[k])) > std::abs(signed_area(loops[outer]))) outer = k;
+  const Box2 b = box_of(loops[outer]);
+  const double area = std::abs(signed_area(loops[outer]));
+  const double L = std::max(b.width(), b.height());
+  if (!(area > 1e-12 * L * L) || !(L > 0))
+    throw InputError(loop_origins[outer] + ": the sheet has zero area (its boundary encloses " +
+                     format_number(area) + " square units)");
+  Sheet sheet;
+  sheet.outer = loops[outer];
+  if (signed_area(sheet.outer) < 0) std::reverse(sheet.outer.begin(), sheet.outer.end());
+  for (size_t k = 0; k < loops.size(); ++k) {
+    if (k == outer) continue;
+    if (point_in_polygon(loops[k].front(), sheet.outer) != 1)
+      throw InputError(loop_origins[k] + ": this boundary loop lies outside the sheet (" +
+                       loop_origins[outer] + "); holes must lie inside the outer boundary");
+    Polyline2 hole = loops[k];
+    if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
+    sheet.holes.push_back(std::move(hole));
+  }
+  return sheet;
+}
 
-  // Creases: join subpaths of one <path> that continue each other, detect closed curves.
+// Appends to `crease` the curves after curves[k] that continue it: later open subpaths of the
+// same <path> that start within `tol` of its end. Returns the index of the last curve used.
+size_t append_continuations(const std::vector<const SvgCurve*>& curves, size_t k, double tol,
+                            Crease& crease) {
+  const SvgCurve& c = *curves[k];
+  while (!crease.closed && k + 1 < curves.size()) {
+    const SvgCurve& next = *curves[k + 1];
+    const bool same_element = next.line == c.line && next.element == c.element && next.id == c.id &&
+                              next.subpath > 0 && !next.closed;
+    if (!same_element || (next.points.front() - crease.points.back()).norm() > tol) break;
+    crease.points.insert(crease.points.end(), next.points.begin() + 1, next.points.end());
+    ++k;
+  }
+  return k;
+}
+
+// The creases of the crease curves: subpaths of one <path> that continue each other are joined,
+// and a crease whose ends meet within closed_fraction of the sheet size is closed.
+void add_creases(const std::vector<const SvgCurve*>& curves, const std::string& source,
+                 double closed_fraction, CreasePattern& pattern) {
   const double sheet_tol = closed_fraction * pattern.size();
-  for (size_t k = 0; k < crease_curves.size(); ++k) {
-    const SvgCurve& c = *crease_curves[k];
-    check_not_far(c, pattern, drawing.source);
+  for (size_t k = 0; k < curves.size(); ++k) {
+    const SvgCurve& c = *curves[k];
+    check_not_far(c, pattern, source);
     Crease crease;
     crease.points = c.points;
     crease.closed = c.closed;
     crease.dashed = c.dashed;
-    crease.origin = origin_of(drawing.source, c);
-    while (!crease.closed && k + 1 < crease_curves.size()) {
-      const SvgCurve& next = *crease_curves[k + 1];
-      const bool same_element = next.line == c.line && next.element == c.element &&
-                                next.id == c.id && next.subpath > 0 && !next.closed;
-      if (!same_element || (next.points.front() - crease.points.back()).norm() > sheet_tol) break;
-      crease.points.insert(crease.points.end(), next.points.begin() + 1, next.points.end());
-      ++k;
-    }
+    crease.origin = origin_of(source, c);
+    k = append_continuations(curves, k, sheet_tol, crease);
     if (!crease.closed && crease.points.size() > 2 &&
         (crease.points.front() - crease.points.back()).norm() <= sheet_tol) {
       crease.closed = true;
@@ -225,6 +250,19 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
     if (crease.points.size() < 2 || (crease.closed && crease.points.size() < 3)) continue;
     pattern.creases.push_back(std::move(crease));
   }
+}
+
+}  // namespace
+
+CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {
+  CreasePattern pattern;
+  pattern.source = drawing.source;
+  const double tol = closing_tolerance(drawing, closed_fraction);
+  const SortedCurves curves = sort_curves(drawing, tol);
+  pattern.sheet = curves.loops.empty() ? sheet_from_viewbox(drawing)
+                                       : sheet_from_loops(curves.loops, curves.loop_origins);
+  pattern.sheet.bbox = box_of(pattern.sheet.outer);
+  add_creases(curves.creases, drawing.source, closed_fraction, pattern);
   return pattern;
 }
 
