@@ -330,31 +330,29 @@ class PathParser {
     add(s);
   }
 
+  /// The command being executed: its letter, whether it is relative, and the origin its
+  /// coordinates are relative to (the current point before it, or (0, 0)).
+  struct Command {
+    char letter;
+    bool relative;
+    Point origin;
+  };
+
+  /// A coordinate pair of `c` in absolute coordinates.
+  Point absolute(const Command& c, const Point& p) const {
+    return c.relative ? checked(Point(c.origin + p)) : p;
+  }
+
   void execute(char command, bool repeated) {
     const bool relative = command >= 'a' && command <= 'z';
     const char upper = relative ? static_cast<char>(command - 'a' + 'A') : command;
-    const Point origin = relative ? current_ : Point(0, 0);
-    auto absolute = [&](const Point& p) { return relative ? checked(Point(origin + p)) : p; };
-    bool cubic = false, quadratic = false;  // for the reflection by a following S/T
+    const Command c{command, relative, relative ? current_ : Point(0, 0)};
     switch (upper) {
-      case 'M': {
-        Point p = pair(command, true);
-        if (repeated) {
-          line_to(absolute(p));
-          break;
-        }
-        // A first "m" is absolute: its offset is from (0, 0), and copying avoids -0 + 0.
-        if (relative && !subpaths_.empty()) p = checked(Point(current_ + p));
-        PathSubpath s;
-        s.start = p;
-        s.offset = command_pos_;
-        subpaths_.push_back(std::move(s));
-        need_subpath_ = false;
-        start_ = current_ = p;
+      case 'M':
+        move_to(c, repeated);
         break;
-      }
       case 'L':
-        line_to(absolute(pair(command, true)));
+        line_to(absolute(c, pair(command, true)));
         break;
       case 'H': {
         const double x = number(command, true);
@@ -366,74 +364,93 @@ class PathParser {
         line_to(checked(Point(current_.x(), relative ? current_.y() + y : y)));
         break;
       }
-      case 'C': {
-        PathSegment s;
-        s.kind = SegmentKind::cubic;
-        s.c1 = absolute(pair(command, true));
-        s.c2 = absolute(pair(command, false));
-        s.to = absolute(pair(command, false));
-        add(s);
-        last_control_ = s.c2;
-        cubic = true;
+      case 'C':
+      case 'S':
+        cubic_to(c, upper == 'S');
         break;
-      }
-      case 'S': {
-        PathSegment s;
-        s.kind = SegmentKind::cubic;
-        s.c1 = last_was_cubic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
-        s.c2 = absolute(pair(command, true));
-        s.to = absolute(pair(command, false));
-        add(s);
-        last_control_ = s.c2;
-        cubic = true;
+      case 'Q':
+      case 'T':
+        quadratic_to(c, upper == 'T');
         break;
-      }
-      case 'Q': {
-        PathSegment s;
-        s.kind = SegmentKind::quadratic;
-        s.c1 = absolute(pair(command, true));
-        s.to = absolute(pair(command, false));
-        add(s);
-        last_control_ = s.c1;
-        quadratic = true;
+      case 'A':
+        arc_to(c);
         break;
-      }
-      case 'T': {
-        PathSegment s;
-        s.kind = SegmentKind::quadratic;
-        s.c1 =
-            last_was_quadratic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
-        s.to = absolute(pair(command, true));
-        add(s);
-        last_control_ = s.c1;
-        quadratic = true;
-        break;
-      }
-      case 'A': {
-        PathSegment s;
-        s.kind = SegmentKind::arc;
-        s.rx = std::abs(number(command, true));
-        s.ry = std::abs(number(command, false));
-        s.rotation_deg = number(command, false);
-        s.large_arc = flag(command);
-        s.sweep = flag(command);
-        s.to = absolute(pair(command, false));
-        // F.6.2: identical endpoints omit the arc; a zero radius makes it a straight line.
-        if (s.to == current_) break;
-        if (s.rx == 0 || s.ry == 0) s.kind = SegmentKind::line;
-        add(s);
-        break;
-      }
       case 'Z':
-        if (!need_subpath_) {
-          subpaths_.back().closed = true;
-          current_ = start_;
-          need_subpath_ = true;
-        }
+        close_path();
         break;
     }
-    last_was_cubic_ = cubic;
-    last_was_quadratic_ = quadratic;
+    // For the reflection of the control point by a following S/T.
+    last_was_cubic_ = upper == 'C' || upper == 'S';
+    last_was_quadratic_ = upper == 'Q' || upper == 'T';
+  }
+
+  /// M/m; a repeated one (coordinates after the first pair) draws lines.
+  void move_to(const Command& c, bool repeated) {
+    Point p = pair(c.letter, true);
+    if (repeated) {
+      line_to(absolute(c, p));
+      return;
+    }
+    // A first "m" is absolute: its offset is from (0, 0), and copying avoids -0 + 0.
+    if (c.relative && !subpaths_.empty()) p = checked(Point(current_ + p));
+    PathSubpath s;
+    s.start = p;
+    s.offset = command_pos_;
+    subpaths_.push_back(std::move(s));
+    need_subpath_ = false;
+    start_ = current_ = p;
+  }
+
+  /// C/c, or S/s (`smooth`: the first control point reflects the previous cubic's second one).
+  void cubic_to(const Command& c, bool smooth) {
+    PathSegment s;
+    s.kind = SegmentKind::cubic;
+    if (smooth)
+      s.c1 = last_was_cubic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
+    else
+      s.c1 = absolute(c, pair(c.letter, true));
+    s.c2 = absolute(c, pair(c.letter, smooth));
+    s.to = absolute(c, pair(c.letter, false));
+    add(s);
+    last_control_ = s.c2;
+  }
+
+  /// Q/q, or T/t (`smooth`: the control point reflects the previous quadratic's one).
+  void quadratic_to(const Command& c, bool smooth) {
+    PathSegment s;
+    s.kind = SegmentKind::quadratic;
+    if (smooth)
+      s.c1 = last_was_quadratic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
+    else
+      s.c1 = absolute(c, pair(c.letter, true));
+    s.to = absolute(c, pair(c.letter, smooth));
+    add(s);
+    last_control_ = s.c1;
+  }
+
+  /// A/a.
+  void arc_to(const Command& c) {
+    PathSegment s;
+    s.kind = SegmentKind::arc;
+    s.rx = std::abs(number(c.letter, true));
+    s.ry = std::abs(number(c.letter, false));
+    s.rotation_deg = number(c.letter, false);
+    s.large_arc = flag(c.letter);
+    s.sweep = flag(c.letter);
+    s.to = absolute(c, pair(c.letter, false));
+    // F.6.2: identical endpoints omit the arc; a zero radius makes it a straight line.
+    if (s.to == current_) return;
+    if (s.rx == 0 || s.ry == 0) s.kind = SegmentKind::line;
+    add(s);
+  }
+
+  /// Z/z.
+  void close_path() {
+    if (!need_subpath_) {
+      subpaths_.back().closed = true;
+      current_ = start_;
+      need_subpath_ = true;
+    }
   }
 
   std::string_view d_;
