@@ -99,6 +99,91 @@ std::vector<double> arc_lengths(const CreaseStitching& st, const CreaseStitching
   return s;
 }
 
+// The error for fine vertex f when the coarse mesh has no vertex or quad for it in its patch.
+std::logic_error uncovered(const DogMesh& fine, int f) {
+  return std::logic_error("the coarse mesh does not cover fine patch " +
+                          std::to_string(fine.vertex_patch[f]) + " near " +
+                          format_point(fine.V.row(f).head<2>().transpose()));
+}
+
+// Types of the fine vertices by the parity of their grid position, with their coarse vertex,
+// edge or quad; coarse vertices with a fine twin become links.
+void map_vertices(const DogMesh& fine, const DogMesh& coarse, FineCoarseMap& map) {
+  // Coarse quads by (patch, lower-left grid position).
+  std::map<std::array<int, 3>, int> coarse_quad;
+  for (int q = 0; q < coarse.quad_count(); ++q) {
+    const int v = coarse.F(q, 0);
+    coarse_quad[{coarse.vertex_patch[v], coarse.grid[v].x(), coarse.grid[v].y()}] = q;
+  }
+  for (int f = 0; f < fine.vertex_count(); ++f) {
+    const int p = fine.vertex_patch[f];
+    const int i = fine.grid[f].x(), j = fine.grid[f].y();
+    if (i % 2 == 0 && j % 2 == 0) {
+      const int c = coarse.vertex_at(p, i / 2, j / 2);
+      if (c < 0) throw uncovered(fine, f);
+      map.fine_type[f] = VertexType::Link;
+      map.fine_to_coarse[f] = c;
+      map.coarse_to_fine[c] = f;
+      map.coarse_type[c] = VertexType::Link;
+    } else if (i % 2 == 1 && j % 2 == 1) {
+      auto it = coarse_quad.find({p, (i - 1) / 2, (j - 1) / 2});
+      if (it == coarse_quad.end()) throw uncovered(fine, f);
+      map.fine_type[f] = VertexType::X;
+      map.fine_to_coarse_quad[f] = it->second;
+    } else {
+      const int a = coarse.vertex_at(p, (i - i % 2) / 2, (j - j % 2) / 2);
+      const int b = coarse.vertex_at(p, (i + i % 2) / 2, (j + j % 2) / 2);
+      if (a < 0 || b < 0) throw uncovered(fine, f);
+      map.fine_type[f] = VertexType::I;
+      map.fine_to_coarse_edge[f] = {a, b};
+    }
+  }
+}
+
+// The number of vertices of each type.
+void count_types(FineCoarseMap& map) {
+  for (auto t : map.fine_type) {
+    if (t == VertexType::Link) ++map.link_count;
+    if (t == VertexType::I) ++map.i_count;
+    if (t == VertexType::X) ++map.x_count;
+  }
+  map.coarse_only_count = static_cast<int>(
+      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::CoarseOnly));
+}
+
+// Fine crease curve k against coarse curve k: coarse crease points are fine crease points at the
+// same flat position (within tol); the fine points between them get their arc-length fraction.
+std::vector<FineCoarseMap::CurvePoint> map_curve(const CreaseStitching& fs,
+                                                 const CreaseStitching& cs, size_t k, double tol) {
+  const auto& fc = fs.curves[k];
+  const auto& cc = cs.curves[k];
+  std::vector<FineCoarseMap::CurvePoint> out(fc.points.size());
+  std::vector<int> coarse_at;  // fine index of each coarse point
+  size_t next = 0;
+  for (size_t f = 0; f < fc.points.size() && next < cc.points.size(); ++f) {
+    if ((fs.points[fc.points[f]].flat - cs.points[cc.points[next]].flat).norm() <= tol) {
+      out[f].coarse = static_cast<int>(next);
+      out[f].segment = static_cast<int>(next);
+      coarse_at.push_back(static_cast<int>(f));
+      ++next;
+    }
+  }
+  if (next != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
+    throw std::logic_error("coarse crease " + std::to_string(k) +
+                           " is not a subset of the fine one");
+  const auto s = arc_lengths(fs, fc);
+  const int nfp = static_cast<int>(fc.points.size());
+  if (fc.closed) coarse_at.push_back(nfp);  // the loop returns to its first point
+  for (size_t m = 0; m + 1 < coarse_at.size(); ++m) {
+    const int a = coarse_at[m], b = coarse_at[m + 1];
+    for (int f = a + 1; f < b; ++f) {
+      out[f].segment = static_cast<int>(m);
+      out[f].fraction = (s[f] - s[a]) / (s[b] - s[a]);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) {
@@ -110,48 +195,8 @@ FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) 
   map.coarse_to_fine.assign(nc, -1);
   map.fine_to_coarse_edge.assign(nf, {-1, -1});
   map.fine_to_coarse_quad.assign(nf, -1);
-
-  // Coarse quads by (patch, lower-left grid position).
-  std::map<std::array<int, 3>, int> coarse_quad;
-  for (int q = 0; q < coarse.quad_count(); ++q) {
-    const int v = coarse.F(q, 0);
-    coarse_quad[{coarse.vertex_patch[v], coarse.grid[v].x(), coarse.grid[v].y()}] = q;
-  }
-  auto uncovered = [&](int f) {
-    return std::logic_error("the coarse mesh does not cover fine patch " +
-                            std::to_string(fine.vertex_patch[f]) + " near " +
-                            format_point(fine.V.row(f).head<2>().transpose()));
-  };
-  for (int f = 0; f < nf; ++f) {
-    const int p = fine.vertex_patch[f];
-    const int i = fine.grid[f].x(), j = fine.grid[f].y();
-    if (i % 2 == 0 && j % 2 == 0) {
-      const int c = coarse.vertex_at(p, i / 2, j / 2);
-      if (c < 0) throw uncovered(f);
-      map.fine_type[f] = VertexType::Link;
-      map.fine_to_coarse[f] = c;
-      map.coarse_to_fine[c] = f;
-      map.coarse_type[c] = VertexType::Link;
-    } else if (i % 2 == 1 && j % 2 == 1) {
-      auto it = coarse_quad.find({p, (i - 1) / 2, (j - 1) / 2});
-      if (it == coarse_quad.end()) throw uncovered(f);
-      map.fine_type[f] = VertexType::X;
-      map.fine_to_coarse_quad[f] = it->second;
-    } else {
-      const int a = coarse.vertex_at(p, (i - i % 2) / 2, (j - j % 2) / 2);
-      const int b = coarse.vertex_at(p, (i + i % 2) / 2, (j + j % 2) / 2);
-      if (a < 0 || b < 0) throw uncovered(f);
-      map.fine_type[f] = VertexType::I;
-      map.fine_to_coarse_edge[f] = {a, b};
-    }
-  }
-  for (auto t : map.fine_type) {
-    if (t == VertexType::Link) ++map.link_count;
-    if (t == VertexType::I) ++map.i_count;
-    if (t == VertexType::X) ++map.x_count;
-  }
-  map.coarse_only_count = static_cast<int>(
-      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::CoarseOnly));
+  map_vertices(fine, coarse, map);
+  count_types(map);
 
   // Crease curves: coarse crease points are fine crease points at the same flat position.
   const auto& fs = fine.stitching;
@@ -160,35 +205,7 @@ FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) 
     throw std::logic_error("fine and coarse meshes have different numbers of creases");
   const double tol =
       1e-9 * std::max(fine.xs.back() - fine.xs.front(), fine.ys.back() - fine.ys.front());
-  for (size_t k = 0; k < fs.curves.size(); ++k) {
-    const auto& fc = fs.curves[k];
-    const auto& cc = cs.curves[k];
-    std::vector<FineCoarseMap::CurvePoint> out(fc.points.size());
-    std::vector<int> coarse_at;  // fine index of each coarse point
-    size_t next = 0;
-    for (size_t f = 0; f < fc.points.size() && next < cc.points.size(); ++f) {
-      if ((fs.points[fc.points[f]].flat - cs.points[cc.points[next]].flat).norm() <= tol) {
-        out[f].coarse = static_cast<int>(next);
-        out[f].segment = static_cast<int>(next);
-        coarse_at.push_back(static_cast<int>(f));
-        ++next;
-      }
-    }
-    if (next != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
-      throw std::logic_error("coarse crease " + std::to_string(k) +
-                             " is not a subset of the fine one");
-    const auto s = arc_lengths(fs, fc);
-    const int nfp = static_cast<int>(fc.points.size());
-    if (fc.closed) coarse_at.push_back(nfp);  // the loop returns to its first point
-    for (size_t m = 0; m + 1 < coarse_at.size(); ++m) {
-      const int a = coarse_at[m], b = coarse_at[m + 1];
-      for (int f = a + 1; f < b; ++f) {
-        out[f].segment = static_cast<int>(m);
-        out[f].fraction = (s[f] - s[a]) / (s[b] - s[a]);
-      }
-    }
-    map.curves.push_back(std::move(out));
-  }
+  for (size_t k = 0; k < fs.curves.size(); ++k) map.curves.push_back(map_curve(fs, cs, k, tol));
   return map;
 }
 
