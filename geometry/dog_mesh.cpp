@@ -41,61 +41,52 @@ bool owns_edge(const PatchLayout& layout, int p, const GridEdgePoint& e) {
   return owns_cell(layout, p, e.i0, e.j0 - 1) || owns_cell(layout, p, e.i0, e.j0);
 }
 
-}  // namespace
-
-DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
-                       double scale) {
-  DogMesh mesh;
-  mesh.sheet_origin = sheet_origin;
-  mesh.scale = scale;
-  const int nx = layout.nx(), ncx = nx - 1;
-  for (double x : layout.xs) mesh.xs.push_back((x - sheet_origin.x()) * scale);
-  for (double y : layout.ys) mesh.ys.push_back((y - sheet_origin.y()) * scale);
-
-  const int P = layout.patch_count;
-  std::vector<std::vector<int>> patch_cells(P);
+// The cells of each patch, ascending.
+std::vector<std::vector<int>> cells_of_patches(const PatchLayout& layout) {
+  std::vector<std::vector<int>> patch_cells(layout.patch_count);
   for (int c = 0; c < layout.cell_count(); ++c)
     for (int k = 0; k < layout.owner_count(c); ++k) patch_cells[layout.owners(c)[k]].push_back(c);
+  return patch_cells;
+}
 
-  std::vector<Eigen::Vector3d> V;
-  std::vector<Eigen::Vector4i> F;
-  mesh.patch_begin.assign(1, 0);
-  mesh.quad_patch_begin.assign(1, 0);
-  for (int p = 0; p < P; ++p) {
-    std::vector<long long> keys;  // j * nx + i: row-major order
-    for (int c : patch_cells[p]) {
-      const long long i = c % ncx, j = c / ncx;
-      for (long long dj = 0; dj < 2; ++dj)
-        for (long long di = 0; di < 2; ++di) keys.push_back((j + dj) * nx + i + di);
-    }
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    const int base = static_cast<int>(V.size());
-    for (long long key : keys) {
-      const int i = static_cast<int>(key % nx), j = static_cast<int>(key / nx);
-      V.emplace_back(mesh.xs[i], mesh.ys[j], 0.0);
-      mesh.grid.emplace_back(i, j);
-      mesh.vertex_patch.push_back(p);
-    }
-    auto index = [&](long long i, long long j) {
-      return base + static_cast<int>(std::lower_bound(keys.begin(), keys.end(), j * nx + i) -
-                                     keys.begin());
-    };
-    for (int c : patch_cells[p]) {
-      const long long i = c % ncx, j = c / ncx;
-      F.emplace_back(index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
-    }
-    mesh.patch_begin.push_back(static_cast<int>(V.size()));
-    mesh.quad_patch_begin.push_back(static_cast<int>(F.size()));
+// Appends patch p, made of `cells`, to the mesh: its vertices (the cells' corners, row by row) to
+// V with their grid positions, and its quads to F; then closes its vertex and quad ranges.
+void add_patch(int p, const std::vector<int>& cells, int nx, DogMesh& mesh,
+               std::vector<Eigen::Vector3d>& V, std::vector<Eigen::Vector4i>& F) {
+  const int ncx = nx - 1;
+  std::vector<long long> keys;  // j * nx + i: row-major order
+  for (int c : cells) {
+    const long long i = c % ncx, j = c / ncx;
+    for (long long dj = 0; dj < 2; ++dj)
+      for (long long di = 0; di < 2; ++di) keys.push_back((j + dj) * nx + i + di);
   }
-  mesh.V.resize(static_cast<Eigen::Index>(V.size()), 3);
-  for (size_t k = 0; k < V.size(); ++k) mesh.V.row(static_cast<Eigen::Index>(k)) = V[k].transpose();
-  mesh.F.resize(static_cast<Eigen::Index>(F.size()), 4);
-  for (size_t k = 0; k < F.size(); ++k) mesh.F.row(static_cast<Eigen::Index>(k)) = F[k].transpose();
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  const int base = static_cast<int>(V.size());
+  for (long long key : keys) {
+    const int i = static_cast<int>(key % nx), j = static_cast<int>(key / nx);
+    V.emplace_back(mesh.xs[i], mesh.ys[j], 0.0);
+    mesh.grid.emplace_back(i, j);
+    mesh.vertex_patch.push_back(p);
+  }
+  auto index = [&](long long i, long long j) {
+    return base +
+           static_cast<int>(std::lower_bound(keys.begin(), keys.end(), j * nx + i) - keys.begin());
+  };
+  for (int c : cells) {
+    const long long i = c % ncx, j = c / ncx;
+    F.emplace_back(index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+  }
+  mesh.patch_begin.push_back(static_cast<int>(V.size()));
+  mesh.quad_patch_begin.push_back(static_cast<int>(F.size()));
+}
 
-  // Crease stitching.
-  CreaseStitching& st = mesh.stitching;
-  std::vector<std::set<int>> adjacency(P);
+// The crease stitching: the copies of each crease point in the patches that own its grid edge,
+// the chained pairs, the patch adjacency and the junctions. Throws std::logic_error for a point
+// with fewer than two copies.
+CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh) {
+  CreaseStitching st;
+  std::vector<std::set<int>> adjacency(layout.patch_count);
   for (size_t k = 0; k < layout.points.size(); ++k) {
     const auto& lp = layout.points[k];
     CreaseStitching::Point sp;
@@ -120,6 +111,31 @@ DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_o
   }
   for (const auto& s : adjacency) st.patch_adjacency.emplace_back(s.begin(), s.end());
   for (const auto& c : layout.curves) st.curves.push_back({c.points, c.closed});
+  return st;
+}
+
+}  // namespace
+
+DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
+                       double scale) {
+  DogMesh mesh;
+  mesh.sheet_origin = sheet_origin;
+  mesh.scale = scale;
+  for (double x : layout.xs) mesh.xs.push_back((x - sheet_origin.x()) * scale);
+  for (double y : layout.ys) mesh.ys.push_back((y - sheet_origin.y()) * scale);
+
+  const std::vector<std::vector<int>> patch_cells = cells_of_patches(layout);
+  std::vector<Eigen::Vector3d> V;
+  std::vector<Eigen::Vector4i> F;
+  mesh.patch_begin.assign(1, 0);
+  mesh.quad_patch_begin.assign(1, 0);
+  for (int p = 0; p < layout.patch_count; ++p)
+    add_patch(p, patch_cells[p], layout.nx(), mesh, V, F);
+  mesh.V.resize(static_cast<Eigen::Index>(V.size()), 3);
+  for (size_t k = 0; k < V.size(); ++k) mesh.V.row(static_cast<Eigen::Index>(k)) = V[k].transpose();
+  mesh.F.resize(static_cast<Eigen::Index>(F.size()), 4);
+  for (size_t k = 0; k < F.size(); ++k) mesh.F.row(static_cast<Eigen::Index>(k)) = F[k].transpose();
+  mesh.stitching = build_stitching(layout, mesh);
   return mesh;
 }
 
