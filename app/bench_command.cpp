@@ -10,11 +10,27 @@
 #include "app/threads.h"
 #include "base/atomic_output.h"
 #include "base/errors.h"
-#include "solver/experiments/benchmark.h"
-#include "solver/modes/mode_factory.h"
+#include "base/csv.h"
+#include "solver/experiments/case_rounds.h"
+#include "solver/experiments/tables.h"
 
 namespace sdog::cli {
 namespace {
+
+// "  RES MODE: round K/N, iteration I/T" on stderr every 10 iterations.
+class CaseProgress : public RunObserver {
+ public:
+  CaseProgress(const Case& c, int round, int rounds, int total) : c_(c), round_(round), rounds_(rounds), total_(total) {}
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    if (r.iteration % 10 == 0 || r.iteration == total_)
+      std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c_.res.c_str(), mode_name(c_.mode),
+                   round_ + 1, rounds_, r.iteration, total_);
+  }
+
+ private:
+  Case c_;
+  int round_, rounds_, total_;
+};
 
 struct BenchArgs {
   std::vector<std::string> patterns;
@@ -28,28 +44,40 @@ struct BenchArgs {
   std::string csv;
 };
 
-void print_row(const BenchResult& r) {
+void print_row(const CaseResult& r) {
   char speedup[32] = "";
   if (r.speedup) std::snprintf(speedup, sizeof speedup, "%.2f", *r.speedup);
+  const Work& w = r.window_work;
   std::printf("%-18s %-6s %-9s %6d %6d %9.2f %9.5f %6.2f %9.2f %7.2f %10.4g %9.2g %7s\n", r.pattern.c_str(),
-              r.res.c_str(), r.mode.c_str(), r.vertices, r.dof, r.median_ms, r.ms_per_dof, r.sqp_steps, r.factor_ms,
-              r.factorizations, r.final_objective, r.dog_max, speedup);
+              r.res.c_str(), mode_name(r.mode), r.vertices, r.dof, r.median_ms, r.ms_per_dof(),
+              r.per_window_iteration(w.steps), r.per_window_iteration(w.factor_ms),
+              r.per_window_iteration(w.factorizations), r.final_objective, r.dog_max, speedup);
   std::fflush(stdout);
+}
+
+// Per pattern and resolution (a place) the case of every mode; the modes of a place run in rounds.
+std::vector<std::vector<Case>> bench_places(const BenchArgs& a, const std::vector<ModeKind>& modes) {
+  std::vector<Case> places;
+  if (a.thesis_grid) {
+    places = thesis_grid(a.patterns_dir);
+  } else {
+    if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("give --pattern and --res (or --thesis-grid)");
+    for (const auto& p : a.patterns)
+      for (const auto& r : a.resolutions) places.push_back({p, r});
+  }
+  std::vector<std::vector<Case>> cases;
+  for (const Case& place : places) {
+    cases.emplace_back();
+    for (ModeKind m : modes) cases.back().push_back({place.pattern, place.res, m});
+  }
+  return cases;
 }
 
 void bench(const BenchArgs& a) {
   set_thread_count(a.threads);
-  for (const auto& m : a.modes) check_mode_name(m, "--modes: ");
-  // Per pattern and resolution (a place) the cases of every mode, which run in rounds.
-  std::vector<BenchCase> places;
-  if (a.thesis_grid) {
-    places = thesis_grid(a.patterns_dir, "");
-  } else {
-    if (a.patterns.empty() || a.resolutions.empty())
-      throw UsageError("give --pattern and --res (or --thesis-grid)");
-    for (const auto& p : a.patterns)
-      for (const auto& r : a.resolutions) places.push_back({p, r, ""});
-  }
+  std::vector<ModeKind> modes;
+  for (const auto& m : a.modes) modes.push_back(parse_mode(m, "--modes: "));
+  const std::vector<std::vector<Case>> places = bench_places(a, modes);
   std::unique_ptr<OutputSet> out;
   std::string csv_name;
   if (!a.csv.empty()) {
@@ -57,27 +85,28 @@ void bench(const BenchArgs& a) {
     out = std::make_unique<OutputSet>(path.has_parent_path() ? path.parent_path().string() : ".");
     csv_name = path.filename().string();
   }
-  BenchOptions options;
-  options.iterations = a.iterations;
-  options.repeat = a.repeat;
+  RunConfig config;
+  config.iterations = a.iterations;
+  config.hold = a.iterations / 5;
   std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s %7s\n", "pattern", "res", "mode", "verts", "dof",
               "median_ms", "ms/dof", "steps", "factor_ms", "facts", "objective", "dog_max", "speedup");
   const bool tty = isatty(fileno(stderr));
-  std::string csv = bench_csv_header();
-  for (const auto& place : places) {
-    std::vector<BenchCase> cases;
-    for (const auto& m : a.modes) cases.push_back({place.pattern, place.res, m});
-    auto progress = [&](const BenchCase& c, int repeat, int iteration, int total) {
-      if (tty && (iteration % 10 == 0 || iteration == total))
-        std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c.res.c_str(), c.mode.c_str(), repeat + 1,
-                     options.repeat, iteration, total);
+  std::string csv = csv_line(bench_columns());
+  for (const auto& cases : places) {
+    std::vector<std::unique_ptr<CaseProgress>> progress;
+    RoundsOptions options;
+    options.repeat = a.repeat;
+    options.record_problems = false;
+    options.observers = [&](const Case& c, int round) -> std::vector<RunObserver*> {
+      if (!tty) return {};
+      progress.push_back(std::make_unique<CaseProgress>(c, round, a.repeat, config.iterations + config.hold));
+      return {progress.back().get()};
     };
-    std::vector<BenchResult> results = run_benchmark_rounds(cases, options, progress);
-    relate_bench_to_standard(results);
+    const std::vector<CaseResult> results = run_rounds(cases, config, options);
     if (tty) std::fprintf(stderr, "\r%70s\r", "");
     for (const auto& r : results) {
       print_row(r);
-      csv += bench_csv_row(r);
+      csv += csv_line(bench_fields(r));
     }
   }
   if (out) {

@@ -7,8 +7,8 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "base/atomic_output.h"
-#include "solver/modes/mode_factory.h"
-#include "solver/run/run_config.h"
+#include "base/errors.h"
+#include "solver/run/run_setup.h"
 #include "ui/vis/picture.h"
 
 namespace sdog::cli {
@@ -36,6 +36,16 @@ std::string overlay_help() {
   return help;
 }
 
+// The last state of a run of `mode` over the configuration's scenario, with the constraints at
+// their final targets. Throws SolverError (naming the iteration and the cause) when the run fails.
+vis::SceneState run_state(const DogModel& model, ModeKind mode, const RunConfig& config) {
+  RunSetup setup(model, mode, config);
+  const RunSummary summary = setup.run({});
+  if (summary.failed())
+    throw SolverError(std::string("the solver (") + mode_name(mode) + ") failed at " + summary.failure);
+  return vis::scene_state(setup.problem(), setup.positions(), setup.mode().coarse_positions(), &setup.scenario(), 1);
+}
+
 void render(const RenderArgs& a) {
   vis::PictureOptions options;
   options.size = vis::parse_image_size(a.size);
@@ -46,13 +56,11 @@ void render(const RenderArgs& a) {
   if (!a.camera.empty()) options.camera = vis::load_camera(a.camera);
   const bool run = a.iterations_opt->count() > 0;
   RunConfig config;
-  config.scenario = a.scenario;
+  config.scenario = parse_scenario(a.scenario, "--scenario: ");
   config.iterations = a.iterations;
   config.hold = 0;
-  if (run) {
-    check_mode_name(a.mode, "--mode: ");
-    validate_run_config(config, "command line");
-  }
+  const ModeKind mode = parse_mode(a.mode, "--mode: ");
+  if (run) validate_run_config(config, "command line");
   // Fail on a missing display or an unusable output directory before the work.
   vis::require_display();
   const std::filesystem::path target(a.out);
@@ -62,7 +70,7 @@ void render(const RenderArgs& a) {
   options.caption = std::filesystem::path(a.pattern.pattern).stem().string() + " " + model.fine_res.str();
   vis::SceneState state;
   if (run) {
-    state = vis::run_scene_state(model, a.mode, config);
+    state = run_state(model, mode, config);
     options.caption += ", " + a.mode + ", " + std::to_string(a.iterations) + " iterations of " + a.scenario;
   } else if (std::find(options.layers.begin(), options.layers.end(), vis::Layer::Handles) != options.layers.end()) {
     const Scenario scenario = make_scenario(config, model.fine);

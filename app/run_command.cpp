@@ -14,9 +14,11 @@
 #include "base/atomic_output.h"
 #include "base/errors.h"
 #include "base/text_format.h"
-#include "solver/experiments/benchmark.h"
-#include "solver/modes/mode_factory.h"
+#include "base/statistics.h"
+#include "solver/config/run_config_json.h"
 #include "solver/run/run_log.h"
+#include "solver/run/run_setup.h"
+#include "solver/run/run_totals.h"
 #include "ui/vis/frame_writer.h"
 
 namespace sdog::cli {
@@ -63,26 +65,6 @@ nlohmann::json diagnostics_json(const IterationReport& r) {
           {"folded", r.step.folded}};
 }
 
-// Totals over the iterations of a run.
-struct Totals : RunObserver {
-  explicit Totals(double tolerance) : dog_tolerance(tolerance) {}
-  double dog_tolerance;  ///< the solver's constraint tolerance
-  int factorizations = 0, sqp_steps = 0, fold_retries = 0, dog_misses = 0, worst_iteration = 0;
-  double worst_dog = 0, factor_ms = 0;
-  std::vector<double> iteration_ms;
-  void on_iteration(const IterationReport& r, const Dofs&) override {
-    if (r.diagnostics.dog_max > dog_tolerance) ++dog_misses;
-    if (r.diagnostics.dog_max > worst_dog) worst_iteration = r.iteration;
-    factorizations += r.step.factorizations;
-    sqp_steps += r.step.sqp_steps;
-    fold_retries += r.step.fold_retries;
-    worst_dog = std::max(worst_dog, r.diagnostics.dog_max);
-    factor_ms += r.step.factor_ms;
-    iteration_ms.push_back(r.iteration_ms);
-  }
-  double median_ms() const { return median(iteration_ms); }
-};
-
 // "--switch 100:twolevel" (repeatable) as mode switches; UsageError naming the bad one.
 std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
   std::vector<ModeSwitch> out;
@@ -96,19 +78,15 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
     } catch (const std::exception&) {
       throw UsageError("--switch: expected ITERATION:MODE with ITERATION >= 1 (e.g. 100:twolevel), got '" + t + "'");
     }
-    out.push_back({k, t.substr(colon + 1)});
-    check_mode_name(out.back().mode, "--switch " + t + ": ");
+    out.push_back({k, parse_mode(t.substr(colon + 1), "--switch " + t + ": ")});
   }
   return out;
 }
 
-void run(const RunArgs& a) {
-  const auto start = std::chrono::steady_clock::now();
-  check_mode_name(a.mode, "--mode: ");
-  set_thread_count(a.threads);
+RunConfig run_config(const RunArgs& a) {
   RunConfig config;
   if (!a.config.empty()) read_run_config(a.config, config);
-  if (a.scenario_opt->count() || a.config.empty()) config.scenario = a.scenario;
+  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
@@ -118,89 +96,46 @@ void run(const RunArgs& a) {
   if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
   if (!a.switches.empty()) config.switches = parse_switches(a.switches);
   validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
+  return config;
+}
 
-  // Fail on an unusable output directory before the work, not after it.
-  std::unique_ptr<OutputSet> out;
-  if (!a.out.empty()) out = std::make_unique<OutputSet>(a.out);
+nlohmann::json run_json(const RunArgs& a, RunSetup& setup, const RunSummary& summary, const RunTotals& totals) {
+  const DogModel& model = setup.model();
+  const Scenario& scenario = setup.scenario();
+  nlohmann::json j = {
+      {"status", termination_name(summary.termination)},
+      {"pattern", a.pattern.pattern},
+      {"resolution", {{"fine", model.fine_res.str()}, {"coarse", model.has_coarse ? model.coarse_res.str() : ""}}},
+      {"mesh", {{"vertices", model.fine.vertex_count()}, {"quads", model.fine.quad_count()},
+                {"patches", model.fine.patch_count()}, {"dof", 3 * model.fine.vertex_count()},
+                {"dog_constraint_rows", setup.problem().dog.row_count()}}},
+      {"mode", a.mode},
+      {"config", to_json(setup.config())},
+      {"scenario", {{"name", scenario.name}, {"position_constraints", scenario.positions.size()},
+                    {"angle_constraints", scenario.angles.size()}}},
+      {"threads", a.threads},
+      {"software", software_versions()},
+      {"totals", {{"iterations", summary.iterations}, {"seconds", summary.seconds},
+                  {"median_iteration_ms", median(totals.iteration_ms)},
+                  {"factorizations", totals.work.factorizations}, {"sqp_steps", totals.work.steps},
+                  {"fold_retries", totals.work.fold_retries}, {"factor_ms", totals.work.factor_ms},
+                  {"dog_max_over_run", totals.worst_dog}, {"iterations_above_dog_tolerance", totals.dog_misses}}},
+      {"final", diagnostics_json(summary.last)}};
+  if (summary.failed()) j["failure"] = summary.failure;
+  return j;
+}
 
-  const DogModel model = build_model(a.pattern);
-  DogProblem problem(model.fine, model.fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model.fine);
-  check_scenario_targets(scenario, config, a.pattern.pattern + " at " + model.fine_res.str());
-  check_mode_usable(a.mode, model);
-  for (const ModeSwitch& s : config.switches) {
-    check_mode_name(s.mode, "switch at iteration " + std::to_string(s.iteration) + ": ");
-    check_mode_usable(s.mode, model);
-  }
-  std::unique_ptr<Mode> mode = make_mode(a.mode, problem, scenario, config, &model);
-  Dofs x = scenario.start(model.fine);
-  const int total = scenario.iterations + scenario.hold;
-
-  RunCsv csv;
-  PatchesCsv patches;
-  // The restoration allows a little slack over the tolerance only through rounding.
-  Totals totals(2 * config.standard.sqp.constraint_tolerance);
-  ProgressBar progress(total, !a.quiet);
-  std::vector<RunObserver*> observers{&csv, &patches, &totals, &progress};
-  std::unique_ptr<vis::FrameWriter> frames;
-  if (out && a.frames_every > 0) {
-    frames = std::make_unique<vis::FrameWriter>(model, problem, *out, a.frames_every, total);
-    frames->write_start(x);
-    observers.push_back(frames.get());
-  }
-
-  g_cancel = false;
-  auto previous = std::signal(SIGINT, on_interrupt);
-  const RunSummary summary = run_scenario(*mode, problem, scenario, x, observers, &g_cancel,
-                                          switch_schedule(problem, scenario, config, model, mode));
-  std::signal(SIGINT, previous);
-  progress.finish();
-  const bool cancelled = !summary.failed && summary.iterations < total;
-  const std::string status = summary.failed ? "failed" : cancelled ? "cancelled" : "completed";
-
-  std::vector<std::string> files;
-  if (out && (status == "completed" || a.keep_failed)) {
-    out->write_text("run.csv", csv.text());
-    if (!patches.empty()) out->write_text("patches.csv", patches.text());
-    nlohmann::json j = {
-        {"status", status},
-        {"pattern", a.pattern.pattern},
-        {"resolution", {{"fine", model.fine_res.str()}, {"coarse", model.has_coarse ? model.coarse_res.str() : ""}}},
-        {"mesh", {{"vertices", model.fine.vertex_count()}, {"quads", model.fine.quad_count()},
-                  {"patches", model.fine.patch_count()}, {"dof", 3 * model.fine.vertex_count()},
-                  {"dog_constraint_rows", problem.dog.row_count()}}},
-        {"mode", a.mode},
-        {"config", to_json(config)},
-        {"scenario", {{"name", scenario.name}, {"position_constraints", scenario.positions.size()},
-                      {"angle_constraints", scenario.angles.size()}}},
-        {"threads", a.threads},
-        {"software", software_versions()},
-        {"totals", {{"iterations", summary.iterations}, {"seconds", summary.seconds},
-                    {"median_iteration_ms", totals.median_ms()}, {"factorizations", totals.factorizations},
-                    {"sqp_steps", totals.sqp_steps}, {"fold_retries", totals.fold_retries},
-                    {"factor_ms", totals.factor_ms}, {"dog_max_over_run", totals.worst_dog},
-                    {"iterations_above_dog_tolerance", totals.dog_misses}}},
-        {"final", diagnostics_json(summary.last)}};
-    if (summary.failed) j["failure"] = summary.failure;
-    out->write_text("run.json", j.dump(2) + "\n");
-    if (frames) frames->finish();
-    files = out->commit();
-  }
-
+void report_success(const RunArgs& a, const RunSetup& setup, const RunSummary& summary, const RunTotals& totals,
+                    double seconds) {
+  const RunConfig& config = setup.config();
+  const DogModel& model = setup.model();
   const IterationReport& last = summary.last;
-  if (summary.failed || cancelled) {
-    std::string msg = summary.failed ? "the solver failed at " + summary.failure
-                                     : "cancelled after " + std::to_string(summary.iterations) + " iterations";
-    if (out)
-      msg += files.empty() ? " (nothing written to " + a.out + "; --keep-failed keeps the log and frames up to here)"
-                           : " (log and frames up to here written to " + a.out + ")";
-    throw SolverError(msg);
-  }
   std::string modes = a.mode;
-  for (const ModeSwitch& s : config.switches) modes += ", " + s.mode + " from iteration " + std::to_string(s.iteration);
-  std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << scenario.name << ") on "
-            << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count() << " vertices) in "
-            << format_number(seconds_since(start)) << " s, median " << format_number(totals.median_ms())
+  for (const ModeSwitch& s : config.switches)
+    modes += std::string(", ") + mode_name(s.mode) + " from iteration " + std::to_string(s.iteration);
+  std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << setup.scenario().name
+            << ") on " << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count()
+            << " vertices) in " << format_number(seconds) << " s, median " << format_number(median(totals.iteration_ms))
             << " ms/iteration\n"
             << "final: objective " << format_number(last.diagnostics.objective) << ", DOG max "
             << format_number(last.diagnostics.dog_max) << " (worst over the run " << format_number(totals.worst_dog)
@@ -210,8 +145,58 @@ void run(const RunArgs& a) {
     std::cerr << "warning: the DOG constraints stayed above the solver's tolerance "
               << format_number(config.standard.sqp.constraint_tolerance) << " after " << totals.dog_misses << " of "
               << summary.iterations << " iterations (worst " << format_number(totals.worst_dog) << " at iteration "
-              << totals.worst_iteration
-              << "): the targets may ask for stretching (see dog_max in run.csv)\n";
+              << totals.worst_iteration << "): the targets may ask for stretching (see dog_max in run.csv)\n";
+}
+
+void run(const RunArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  const ModeKind mode = parse_mode(a.mode, "--mode: ");
+  set_thread_count(a.threads);
+  const RunConfig config = run_config(a);
+  // Fail on an unusable output directory before the work, not after it.
+  std::unique_ptr<OutputSet> out;
+  if (!a.out.empty()) out = std::make_unique<OutputSet>(a.out);
+
+  const DogModel model = build_model(a.pattern);
+  RunSetup setup(model, mode, config);
+  const int total = setup.total_iterations();
+  RunCsv csv;
+  PatchesCsv patches;
+  // The restoration allows a little slack over the tolerance only through rounding.
+  RunTotals totals(2 * config.standard.sqp.constraint_tolerance);
+  ProgressBar progress(total, !a.quiet);
+  std::vector<RunObserver*> observers{&csv, &patches, &totals, &progress};
+  std::unique_ptr<vis::FrameWriter> frames;
+  if (out && a.frames_every > 0) {
+    frames = std::make_unique<vis::FrameWriter>(model, setup.problem(), *out, a.frames_every, total);
+    frames->write_start(setup.positions());
+    observers.push_back(frames.get());
+  }
+
+  g_cancel = false;
+  auto previous = std::signal(SIGINT, on_interrupt);
+  const RunSummary summary = setup.run(observers, &g_cancel);
+  std::signal(SIGINT, previous);
+  progress.finish();
+  const bool completed = summary.termination == Termination::kCompleted;
+
+  std::vector<std::string> files;
+  if (out && (completed || a.keep_failed)) {
+    out->write_text("run.csv", csv.text());
+    if (!patches.empty()) out->write_text("patches.csv", patches.text());
+    out->write_text("run.json", run_json(a, setup, summary, totals).dump(2) + "\n");
+    if (frames) frames->finish();
+    files = out->commit();
+  }
+  if (!completed) {
+    std::string msg = summary.failed() ? "the solver failed at " + summary.failure
+                                       : "cancelled after " + std::to_string(summary.iterations) + " iterations";
+    if (out)
+      msg += files.empty() ? " (nothing written to " + a.out + "; --keep-failed keeps the log and frames up to here)"
+                           : " (log and frames up to here written to " + a.out + ")";
+    throw SolverError(msg);
+  }
+  report_success(a, setup, summary, totals, seconds_since(start));
   if (out)
     std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ") << "run.json"
               << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")

@@ -3,10 +3,10 @@
 // JSON path of the offending value ("c.json: $.solver.epsilon: expected a number").
 #include <Eigen/Core>
 #include <cmath>
-#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "base/errors.h"
 #include "base/text_format.h"
@@ -16,8 +16,8 @@ namespace sdog {
 // Walks a JSON value with its path; every error names the file and the path.
 class Field {
  public:
-  Field(const nlohmann::json& value, std::string path, const std::string& source)
-      : v_(value), path_(std::move(path)), source_(source) {}
+  Field(const nlohmann::json& value, std::string path, std::string source)
+      : v_(value), path_(std::move(path)), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError(source_ + ": " + path_ + ": " + what); }
   const std::string& path() const { return path_; }
@@ -26,15 +26,12 @@ class Field {
   const nlohmann::json& value() const { return v_; }
 
   /// The object's members; unknown keys are errors.
-  void expect_object(std::initializer_list<const char*> known) const {
+  void expect_object(const std::vector<std::string>& known) const {
     if (!v_.is_object()) fail("expected an object");
     const std::set<std::string> allowed(known.begin(), known.end());
     for (auto it = v_.begin(); it != v_.end(); ++it)
-      if (!allowed.count(it.key())) {
-        std::string list;
-        for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
-        throw InputError(source_ + ": " + path_ + "." + it.key() + ": unknown key (known: " + list + ")");
-      }
+      if (!allowed.count(it.key()))
+        throw InputError(source_ + ": " + path_ + "." + it.key() + ": unknown key (known: " + join(known, ", ") + ")");
   }
   bool has(const char* key) const { return v_.contains(key); }
   Field operator[](const char* key) const { return Field(v_.at(key), path_ + "." + key, source_); }
@@ -86,7 +83,7 @@ class Field {
  private:
   const nlohmann::json& v_;
   std::string path_;
-  const std::string& source_;
+  std::string source_;
 };
 
 }  // namespace sdog

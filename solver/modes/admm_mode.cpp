@@ -9,19 +9,6 @@
 
 namespace sdog {
 
-std::string AdmmOptions::validate() const {
-  if (!(rho > 0) || !std::isfinite(rho)) return "rho must be positive";
-  if (!(gamma > 0) || !std::isfinite(gamma)) return "gamma must be positive";
-  if (!std::isfinite(p))
-    return "p must be a finite number (>= 0; negative: the default 0.001 (N - 1))";
-  if (inner < 1) return "inner must be at least 1";
-  return "";
-}
-
-double AdmmOptions::proximal_weight(int patches) const {
-  return p >= 0 ? p : 0.001 * (patches - 1);
-}
-
 AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant variant,
                    const AdmmOptions& options, const SqpOptions& sqp)
     : problem_(problem),
@@ -53,20 +40,16 @@ AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant va
                                                   PatchCoupling{&frozen_, problem_.cross_patch_terms()}));
 }
 
-const char* AdmmMode::name() const {
+ModeKind AdmmMode::kind() const {
   switch (variant_) {
     case AdmmVariant::kVariableSplitting:
-      return "vsadmm";
+      return ModeKind::kVsAdmm;
     case AdmmVariant::kJacobian:
-      return "jadmm";
+      return ModeKind::kJAdmm;
     case AdmmVariant::kProximalJacobian:
-      return "proxjadmm";
+      break;
   }
-  return "admm";
-}
-
-void AdmmMode::set_time(double t) {
-  scenario_.apply(problem_, t);
+  return ModeKind::kProxJAdmm;
 }
 
 // The augmented term of side s is rho/2 |sign_s copy_s(x) - w|^2 = rho/2 |copy_s(x) - sign_s w|^2
@@ -110,7 +93,9 @@ void AdmmMode::update_multipliers(const Dofs& x) {
   }
 }
 
-StepReport AdmmMode::iterate(Dofs& x, bool last) {
+StepReport AdmmMode::iterate(const IterationContext& ctx, Dofs& x) {
+  scenario_.apply(problem_, ctx.t);
+  const bool last = ctx.last();
   StepReport report;
   const Dofs x0 = x;
   const auto lambda0 = lambda_, z0 = z_;

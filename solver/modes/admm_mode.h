@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "solver/problem/dog_problem.h"
-#include "solver/sqp/sqp_options.h"
 #include "solver/modes/mode.h"
+#include "solver/modes/mode_options.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/terms/stitch_constraints.h"
 
@@ -36,24 +36,13 @@ namespace sdog {
 
 enum class AdmmVariant { kVariableSplitting, kJacobian, kProximalJacobian };
 
-struct AdmmOptions {
-  double rho = 1;    ///< penalty of the augmented terms
-  double gamma = 1;  ///< damping of the jadmm / proxjadmm multiplier update
-  double p = -1;     ///< proximal weight P = p I of proxjadmm; < 0: 0.001 (N - 1), N patches
-  int inner = 1;     ///< ADMM rounds per solver iteration
-  std::string validate() const;
-  /// p, with the default resolved for a mesh of `patches` patches.
-  double proximal_weight(int patches) const;
-};
-
 class AdmmMode : public Mode {
  public:
   /// The problem must outlive the mode; the scenario is installed into it.
   AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant variant,
            const AdmmOptions& options, const SqpOptions& sqp);
-  const char* name() const override;
-  void set_time(double t) override;
-  StepReport iterate(Dofs& x, bool last) override;
+  ModeKind kind() const override;
+  StepReport iterate(const IterationContext& ctx, Dofs& x) override;
 
   const StitchConstraints& constraints() const { return rows_; }
   /// Multipliers, 3 per row block: vsadmm 2 per pair (side a, side b), the others 1 per pair.
@@ -61,8 +50,8 @@ class AdmmMode : public Mode {
 
  private:
   void set_targets(const Dofs& x);
-  Dofs frozen_;  // the state the round started from
   void update_multipliers(const Dofs& x);
+  Dofs frozen_;  // the state the round started from
   DogProblem& problem_;
   Scenario scenario_;
   AdmmVariant variant_;

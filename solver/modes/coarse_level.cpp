@@ -5,25 +5,26 @@
 #include "base/errors.h"
 #include "solver/terms/crease_geometry.h"
 #include "solver/multilevel/restriction.h"
+#include "solver/sqp/sqp_solver.h"
 
 namespace sdog {
 namespace {
 
-const DogModel& checked(const DogModel& model, const std::string& mode_name) {
-  CoarseLevel::check_usable(model, mode_name);
+const DogModel& checked(const DogModel& model, ModeKind mode) {
+  CoarseLevel::check_usable(model, mode);
   return model;
 }
 
 }  // namespace
 
-void CoarseLevel::check_usable(const DogModel& model, const std::string& mode_name) {
+void CoarseLevel::check_usable(const DogModel& model, ModeKind mode) {
   if (!model.has_coarse)
-    throw UsageError("mode " + mode_name + " needs the coarse mesh (odd resolutions, not --fine-only)");
+    throw UsageError(std::string("mode ") + mode_name(mode) + " needs the coarse mesh (odd resolutions, not --fine-only)");
 }
 
 CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-                         const StandardOptions& standard, const std::string& mode_name, double fold_sharpness)
-    : model_(model), link_weight_(link_weight), prolongation_(checked(model, mode_name)) {
+                         const StandardOptions& standard, ModeKind mode, double fold_sharpness)
+    : model_(model), link_weight_(link_weight), prolongation_(checked(model, mode)) {
   const FineCoarseMap& map = model.map;
   Scenario coarse_scenario = scenario;
   coarse_scenario.positions.clear();
@@ -102,7 +103,7 @@ StepReport CoarseLevel::step(const Dofs& fine_x) {
   if (link_weight_ > 0)
     for (size_t i = 0; i < links_.size(); ++i)
       problem_->link.set_target(static_cast<int>(i), Eigen::Vector3d(vertex_of(fine_x, links_[i].first)));
-  return mode_->iterate(x_, false);
+  return mode_->step(x_, false);
 }
 
 void CoarseLevel::run_beside(const std::function<void()>& work, std::optional<double> next_time) {
@@ -111,7 +112,7 @@ void CoarseLevel::run_beside(const std::function<void()>& work, std::optional<do
   auto step_ahead = [&] {
     set_time(*next_time);
     Ahead a{*next_time, x_, {}};
-    a.report = mode_->iterate(a.x, false);
+    a.report = mode_->step(a.x, false);
     ahead_ = std::move(a);
   };
   tbb::parallel_invoke(work, step_ahead);

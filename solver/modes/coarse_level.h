@@ -29,21 +29,22 @@
 #include "solver/problem/dog_problem.h"
 #include "solver/multilevel/prolongation.h"
 #include "solver/problem/scenario.h"
+#include "solver/modes/mode_kind.h"
 #include "solver/modes/standard_mode.h"
 
 namespace sdog {
 
 class CoarseLevel {
  public:
-  /// `link_weight` 0: the coarse mesh is not pulled towards the fine one. `mode_name` names the mode
+  /// `link_weight` 0: the coarse mesh is not pulled towards the fine one. `mode` names the mode
   /// in usage errors; `fold_sharpness` that of the coarse fold bias (fold_bias.h). The model must
   /// outlive the level.
   CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-              const StandardOptions& standard, const std::string& mode_name,
+              const StandardOptions& standard, ModeKind mode,
               double fold_sharpness = kFoldSharpness);
   ~CoarseLevel();
   /// Throws the UsageError the constructor would throw: the model has no coarse mesh.
-  static void check_usable(const DogModel& model, const std::string& mode_name);
+  static void check_usable(const DogModel& model, ModeKind mode);
 
   void set_time(double t);
   /// One standard iteration on the coarse mesh, with the link targets at the fine twins in `fine_x`

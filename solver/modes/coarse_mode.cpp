@@ -7,16 +7,11 @@
 
 namespace sdog {
 
-std::string CoarseOptions::validate() const {
-  if (!(link_weight >= 0)) return "link_weight must be >= 0";
-  return "";
-}
-
 CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                        const CoarseOptions& options, const StandardOptions& standard)
     : fine_(fine), model_(model), scenario_(scenario), options_(options) {
   coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario, options.fine_to_coarse ? options.link_weight : 0.0,
-                                          standard, "coarse");
+                                          standard, ModeKind::kCoarse);
   projection_ = std::make_unique<FinalProjection>(fine, standard.sqp);
   // Fine link blocks (before the solvers fix their patterns): every coarse twin pair.
   fine.link.clear();  // a mode that ran on this problem before may have made them
@@ -61,7 +56,9 @@ void CoarseMode::set_crease_targets() {
     crease_targets_.set_target(static_cast<int>(b), interpolate(model_.coarse, X, crease_stencils_[b]));
 }
 
-StepReport CoarseMode::iterate(Dofs& x, bool last) {
+StepReport CoarseMode::iterate(const IterationContext& ctx, Dofs& x) {
+  set_time(ctx.t);
+  const bool last = ctx.last();
   const Dofs x0 = x, coarse0 = coarse_->state();
   StepReport report = coarse_->step(x);
   if (report.failed) {
@@ -74,7 +71,7 @@ StepReport CoarseMode::iterate(Dofs& x, bool last) {
   frozen_ = x;
   bool fine_ok = false;
   coarse_->run_beside([&] { fine_ok = step_patch_round(patches_, x, false, report); },
-                      options_.concurrent_coarse && !last ? next_time_ : std::nullopt);
+                      options_.concurrent_coarse && !last ? ctx.next_t : std::nullopt);
   if (!fine_ok || (last && !projection_->project(x, report))) {
     x = x0;
     coarse_->set_state(coarse0);

@@ -3,8 +3,8 @@
 //   1. coarse step: one standard-solver iteration on the coarse DOG, position constraints moved
 //      to the coarse twins of their (link) vertices, coarse link vertices pulled towards their
 //      fine twins (link weight; on both sides, unlike the reference);
-//   2. coarse to fine: every coarse crease curve is interpolated at the arc-length fractions
-//      stored in the fine/coarse map, and both copies of each fine crease point get that position
+//   2. coarse to fine: every coarse crease curve is interpolated at the fine crease points (cubic
+//      Lagrange interpolation in flat arc length, curve_interpolation.h), and both copies of each fine crease point get that position
 //      as an edge-point target (weight 0.5 x stitching: it replaces stitching on the fine side);
 //   3. fine step: every fine patch steps on its own (patch_stepper.h, in parallel) with its
 //      bending, isometry, positions, the crease targets and link targets at the coarse twins of
@@ -23,24 +23,11 @@
 #include "solver/problem/dog_problem.h"
 #include "solver/modes/final_projection.h"
 #include "solver/modes/mode.h"
+#include "solver/modes/mode_options.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/modes/standard_mode.h"
 
 namespace sdog {
-
-struct CoarseOptions {
-  /// The thesis's ftc_weight (0.1 there). 0 (the default since session 6): no link constraints,
-  /// the fine mesh follows the coarse one through the crease targets only; on the thesis grid
-  /// this ended lower than 0.1 and 0.01 in 13 of 16 cases (median ratio to standard 6.4 against
-  /// 31) and never failed (docs/solver-modes.md, "The coarse mode").
-  double link_weight = 0;
-  bool fine_to_coarse = true;
-  bool prolongate = false;  ///< start each fine step from the coarse state carried to the fine mesh
-  /// The next iteration's coarse step beside this one's fine round (coarse_level.h, "Stepping
-  /// ahead"); the results do not depend on it. Only without link targets (link weight 0).
-  bool concurrent_coarse = true;
-  std::string validate() const;
-};
 
 class CoarseMode : public Mode {
  public:
@@ -49,10 +36,8 @@ class CoarseMode : public Mode {
   CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& scenario, const CoarseOptions& options,
              const StandardOptions& standard);
   ~CoarseMode() override;
-  const char* name() const override { return "coarse"; }
-  void set_time(double t) override;
-  void set_next_time(std::optional<double> t) override { next_time_ = t; }
-  StepReport iterate(Dofs& x, bool last) override;
+  ModeKind kind() const override { return ModeKind::kCoarse; }
+  StepReport iterate(const IterationContext& ctx, Dofs& x) override;
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
   void start_from(const Dofs& x) override;
   const Dofs& coarse_state() const;
@@ -60,6 +45,7 @@ class CoarseMode : public Mode {
   const CoarseLevel& coarse_level() const { return *coarse_; }
 
  private:
+  void set_time(double t);
   void set_crease_targets();
   void set_fine_link_targets();
   DogProblem& fine_;
@@ -67,7 +53,6 @@ class CoarseMode : public Mode {
   Scenario scenario_;
   CoarseOptions options_;
   std::unique_ptr<CoarseLevel> coarse_;
-  std::optional<double> next_time_;  // of the next iteration, when the run has one
   LinearPointTerm crease_targets_{"crease_targets"};  // per fine crease point copy
   std::vector<CurveStencil> crease_stencils_;         // per block of crease_targets_
   Dofs frozen_;  // the fine state before the patch step: the other side of cross-patch blocks

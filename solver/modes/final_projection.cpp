@@ -1,5 +1,7 @@
 #include "solver/modes/final_projection.h"
 
+#include "solver/sqp/sqp_solver.h"
+
 namespace sdog {
 
 FinalProjection::FinalProjection(const DogProblem& problem, const SqpOptions& sqp) : problem_(problem), options_(sqp) {}
@@ -14,9 +16,7 @@ bool FinalProjection::project(Dofs& x, StepReport& report) {
 }
 
 bool add_projection(const SqpReport& projection, StepReport& report) {
-  report.restoration_steps += projection.restoration_steps;
-  report.factorizations += projection.factorizations;
-  report.factor_ms += projection.factor_ms;
+  report.work += projection.work;
   if (!projection.failed) return true;
   report.failed = true;
   report.failure = "final projection onto the DOG constraints: " + projection.failure;

@@ -6,19 +6,20 @@
 // in that metric; the standard mode finishes a polish that stops short with the same projection).
 //
 // Why not a polishing patch round: the patches polish with their neighbours frozen and reach the
-// final tolerance only through large exact-Hessian steps, which tipped fine fold sites across
-// their crease and undid the run's result (twolevel, k = 100: 4_corners 81x81 objective 3.65 at
-// iteration 299 and 19.7 after the polish, 5.6 s; docs/solver-modes.md, "The last iteration of
-// the patch modes").
+// final tolerance only through large exact-Hessian steps, which tip fine fold sites across their
+// crease and undo the run's result (docs/design/rejected.md).
 // The projection is the smallest move onto the constraints: about sqrt of the residual it removes
 // near flat regions, where the constraints are nearly quadratic in the normal motion.
 #include <memory>
 
 #include "solver/problem/dog_problem.h"
 #include "solver/modes/mode.h"
-#include "solver/sqp/sqp_solver.h"
+#include "solver/sqp/sqp_options.h"
 
 namespace sdog {
+
+class SqpSolver;
+struct SqpReport;
 
 class FinalProjection {
  public:

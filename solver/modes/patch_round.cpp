@@ -7,8 +7,7 @@ namespace sdog {
 bool step_patch_round(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
                       StepReport& report, const std::vector<char>* active) {
   // Parallelism comes from the patches (TBB): the factorisations inside run on one BLAS thread
-  // each (measured at 81x81: 2 patch threads x 2 BLAS threads oversubscribe 2 cores, 159 ms per
-  // iteration; with 1 BLAS thread 73 ms).
+  // each (two patch threads with two BLAS threads each oversubscribe two cores).
   set_blas_threads(1);
   const std::vector<PatchReport> round = step_patches(patches, x, last, active);
   const bool first = report.patches.empty();
@@ -18,17 +17,13 @@ bool step_patch_round(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs&
     if (!first) {
       PatchReport& sum = report.patches[i];
       sum.ms += p.ms;
-      sum.linear_ms += p.linear_ms;
       sum.outer += p.outer;
-      sum.inner += p.inner;
-      sum.factorizations += p.factorizations;
+      sum.work += p.work;
       sum.objective = p.objective;
       sum.dog_max = p.dog_max;
       sum.converged = p.converged;
     }
-    report.sqp_steps += p.inner;
-    report.factor_ms += p.linear_ms;
-    report.factorizations += p.factorizations;
+    report.work += p.work;
     if (!p.converged && !report.failed) {
       report.failed = true;
       report.failure = "the step of patch " + std::to_string(p.patch) + " failed";

@@ -9,10 +9,10 @@
 
 namespace sdog {
 
-/// Steps every patch from x (with `active`: the patches marked there) and adds the round to `report`: one entry per patch in
-/// report.patches (over several rounds of one iteration: times, steps and factorisations summed;
-/// objective, DOG residual and convergence of the latest round), and sqp_steps, factorizations
-/// and factor_ms summed over the patches (factor_ms is then CPU time, not wall time). Returns false
+/// Steps every patch from x (with `active`: only the patches marked there) and adds the round to
+/// `report`: one entry per patch in report.patches (over several rounds of one iteration: times
+/// and work summed; objective, DOG residual and convergence of the latest round), and the work
+/// of every patch in report.work (its factor_ms is then CPU time, not wall time). Returns false
 /// and marks the report failed when a patch step failed or produced NaN or infinity; the caller
 /// rolls x back.
 bool step_patch_round(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,

@@ -3,15 +3,15 @@
 #include <algorithm>
 
 #include "solver/sqp/blas_threads.h"
+#include "solver/sqp/sqp_solver.h"
 
 namespace sdog {
+namespace {
 
-std::string StandardOptions::validate() const {
-  if (const std::string m = sqp.validate(); !m.empty()) return m;
-  if (!(max_fold_bias > 0)) return "max_fold_bias must be positive";
-  if (blas_threads < 0) return "blas_threads must be >= 0";
-  return "";
-}
+// Each retry multiplies the fold-bias weight by this.
+constexpr double kFoldBiasGrowth = 10;
+
+}  // namespace
 
 StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
     : problem_(problem), scenario_(scenario), options_(options), base_fold_bias_(problem.weights.fold_bias) {
@@ -22,38 +22,49 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
                                      options_.sqp);
 }
 
+StandardMode::~StandardMode() = default;
+
 void StandardMode::set_time(double t) { scenario_.apply(problem_, t); }
 
-StepReport StandardMode::iterate(Dofs& x, bool last) {
+StepReport StandardMode::iterate(const IterationContext& ctx, Dofs& x) {
+  set_time(ctx.t);
+  return step(x, ctx.last());
+}
+
+bool StandardMode::solve(Dofs& x, bool last, StepReport& report, double& constraint_max) {
+  const SqpReport r = sqp_->iterate(x, last);
+  report.work += r.work;
+  report.step_length = r.step_length;
+  constraint_max = r.constraint_max;
+  report.failed = r.failed;
+  report.failure = r.failure;
+  return !r.failed;
+}
+
+StepReport StandardMode::step(Dofs& x, bool last) {
   // Every iteration: a patch mode before may have lowered it.
   set_blas_threads(options_.blas_threads > 0 ? options_.blas_threads : default_blas_threads());
   StepReport report;
   double constraint_max = 0;  // of the last attempt
-  auto run = [&]() {
-    const SqpReport r = sqp_->iterate(x, last);
-    report.sqp_steps += r.steps;
-    report.factorizations += r.factorizations;
-    report.restoration_steps += r.restoration_steps;
-    report.step_length = r.step_length;
-    constraint_max = r.constraint_max;
-    report.factor_ms += r.factor_ms;
-    report.failed = r.failed;
-    report.failure = r.failure;
-    return !r.failed;
-  };
   if (!options_.folding) {
-    run();
+    solve(x, last, report, constraint_max);
     return report;
   }
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = sqp_->multipliers();
-  if (!run()) return report;
-  FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
+  if (!solve(x, last, report, constraint_max)) return report;
+  const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
   report.folded = check.folded;
   if (report.folded) {
     set_fold_bias(base_fold_bias_);
     return report;
   }
+  escalate_fold_bias(x, x0, lambda0, last, check.violations, constraint_max, report);
+  return report;
+}
+
+void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
+                                      int violations, double constraint_max, StepReport& report) {
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -63,33 +74,33 @@ StepReport StandardMode::iterate(Dofs& x, bool last) {
     Eigen::VectorXd lambda;
     int violations;
     double step_length;
-  } best{x, sqp_->multipliers(), check.violations, report.step_length};
+  } best{x, sqp_->multipliers(), violations, report.step_length};
   // As in the reference: an escalated bias stays for the next iteration and returns to its base
   // value once an iteration ends folded.
   double weight = problem_.weights.fold_bias;
-  while (!report.folded && weight > 0 && weight * 10 <= options_.max_fold_bias) {
+  while (!report.folded && weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias) {
     x = x0;
     sqp_->set_multipliers(lambda0);
-    set_fold_bias(weight *= 10);
-    ++report.fold_retries;
-    if (!run()) {  // a retry the solver cannot take ends the escalation; the best attempt stands
+    set_fold_bias(weight *= kFoldBiasGrowth);
+    ++report.work.fold_retries;
+    if (!solve(x, last, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
       break;
     }
-    check = check_folded(problem_.mesh(), problem_.sites, x);
+    const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
     report.folded = check.folded;
-    if (check.violations < best.violations && constraint_max <= feasible) best = {x, sqp_->multipliers(), check.violations, report.step_length};
+    if (check.violations < best.violations && constraint_max <= feasible)
+      best = {x, sqp_->multipliers(), check.violations, report.step_length};
   }
-  if (!report.folded && report.fold_retries > 0) {
-    // Unlike the reference, which kept the last attempt and the capped weight: past a point the
-    // bias only wrecks the DOG constraints (a residual of 2 was seen at 1e14) without folding.
+  if (!report.folded && report.work.fold_retries > 0) {
+    // Unlike the reference, which keeps the last attempt and the capped weight: past a point the
+    // bias only wrecks the DOG constraints without folding (docs/design/rejected.md).
     x = best.x;
     sqp_->set_multipliers(best.lambda);
     report.step_length = best.step_length;
     set_fold_bias(base_fold_bias_);
   }
-  return report;
 }
 
 void StandardMode::start_from(const Dofs&) {

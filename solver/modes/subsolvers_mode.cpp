@@ -7,16 +7,10 @@
 #include "solver/terms/crease_geometry.h"
 #include "solver/patches/patch_colouring.h"
 #include "solver/modes/patch_round.h"
+#include "solver/patches/ceres/ceres_patch.h"
+#include "solver/patches/patch_sqp.h"
 
 namespace sdog {
-
-std::string SubsolverOptions::validate() const {
-  if (backend != "sqp" && backend != "ceres") return "backend must be \"sqp\" or \"ceres\", got \"" + backend + "\"";
-  if (sweep != "jacobi" && sweep != "colours")
-    return "sweep must be \"jacobi\" or \"colours\", got \"" + sweep + "\"";
-  if (!(fold_sharpness >= 0) || !std::isfinite(fold_sharpness)) return "fold_sharpness must be a finite number >= 0";
-  return patch.validate();
-}
 
 SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
                                const SqpOptions& sqp)
@@ -41,14 +35,14 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
                  static_cast<const Term*>(fold_bias_.get()));
   }
   for (int p = 0; p < mesh.patch_count(); ++p) {
-    if (options_.backend == "ceres")
-      patches_.push_back(std::make_unique<PatchSolver>(mesh, p, terms, problem_.dog, options_.patch, coupling));
+    if (options_.backend == PatchBackend::kCeres)
+      patches_.push_back(make_ceres_patch(mesh, p, terms, problem_.dog, options_.patch, coupling));
     else
       patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp, coupling));
   }
   // Jacobi: one round of every patch (every patch has colour 0).
   const int n = mesh.patch_count();
-  const std::vector<int> colour = options_.sweep == "colours" ? colour_patches(mesh) : std::vector<int>(n, 0);
+  const std::vector<int> colour = options_.sweep == PatchSweep::kColours ? colour_patches(mesh) : std::vector<int>(n, 0);
   sweeps_.assign(*std::max_element(colour.begin(), colour.end()) + 1, std::vector<char>(n, 0));
   for (int p = 0; p < n; ++p) sweeps_[colour[p]][p] = 1;
 }
@@ -60,7 +54,12 @@ void SubsolversMode::refresh_targets(const Dofs& x) {
   for (int b = 0; b < targets_.block_count(); ++b) targets_.set_target(b, DogMesh::position(X, other_[b]));
 }
 
-StepReport SubsolversMode::iterate(Dofs& x, bool last) {
+StepReport SubsolversMode::iterate(const IterationContext& ctx, Dofs& x) {
+  set_time(ctx.t);
+  return round(x, ctx.last());
+}
+
+StepReport SubsolversMode::round(Dofs& x, bool last) {
   StepReport report;
   const Dofs x0 = x;
   for (const std::vector<char>& active : sweeps_) {

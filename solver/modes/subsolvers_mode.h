@@ -2,8 +2,9 @@
 // The thesis's "subsolvers" mode (block Jacobi over patches): every patch is its own problem
 // (patch_solver.h: Ceres, DOG constraints by an augmented Lagrangian) with, for every stitching
 // pair, an edge-point target on its own copy at the other copy's position from the previous
-// iterate (weight 0.5 x the stitching weight: the stitching residual split into two one-sided
-// halves). All patches are solved in parallel (TBB), then the targets are refreshed.
+// iterate, with the whole stitching weight (so that the standard solver's end state is a fixed
+// point of the iteration). All patches are solved in parallel (TBB), then the targets are
+// refreshed.
 //
 // The fold bias and dihedral angle constraints couple two patches: each patch keeps their blocks
 // with the other patch's vertices frozen at the state the round started from (patch_term.h), so a
@@ -16,31 +17,24 @@
 #include "solver/problem/dog_problem.h"
 #include "solver/modes/final_projection.h"
 #include "solver/modes/mode.h"
-#include "solver/patches/ceres/patch_solver.h"
-#include "solver/patches/patch_sqp.h"
+#include "solver/modes/mode_options.h"
+#include "solver/patches/patch_stepper.h"
+#include "solver/terms/fold_bias.h"
+#include "solver/terms/linear_point_term.h"
 
 namespace sdog {
-
-struct SubsolverOptions {
-  std::string backend = "sqp";  ///< per-patch steps: "sqp" (patch_sqp.h) or "ceres" (patch_solver.h)
-  /// "jacobi": every patch steps at once from the same state; "colours": the patch graph's colours
-  /// (patch_colouring.h) step one after another, each from the state the previous left.
-  std::string sweep = "jacobi";
-  PatchOptions patch;           ///< of the Ceres backend (the SQP backend uses the standard options)
-  /// Sharpness k of the patches' fold-bias term (fold_bias.h); 0: the problem's. The run's
-  /// objective and fold test stay those of the problem.
-  double fold_sharpness = 0;
-  std::string validate() const;
-};
 
 class SubsolversMode : public Mode {
  public:
   /// The problem must outlive the mode; the scenario is installed into it.
   SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
                  const SqpOptions& sqp);
-  const char* name() const override { return "subsolvers"; }
-  void set_time(double t) override;
-  StepReport iterate(Dofs& x, bool last) override;
+  ModeKind kind() const override { return ModeKind::kSubsolvers; }
+  StepReport iterate(const IterationContext& ctx, Dofs& x) override;
+  /// Sets the targets of scenario time t.
+  void set_time(double t);
+  /// One iteration at the targets of the last set_time.
+  StepReport round(Dofs& x, bool last);
 
  private:
   void refresh_targets(const Dofs& x);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "solver/modes/final_projection.h"
+#include "solver/sqp/sqp_solver.h"
 
 namespace sdog {
 namespace {
@@ -12,25 +13,7 @@ SubsolverOptions with_fold_sharpness(SubsolverOptions o, double k) {
   return o;
 }
 
-void add_coarse(const StepReport& coarse, StepReport& report) {
-  report.sqp_steps += coarse.sqp_steps;
-  report.factorizations += coarse.factorizations;
-  report.restoration_steps += coarse.restoration_steps;
-  report.fold_retries += coarse.fold_retries;
-  report.factor_ms += coarse.factor_ms;
-}
-
 }  // namespace
-
-std::string TwoLevelOptions::validate() const {
-  if (!(link_weight >= 0)) return "link_weight must be >= 0";
-  if (!(fold_sharpness > 0) || !std::isfinite(fold_sharpness)) return "fold_sharpness must be a finite number > 0";
-  if (standard_finish < 0) return "standard_finish must be >= 0";
-  if (!(finish_fold_bias_cap >= 1) || !std::isfinite(finish_fold_bias_cap))
-    return "finish_fold_bias_cap must be a finite number >= 1";
-  if (coarse_every < 1) return "coarse_every must be >= 1";
-  return "";
-}
 
 TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                            const TwoLevelOptions& options, const StandardOptions& standard,
@@ -39,14 +22,19 @@ TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenar
       scenario_(scenario),
       standard_(standard),
       options_(options),
-      coarse_(fine, model, scenario, options.link_weight, standard, "twolevel",
+      coarse_(fine, model, scenario, options.link_weight, standard, ModeKind::kTwoLevel,
               options.fold_sharpness),
       fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
 
-void TwoLevelMode::set_time(double t) {
-  if (finish_) return finish_->set_time(t);
-  coarse_.set_time(t);
-  fine_.set_time(t);
+StepReport TwoLevelMode::iterate(const IterationContext& ctx, Dofs& x) {
+  begin_finish_if_due(ctx.iterations_left);
+  if (finish_) {
+    finish_->set_time(ctx.t);
+    return finish_iteration(x, ctx.last());
+  }
+  coarse_.set_time(ctx.t);
+  fine_.set_time(ctx.t);
+  return two_level_iteration(ctx, x);
 }
 
 void TwoLevelMode::start_from(const Dofs& x) {
@@ -54,9 +42,8 @@ void TwoLevelMode::start_from(const Dofs& x) {
   shares_left_ = 0;  // a coarse step first, from the new coarse state
 }
 
-void TwoLevelMode::set_iterations_left(int left) {
-  iterations_left_ = left;
-  if (finish_ || left == kOpenEnded || left >= options_.standard_finish) return;
+void TwoLevelMode::begin_finish_if_due(int left) {
+  if (finish_ || left == IterationContext::kOpenEnded || left >= options_.standard_finish) return;
   // As a switch to the standard mode (mode_factory.h): it installs the scenario's blocks in the
   // fine problem, whose weights the two-level mode left as configured. Fold retries only up to the
   // cap: from the sites the two-level iterations left across their crease the escalation to 1e14
@@ -76,13 +63,13 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
   // and after a few standard iterations they moved the sheet far (4_corners 81x81, 10 finishing
   // iterations: objective 2.33 at iteration 299, 6.67 after the polish).
   const Dofs x0 = last ? x : Dofs();
-  StepReport report = finish_->iterate(x, false);
+  StepReport report = finish_->step(x, false);
   if (last && !report.failed && !add_projection(finish_->sqp().project(x), report)) x = x0;  // rolled back
   return report;
 }
 
-StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
-  if (finish_) return finish_iteration(x, last);
+StepReport TwoLevelMode::two_level_iteration(const IterationContext& ctx, Dofs& x) {
+  const bool last = ctx.last();
   const Dofs x0 = x, c0 = coarse_.state();
   const int shares0 = shares_left_;
   StepReport coarse;
@@ -100,10 +87,11 @@ StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
   --shares_left_;
   // The next iteration's coarse step beside the round, unless there is none: the run's last
   // iteration, the next one belongs to the standard finish or takes no coarse step.
-  const bool next_is_two_level = iterations_left_ == kOpenEnded || iterations_left_ - 1 >= options_.standard_finish;
+  const bool next_is_two_level =
+      ctx.iterations_left == IterationContext::kOpenEnded || ctx.iterations_left - 1 >= options_.standard_finish;
   StepReport report;
-  coarse_.run_beside([&] { report = fine_.iterate(x, last); },
-                     options_.concurrent_coarse && !last && next_is_two_level && shares_left_ == 0 ? next_time_
+  coarse_.run_beside([&] { report = fine_.round(x, last); },
+                     options_.concurrent_coarse && !last && next_is_two_level && shares_left_ == 0 ? ctx.next_t
                                                                                                    : std::nullopt);
   if (report.failed) {
     x = x0;
@@ -112,7 +100,7 @@ StepReport TwoLevelMode::iterate(Dofs& x, bool last) {
     report.failure = "fine step: " + report.failure;
     return report;
   }
-  add_coarse(coarse, report);
+  report.work += coarse.work;
   return report;
 }
 

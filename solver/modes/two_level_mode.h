@@ -36,57 +36,21 @@
 #include "geometry/dog_model.h"
 #include "solver/modes/coarse_level.h"
 #include "solver/modes/mode.h"
+#include "solver/modes/mode_options.h"
 #include "solver/modes/standard_mode.h"
 #include "solver/modes/subsolvers_mode.h"
 
 namespace sdog {
-
-struct TwoLevelOptions {
-  /// Pull of the coarse link vertices towards their fine twins. 0 (the default): the coarse mesh
-  /// runs on its own and only drives the fine one; any pull closes a feedback loop (the coarse
-  /// step follows the fine motion, which the correction then adds to the fine mesh again) that
-  /// made the flattening test diverge with 0.1 (docs/solver-modes.md, "The two-level mode").
-  double link_weight = 0;
-  /// Sharpness k of the fold bias (fold_bias.h) in the coarse step and the fine patches; the run's
-  /// objective and fold test keep the standard k = 1000. At 1000 the correction tips fine fold
-  /// sites across the crease's osculating plane, where the tanh is saturated and block Jacobi
-  /// cannot bring them back (4_corners 41x41: 11 of 120 sites stay unfolded, fold bias 44 of an
-  /// objective of 47); at 100 they keep a slope and refold. Thesis grid, final objective over the
-  /// standard's: geometric mean 2.17 with 100 against 4.15 with 1000, better in 11 of 16 cases
-  /// (docs/solver-modes.md, "The two-level mode").
-  double fold_sharpness = 100;
-  /// Iterations at the end of a run computed by the standard mode (see above); 0: none. Thesis
-  /// grid, objective over the standard's (geometric mean / cases within 2% and folded / folded):
-  /// 10 iterations without fold retries 1.09 / 6 / 12; 30 without 1.10 / 8 / 11 (valley 41x41
-  /// ends with a site stuck across its crease); 30 with retries up to 10x 1.04 / 10 / 15
-  /// (docs/solver-modes.md, "The two-level mode's standard finish").
-  int standard_finish = 30;
-  /// The finish's fold retries (standard_mode.h) raise the fold-bias weight at most to this
-  /// multiple of its base weight; 1: no retries. The standard mode's 1e14 wrecked sheets handed
-  /// over with unfolded sites (valley 61x61: objective 6.4e9 in the first finishing iteration).
-  double finish_fold_bias_cap = 10;
-  /// The next iteration's coarse step beside this one's fine round (see above); the results do
-  /// not depend on it.
-  bool concurrent_coarse = true;
-  /// A coarse step every this many iterations (>= 1): its displacement, carried to the fine mesh,
-  /// is spread evenly over those iterations (a share in each), so the coarse mesh takes one SQP
-  /// step per `coarse_every` increments of the scenario and the coarse work per iteration falls by
-  /// that factor.
-  int coarse_every = 1;
-  std::string validate() const;
-};
 
 class TwoLevelMode : public Mode {
  public:
   /// The fine problem and the model must outlive the mode.
   TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario, const TwoLevelOptions& options,
                const StandardOptions& standard, const SubsolverOptions& subsolvers);
-  const char* name() const override { return "twolevel"; }
-  void set_time(double t) override;
-  StepReport iterate(Dofs& x, bool last) override;
-  /// Within the last standard_finish iterations of a run the standard finish takes over.
-  void set_iterations_left(int left) override;
-  void set_next_time(std::optional<double> t) override { next_time_ = t; }
+  ModeKind kind() const override { return ModeKind::kTwoLevel; }
+  /// Within the last standard_finish iterations of a run (ctx.iterations_left) the standard
+  /// finish computes the iteration.
+  StepReport iterate(const IterationContext& ctx, Dofs& x) override;
   /// True once the standard finish computes the iterations.
   bool finishing() const { return finish_ != nullptr; }
   /// Restricts x to the coarse mesh (restriction.h) and restarts the coarse solver.
@@ -96,7 +60,10 @@ class TwoLevelMode : public Mode {
   const CoarseLevel& coarse_level() const { return coarse_; }
 
  private:
+  /// Starts the standard finish when `iterations_left` is within standard_finish.
+  void begin_finish_if_due(int iterations_left);
   StepReport finish_iteration(Dofs& x, bool last);
+  StepReport two_level_iteration(const IterationContext& ctx, Dofs& x);
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions standard_;
@@ -104,8 +71,6 @@ class TwoLevelMode : public Mode {
   CoarseLevel coarse_;
   SubsolversMode fine_;
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
-  int iterations_left_ = kOpenEnded;      // after the current iteration
-  std::optional<double> next_time_;       // of the next iteration, when the run has one
   int shares_left_ = 0;                   // iterations still to take a share; 0: a coarse step is due
   Dofs correction_share_;                 // fine displacement per iteration of the last coarse step
 };

@@ -24,9 +24,10 @@ PatchReport PatchSqp::step(Dofs& x, bool last) {
   x.segment(3 * static_cast<Eigen::Index>(begin_), n) = local;  // rolled back by the solver on failure
   PatchReport report;
   report.patch = patch_;
-  report.inner = r.steps;
-  report.factorizations = r.factorizations;
-  report.linear_ms = r.factor_ms;
+  // A patch row counts optimality steps, factorisations and their time (not restoration steps).
+  report.work.steps = r.work.steps;
+  report.work.factorizations = r.work.factorizations;
+  report.work.factor_ms = r.work.factor_ms;
   report.dog_max = r.constraint_max;
   report.converged = !r.failed;
   report.objective = sqp_->objective(local);

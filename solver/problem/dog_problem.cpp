@@ -1,19 +1,8 @@
 #include "solver/problem/dog_problem.h"
 
-#include "base/text_format.h"
+#include <algorithm>
 
 namespace sdog {
-
-std::string Weights::validate() const {
-  const std::pair<const char*, double> all[] = {{"bending", bending},     {"isometry", isometry},
-                                                {"stitching", stitching}, {"positions", positions},
-                                                {"edge_points", edge_points}, {"angles", angles},
-                                                {"fold_bias", fold_bias}, {"link", link}};
-  for (const auto& [name, w] : all)
-    if (!(w >= 0) || !std::isfinite(w))
-      return std::string("weight ") + name + " must be a finite number >= 0, got " + format_number(w);
-  return "";
-}
 
 const char* term_name(int index) {
   static const char* names[kTermCount] = {"bending", "isometry", "positions", "edge_points",

@@ -14,21 +14,10 @@
 #include "solver/terms/fold_bias.h"
 #include "solver/terms/isometry.h"
 #include "solver/terms/linear_point_term.h"
+#include "solver/problem/weights.h"
 #include "solver/terms/weighted_term.h"
 
 namespace sdog {
-
-struct Weights {
-  double bending = 1;
-  double isometry = 20000;  ///< divided by the number of quad edges
-  double stitching = 10;
-  double positions = 25;
-  double edge_points = 25;
-  double angles = 1000;
-  double fold_bias = 1;
-  double link = 0;
-  std::string validate() const;
-};
 
 /// Index of each objective term in DogProblem::objective_terms() (the run log's column order).
 enum TermIndex : int {

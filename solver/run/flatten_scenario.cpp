@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "geometry/quad_topology.h"
 #include "base/text_format.h"
+#include "solver/modes/standard_mode.h"
 #include "solver/run/run.h"
 
 namespace sdog {
@@ -25,7 +26,7 @@ Scenario flatten_scenario(const DogMesh& mesh, const Weights& weights,
   StandardMode mode(problem, fold, options);
   Dofs x = fold.start(mesh);
   const RunSummary folding = run_scenario(mode, problem, fold, x, {});
-  if (folding.failed)
+  if (folding.failed())
     throw SolverError("the flatten scenario's start state (every crease folded to " +
                       format_number(degrees) +
                       " degrees by the standard solver) failed: " + folding.failure);

@@ -8,16 +8,15 @@
 // holds the bottom-left grid corner (vertex a of the thesis protocol) at its folded position
 // (only to stop the sheet drifting: a rigid motion costs nothing) and asks for nothing else. Its
 // creases unfold, so the standard mode's folding mode is off.
+#include "solver/modes/mode_options.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/scenario.h"
-#include "solver/modes/standard_mode.h"
 
 namespace sdog {
 
 /// Throws UsageError when the mesh has no fold sites or `degrees` is 0, SolverError when folding
 /// the start state fails.
-Scenario flatten_scenario(const DogMesh& mesh, const Weights& weights,
-                          const StandardOptions& options, double degrees, int iterations = 250,
-                          int hold = 50);
+Scenario flatten_scenario(const DogMesh& mesh, const Weights& weights, const StandardOptions& options, double degrees,
+                          int iterations = 250, int hold = 50);
 
 }  // namespace sdog

@@ -4,17 +4,30 @@
 
 namespace sdog {
 
+const char* termination_name(Termination t) {
+  switch (t) {
+    case Termination::kCompleted:
+      return "completed";
+    case Termination::kFailed:
+      return "failed";
+    case Termination::kCancelled:
+      break;
+  }
+  return "cancelled";
+}
+
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
                               int iterations_left) {
   IterationReport report;
   report.iteration = iteration;
   report.mode = mode.name();
   report.t = scenario.time_of(iteration);
-  mode.set_iterations_left(iterations_left);
-  mode.set_time(report.t);
-  mode.set_next_time(iterations_left == 0 ? std::nullopt : std::optional<double>(scenario.time_of(iteration + 1)));
+  IterationContext ctx;
+  ctx.t = report.t;
+  if (iterations_left != 0) ctx.next_t = scenario.time_of(iteration + 1);
+  ctx.iterations_left = iterations_left;
   const auto t0 = Clock::now();
-  report.step = mode.iterate(x, iterations_left == 0);
+  report.step = mode.iterate(ctx, x);
   report.iteration_ms = ms_since(t0);
   report.diagnostics = diagnose(problem, x);
   if (report.t < 1) {
@@ -35,14 +48,17 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
   RunSummary summary;
   const int total = scenario.iterations + scenario.hold;
   for (int k = 1; k <= total; ++k) {
-    if (cancel && cancel->load()) break;
+    if (cancel && cancel->load()) {
+      summary.termination = Termination::kCancelled;
+      break;
+    }
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
     const IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {
-      summary.failed = true;
+      summary.termination = Termination::kFailed;
       summary.failure = "iteration " + std::to_string(k) + ": " + report.step.failure;
       break;
     }

@@ -3,10 +3,11 @@
 // mode and reported with the same diagnostics, to observers (run log, frames, progress, GUI).
 #include <atomic>
 #include <functional>
+#include <string>
 #include <vector>
 
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/mode.h"
+#include "solver/problem/diagnostics.h"
 
 namespace sdog {
 
@@ -27,23 +28,33 @@ class RunObserver {
   virtual void on_iteration(const IterationReport& report, const Dofs& x) = 0;
 };
 
+/// Why a run ended.
+enum class Termination {
+  kCompleted,  ///< every iteration of the scenario
+  kFailed,     ///< an iteration failed (rolled back: x is the last good state)
+  kCancelled,  ///< the cancel flag was raised
+};
+const char* termination_name(Termination t);  ///< "completed", "failed", "cancelled"
+
 struct RunSummary {
   int iterations = 0;  ///< completed iterations
-  bool failed = false;
-  std::string failure;
+  Termination termination = Termination::kCompleted;
+  std::string failure;  ///< "iteration K: why" when failed
   IterationReport last;
   double seconds = 0;
+  bool failed() const { return termination == Termination::kFailed; }
 };
 
-/// Iteration `iteration` (1-based) of a run: the targets of its scenario time, one iteration of
-/// the mode on x, the diagnostics on `problem`. `iterations_left`: iterations of the run after this
-/// one (0: the last, which ends on the final constraint tolerance), or Mode::kOpenEnded.
+/// Iteration `iteration` (1-based) of a run: one iteration of the mode on x with the targets of its
+/// scenario time, then the diagnostics on `problem`. `iterations_left`: iterations of the run after
+/// this one (0: the last, which ends on the final constraint tolerance), or
+/// IterationContext::kOpenEnded.
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
                               int iterations_left);
 
 /// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
-/// switch, see switch_mode in mode_factory.h), or nullptr to keep the current one. The returned
-/// mode must stay alive until the run ends or the next switch.
+/// switch), or nullptr to keep the current one. The returned mode must stay alive until the run
+/// ends or the next switch.
 using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
 
 /// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine

@@ -1,12 +1,8 @@
 #pragma once
-// The run log: one CSV row per iteration (header below), the same for every solver mode.
-//   iteration, t, objective, bending, isometry, positions, edge_points, stitching, angles,
-//   fold_bias, objective_final_targets, dog_max, dog_l2, stitch_gap_max, edge_strain_max,
-//   sqp_steps, step_length, fold_retries, folded, iteration_ms, factor_ms, link,
-//   factorizations, restoration_steps, mode
-// Term columns are unweighted sums of squared residuals; `objective` is weighted with the weights
-// of that iteration (an escalated fold bias included). Times are the only columns that may differ
-// between two runs with the same inputs.
+// The run log: one CSV row per iteration (run_csv_columns(); docs/reference/output-files.md says
+// what each column holds), the same for every solver mode. Term columns are unweighted sums of
+// squared residuals; `objective` is weighted with the weights of that iteration (an escalated fold
+// bias included). Times are the only columns that may differ between two runs with the same inputs.
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,6 +11,7 @@
 
 namespace sdog {
 
+std::vector<std::string> run_csv_columns();
 std::string run_csv_header();
 std::string run_csv_row(const IterationReport& r);
 /// Names of the columns that hold wall-clock times.
@@ -23,10 +20,11 @@ std::vector<std::string> run_csv_time_columns();
 /// The per-patch log of the multi-patch modes (patches.csv): one row per patch and iteration,
 ///   iteration, mode, patch, thread, start_ms, ms, linear_ms, steps, factorizations, objective,
 ///   dog_max, converged
-/// (solver/patch_report.h). `thread` is the TBB worker that ran the solve and `start_ms` when it
+/// (solver/patches/patch_report.h). `thread` is the TBB worker that ran the solve and `start_ms` when it
 /// started, from the start of the patch round: together a timeline of thread use. Iterations of a
 /// single-mesh mode have no rows. With the colour sweep an iteration has several rounds: times and
 /// counts are summed over them, start and thread are those of the first.
+std::vector<std::string> patches_csv_columns();
 std::string patches_csv_header();
 std::string patches_csv_rows(const IterationReport& r);
 

@@ -3,11 +3,12 @@
 #include "base/errors.h"
 #include "solver/problem/fold_seed.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/run/run_setup.h"
 
 namespace sdog {
 
-Session::Session(const DogModel& model, const RunConfig& config, const std::string& mode)
-    : model_(model), config_(config), mode_name_(mode) {
+Session::Session(const DogModel& model, const RunConfig& config, ModeKind mode)
+    : model_(model), config_(config), mode_kind_(mode) {
   check_mode_usable(mode, model);
   base_ = make_scenario(config, model.fine);
   problem_ = std::make_unique<DogProblem>(model.fine, model.fine_topology, config.weights);
@@ -22,11 +23,11 @@ void Session::rebuild() {
   for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
   for (const auto& a : user_.angles)
     scenario_.angles.push_back(angle_constraint(model_.fine, a.crease_point, a.degrees, a.degrees));
-  mode_ = switch_mode(mode_name_, *problem_, scenario_, config_, model_, x_);
+  mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_);
 }
 
 IterationReport Session::step() {
-  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, Mode::kOpenEnded);
+  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, IterationContext::kOpenEnded);
   if (!report.step.failed) ++iteration_;
   return report;
 }
@@ -37,9 +38,9 @@ void Session::reset() {
   rebuild();
 }
 
-void Session::set_mode(const std::string& mode) {
+void Session::set_mode(ModeKind mode) {
   check_mode_usable(mode, model_);
-  mode_name_ = mode;
+  mode_kind_ = mode;
   rebuild();
 }
 

@@ -15,6 +15,7 @@
 #include "geometry/dog_model.h"
 #include "solver/run/run.h"
 #include "solver/run/run_config.h"
+#include "solver/run/run_setup.h"
 
 namespace sdog {
 
@@ -35,15 +36,16 @@ struct UserConstraints {
 
 class Session {
  public:
-  /// Throws UsageError for an unknown or unusable mode (a coarse mode without the coarse mesh).
-  Session(const DogModel& model, const RunConfig& config, const std::string& mode);
+  /// The configuration's scenario (make_scenario) from its start state. Throws UsageError for an
+  /// unusable mode (a coarse mode without the coarse mesh).
+  Session(const DogModel& model, const RunConfig& config, ModeKind mode);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
   const DogModel& model() const { return model_; }
   const RunConfig& config() const { return config_; }
-  const std::string& mode() const { return mode_name_; }
+  ModeKind mode() const { return mode_kind_; }
   /// Fine positions.
   const Dofs& positions() const { return x_; }
   /// The coarse positions of a mode that steps a coarse mesh (coarse, twolevel), else nullptr.
@@ -63,7 +65,7 @@ class Session {
   /// Back to the start state (iteration 0); the constraints stay.
   void reset();
   /// Continue with another mode from the current positions (Mode::start_from).
-  void set_mode(const std::string& mode);
+  void set_mode(ModeKind mode);
   /// Replaces the positions (a loaded workspace); throws InputError on a size mismatch.
   void set_positions(const Dofs& x, int iteration);
 
@@ -97,7 +99,7 @@ class Session {
 
   const DogModel& model_;
   RunConfig config_;
-  std::string mode_name_;
+  ModeKind mode_kind_;
   Scenario base_, scenario_;
   std::unique_ptr<DogProblem> problem_;
   std::unique_ptr<Mode> mode_;

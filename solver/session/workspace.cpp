@@ -5,6 +5,7 @@
 #include "base/atomic_output.h"
 #include "base/errors.h"
 #include "solver/config/json_field.h"
+#include "solver/config/run_config_json.h"
 
 namespace sdog {
 namespace {
@@ -20,7 +21,7 @@ Workspace workspace_of(const Session& session, const std::string& pattern, const
   Workspace w;
   w.pattern = pattern;
   w.resolution = resolution;
-  w.mode = session.mode();
+  w.mode = mode_name(session.mode());
   w.iteration = session.iteration();
   w.config = session.config();
   w.constraints = session.constraints();
@@ -30,8 +31,7 @@ Workspace workspace_of(const Session& session, const std::string& pattern, const
 }
 
 json to_json(const Workspace& w) {
-  json config = to_json(w.config);
-  if (config["admm"]["p"].is_string()) config["admm"].erase("p");  // the default, a formula
+  const json config = to_json(w.config);
   json handles = json::array(), angles = json::array(), positions = json::array();
   for (const auto& h : w.constraints.handles)
     handles.push_back({{"vertex", h.vertex}, {"target", {h.target.x(), h.target.y(), h.target.z()}}});

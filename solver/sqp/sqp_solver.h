@@ -3,7 +3,9 @@
 // terms f(x) with the DOG constraints c(x) = 0 as hard constraints. Multipliers lambda belong to
 // the Lagrangian L = f - lambda^T c and are kept across iterations.
 //
-// One call of iterate() is one solver iteration (one point of the thesis's plots):
+// One call of iterate() is one solver iteration (one point of the thesis's plots), in phases:
+// sqp_step.cpp (optimality steps and their line search), sqp_restoration.cpp (restoration and
+// the projection), sqp_linearization.cpp (the quantities a step is built from):
 //
 // 1. Optimality steps, until the KKT error max(|grad f - J^T lambda|_inf, |c|_inf) is below
 //    kkt_tolerance (the first error counts 1e4 times, as in the reference, so at least one step
@@ -37,11 +39,11 @@
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
 // available (lagrangian_hessian) but off by default: on flat regions the multipliers are not
 // unique (the rows of J are dependent), their curvature is arbitrary, and with it the sheet locks
-// (measured: 4_corners 21x21 ends at objective 2242 instead of 1.95).
+// (docs/design/rejected.md).
 // A non-PD K first raises rho, then the shift delta. Failure (NaN or infinity, a factorisation that
 // fails at every shift, a line search that finds no decrease away from a stationary point) rolls
 // the iteration back and is reported.
-#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,23 +51,21 @@
 #include "solver/sqp/block_matrix.h"
 #include "solver/sqp/local_restoration.h"
 #include "solver/sqp/sqp_options.h"
+#include "solver/sqp/work.h"
 #include "solver/terms/term.h"
 #include "solver/terms/weighted_term.h"
 
 namespace sdog {
 
+class CholmodFactor;
+
 /// What one iteration did.
 struct SqpReport {
-  int steps = 0;              ///< optimality steps
-  int restoration_steps = 0;  ///< steps that only restored the constraints (chord, local, global)
-  int local_steps = 0;        ///< of which local
-  int factorizations = 0;     ///< global numeric factorisations
+  Work work;
   double constraint_max = 0;  ///< |c|_inf at the end
   double step_length = 0;     ///< line-search step of the last optimality step
-  double factor_ms = 0;       ///< numeric factorisations and triangular solves
-  double assembly_ms = 0;
   bool failed = false;
-  std::string failure;        ///< why, when failed (x and the multipliers were rolled back)
+  std::string failure;  ///< why, when failed (x and the multipliers were rolled back)
 };
 
 class SqpSolver {
@@ -78,7 +78,7 @@ class SqpSolver {
   ~SqpSolver();
 
   /// One iteration from x (updated in place; rolled back on failure). `last`: the last iteration
-  /// of a run (tighter constraint tolerance).
+  /// of a run (tighter constraint tolerance, polish).
   SqpReport iterate(Dofs& x, bool last = false);
 
   /// Only restoration steps (no objective step): moves x onto the constraints until |c| is within
@@ -88,13 +88,12 @@ class SqpSolver {
 
   /// The projection onto the constraints that ends a run: chord and global restoration steps in
   /// the polishing metric (polish_epsilon) until |c|_inf <= final_constraint_tolerance, at most
-  /// kProjectionSteps. Used by the patch modes' last iteration (final_projection.h) and by
-  /// iterate() when its polish stops short of the final tolerance. Near flat regions the DOG
-  /// constraints are degenerate (nearly quadratic in the normal motion) and these steps converge
-  /// only linearly, hence the many steps (twolevel on 4_corners 81x81 needed 66, from 4.8e-5 to
-  /// 4.2e-7, about 4 s once; with the restoration metric, restoration_epsilon 1e-6, it stalled at
-  /// 1.7e-6, and 1e-7 gave 8.4e-7 after 200 steps). A projection that cannot reach the tolerance keeps its
-  /// best state (reported in constraint_max); failed only for non-finite constraints.
+  /// kProjectionSteps, then as many more with local steps if that stops short. Used by the patch
+  /// modes' last iteration (final_projection.h) and by iterate() when its polish stops short of
+  /// the final tolerance. Near flat regions the DOG constraints are nearly quadratic in the normal
+  /// motion and these steps converge only linearly, hence the many steps. A projection that cannot
+  /// reach the tolerance keeps its best state (reported in constraint_max); failed only for
+  /// non-finite constraints.
   SqpReport project(Dofs& x);
   static constexpr int kProjectionSteps = 100;
 
@@ -112,52 +111,100 @@ class SqpSolver {
   /// The quantities one step is built from (exposed for tests): weighted objective f, its
   /// gradient g, constraint values c and Jacobian J, and, if asked, the matrix
   /// K = H + rho J^T J (lower triangle; H as described above).
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   struct Linearization {
     double f = 0;
     Eigen::VectorXd g, c;
-    Eigen::SparseMatrix<double, Eigen::RowMajor> J;
+    RowMatrix J;
   };
-  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   Linearization linearization(const Dofs& x, double rho = 0, Eigen::SparseMatrix<double>* K = nullptr);
 
  private:
-  void linearize(const Dofs& x, Linearization& lin, bool hessian);
-  /// Constraint values and Jacobian (in the fixed pattern); with `hessian` also J^T J into G_ and,
-  /// when asked for, the constraints' curvature into H_.
-  void fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian);
+  /// How the optimality steps and the restoration of one pass are made: an ordinary iteration or
+  /// the last iteration's polish.
+  struct Pass {
+    double tolerance;            ///< |c|_inf the restoration aims for
+    int max_steps;               ///< optimality steps
+    int max_restoration_steps;
+    bool stop_when_feasible;     ///< optimality steps end once |c|_inf <= tolerance
+    bool curvature;              ///< the constraints' curvature -sum lambda_i Hess c_i in H
+    double restoration_epsilon;  ///< metric of the restoration steps
+    double rho_cap;              ///< rho may grow to this to make K positive definite
+  };
+  Pass ordinary_pass() const;
+  Pass polish_pass(double rho_cap) const;
+  /// Restoration settings: how far, how many steps, whether local steps are allowed, the metric.
+  struct Restoration {
+    double tolerance;
+    int max_steps;
+    bool local_steps;
+    double epsilon;
+    double rho_cap;
+  };
+  /// Result of one optimality step.
+  enum class StepOutcome { kTaken, kStationary, kFailed };
+
+  // sqp_solver.cpp: the iteration and its polish.
+  SqpReport run_pass(Dofs& x, const Pass& pass);
+  void polish(Dofs& x, SqpReport& report);
+  // sqp_step.cpp: one optimality step (KKT solve and line search).
+  StepOutcome optimality_step(Dofs& x, Linearization& lin, const Pass& pass, SqpReport& report);
+  /// A backtracking search along d with the Armijo condition on Phi_mu (see above).
+  struct LineSearch {
+    bool accepted = false;
+    double alpha = 1;     ///< the step length taken
+    double phi0 = 0;      ///< Phi_mu at x
+    double slope = 0;     ///< its directional derivative along d
+    Dofs x;               ///< the point accepted
+  };
+  LineSearch line_search(const Dofs& x, const Linearization& lin, const Eigen::VectorXd& d,
+                         const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu, int max_halvings,
+                         SqpReport& report) const;
+  // sqp_restoration.cpp. False (with report.failure set) on NaN.
+  bool restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings, SqpReport& report);
+  // sqp_linearization.cpp.
+  /// The objective's value and gradient and the constraints at x (no Hessian); false when any of
+  /// them is not finite.
+  bool relinearize(const Dofs& x, Linearization& lin, SqpReport& report);
+  void linearize(const Dofs& x, Linearization& lin, bool hessian, bool curvature);
+  /// Constraint values and Jacobian (in the fixed pattern); with `hessian` also J^T J into G and,
+  /// with `curvature`, the constraints' curvature into H.
+  void fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian, bool curvature);
   /// Linearises at x with the Hessian and factorises K; false if that fails.
-  bool refactorize(const Dofs& x, Linearization& lin, double epsilon, SqpReport& report);
+  bool refactorize(const Dofs& x, Linearization& lin, double epsilon, bool curvature, double rho_cap,
+                   SqpReport& report);
   void refresh_constant_hessian();
   double augmented_lagrangian(const Dofs& x, double mu) const;
   double kkt_error(const Linearization& lin) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs, SqpReport& report) const;
-  /// Restoration phase; false (with report.failure set) on NaN. `local_steps`: local steps allowed.
-  bool restore(Dofs& x, Eigen::VectorXd& c, double tolerance, int max_steps, bool local_steps, SqpReport& report);
 
   int n_;
   std::vector<WeightedTerm> objective_;
   const Term& constraints_;
   SqpOptions options_;
-  int rows_ = 0;
-  std::vector<int> first_row_;
+  /// Constraint rows: the first row of each block, the Jacobian's pattern (each row holds its
+  /// block's vertices in increasing order) and each block vertex's rank in its row.
+  struct Rows {
+    int count = 0;
+    std::vector<int> first;
+    RowMatrix pattern;
+    std::vector<std::vector<int>> column_rank;
+  } rows_;
   Eigen::VectorXd lambda_;
-  SymmetricBlockMatrix constant_hessian_;  // linear terms: recomputed when a weight changes
-  bool constant_dirty_ = true;
-  SymmetricBlockMatrix H_;  // objective Hessian of the last factorisation
-  SymmetricBlockMatrix G_;  // J^T J of the same
-  SymmetricBlockMatrix K_;  // H + rho G, handed to CHOLMOD
-  std::unique_ptr<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>> llt_;
+  /// The matrices of a factorisation: the linear terms' constant Hessian (recomputed when a
+  /// weight changes), the objective Hessian H, J^T J (G) and K = H + rho G (handed to CHOLMOD).
+  struct Matrices {
+    SymmetricBlockMatrix constant, H, G, K;
+    bool constant_dirty = true;
+  } m_;
+  /// The last factorisation: valid or not, its rho (raised above 1/epsilon if K was not PD), its
+  /// shift and the constraint Jacobian it was made at (chord steps).
+  std::unique_ptr<CholmodFactor> factor_;
   bool factored_ = false;
-  double rho_ = 0;    // as factorised (raised above 1/epsilon if K was not PD)
-  double delta_ = 0;  // shift of the last factorisation
-  RowMatrix factored_J_;                     // constraint Jacobian where factorised
-  RowMatrix J_pattern_;                      // constraint Jacobian pattern
-  std::vector<std::vector<int>> column_rank_;  // per block vertex: its rank in the block's row
+  double rho_ = 0;
+  double delta_ = 0;
+  RowMatrix factored_J_;
   LocalRestoration local_;
-  bool polishing_ = false;  // polishing iteration: Lagrangian Hessian on
-  double rho_cap_ = 0;      // rho may grow to this (options_.rho_max except when polishing)
-  // One iteration; `last`: a polishing iteration (see iterate()).
-  SqpReport solve_iteration(Dofs& x, bool last);
 };
 
 }  // namespace sdog

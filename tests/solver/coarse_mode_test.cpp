@@ -37,15 +37,10 @@ struct CoarseRun {
 };
 
 CoarseRun run_coarse(const RunConfig& config) {
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  CoarseMode mode(problem, model(), scenario, config.coarse, config.standard);
+  RunSetup setup(model(), ModeKind::kCoarse, config);
   CoarseRun r;
-  r.result.x = scenario.start(model().fine);
-  test::Recorder recorder;
-  r.result.summary = run_scenario(mode, problem, scenario, r.result.x, {&recorder});
-  r.result.reports = recorder.reports;
-  r.coarse = mode.coarse_state();
+  r.result = test::run_setup(setup);
+  r.coarse = dynamic_cast<const CoarseMode&>(setup.mode()).coarse_state();
   return r;
 }
 
@@ -55,19 +50,18 @@ TEST(CoarseMode, FollowsAngleConstraints) { test::expect_follows_angles("coarse"
 
 TEST(CoarseMode, CarriesAngleConstraintsToTheCoarseTwins) {
   RunConfig config = test::short_run(20, 10);
-  config.scenario = "fold";
+  config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
   auto coarse_angle_residual = [&](double angle_weight) {
     RunConfig c = config;
     c.weights.angles = angle_weight;
-    DogProblem problem(model().fine, model().fine_topology, c.weights);
-    const Scenario scenario = make_scenario(c, model().fine);
-    CoarseMode mode(problem, model(), scenario, c.coarse, c.standard);
-    Dofs x = scenario.start(model().fine);
-    EXPECT_FALSE(run_scenario(mode, problem, scenario, x, {}).failed);
+    RunSetup setup(model(), ModeKind::kCoarse, c);
+    EXPECT_FALSE(setup.run({}).failed());
+    const auto& mode = dynamic_cast<const CoarseMode&>(setup.mode());
     const DogProblem& coarse = mode.coarse_level().problem();
     EXPECT_GT(coarse.angles.block_count(), 0);
-    EXPECT_LT(coarse.angles.block_count(), static_cast<int>(scenario.angles.size()));  // not every fine site has a twin
+    // Not every fine site has a twin.
+    EXPECT_LT(coarse.angles.block_count(), static_cast<int>(setup.scenario().angles.size()));
     return diagnose(coarse, mode.coarse_state()).terms[kAngles];
   };
   const double with = coarse_angle_residual(1000), without = coarse_angle_residual(0);
@@ -76,11 +70,9 @@ TEST(CoarseMode, CarriesAngleConstraintsToTheCoarseTwins) {
 
 TEST(CoarseMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const CoarseRun r = run_coarse(short_run());
-  ASSERT_FALSE(r.result.summary.failed) << r.result.summary.failure;
+  ASSERT_FALSE(r.result.summary.failed()) << r.result.summary.failure;
   ASSERT_EQ(r.result.reports.size(), 15u);
   test::expect_dog_and_patch_reports(r.result, model().fine.patch_count());
-  // The standard solver's end bar is 1e-6; the last polish of one patch here stops at 3.6e-6
-  // (an open point of issue 4, see README "The coarse mode").
   EXPECT_LT(r.result.reports.back().diagnostics.dog_max, 1e-5);
   // The dragged corner moved the fine mesh through the coarse one.
   EXPECT_GT(r.result.reports.back().diagnostics.terms[kBending], 1e-3);
@@ -92,8 +84,8 @@ TEST(CoarseMode, LinkConstraintsPullBothSides) {
   const CoarseRun two_way = run_coarse(config);
   config.coarse.link_weight = 0;
   const CoarseRun uncoupled = run_coarse(config);
-  ASSERT_FALSE(two_way.result.summary.failed);
-  ASSERT_FALSE(uncoupled.result.summary.failed);
+  ASSERT_FALSE(two_way.result.summary.failed());
+  ASSERT_FALSE(uncoupled.result.summary.failed());
   EXPECT_LT(link_distance(two_way.result.x, two_way.coarse), link_distance(uncoupled.result.x, uncoupled.coarse));
   // One-way coupling leaves the coarse run alone: it is the standard solver on the coarse mesh.
   config.coarse.link_weight = 1;
@@ -111,14 +103,13 @@ TEST(CoarseMode, LinkConstraintsPullBothSides) {
 // the coarse step factorised on two BLAS threads).
 TEST(CoarseMode, DefaultLinkWeightBeatsTheThesisValue) {
   static const DogModel m31 = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {31, 31});
-  EXPECT_EQ(CoarseOptions{}.link_weight, 0.0);
   RunConfig config = test::short_run(60, 10);
   auto run = [&](const RunConfig& c) { return test::run_mode("coarse", m31, c); };
   const test::RunResult by_default = run(config);
   config.coarse.link_weight = 0.1;
   const test::RunResult thesis = run(config);
-  ASSERT_FALSE(by_default.summary.failed) << by_default.summary.failure;
-  ASSERT_FALSE(thesis.summary.failed) << thesis.summary.failure;
+  ASSERT_FALSE(by_default.summary.failed()) << by_default.summary.failure;
+  ASSERT_FALSE(thesis.summary.failed()) << thesis.summary.failure;
   const Diagnostics& a = by_default.reports.back().diagnostics;
   const Diagnostics& b = thesis.reports.back().diagnostics;
   EXPECT_LT(a.objective, 0.5 * b.objective);
@@ -133,12 +124,10 @@ TEST(CoarseMode, DefaultLinkWeightBeatsTheThesisValue) {
 TEST(CoarseMode, TheCoarseStepComputedAheadChangesNoResult) {
   auto run = [](RunConfig config, bool concurrent, int* taken_ahead) {
     config.coarse.concurrent_coarse = concurrent;
-    DogProblem problem(model().fine, model().fine_topology, config.weights);
-    const Scenario scenario = make_scenario(config, model().fine);
-    CoarseMode mode(problem, model(), scenario, config.coarse, config.standard);
+    RunSetup setup(model(), ModeKind::kCoarse, config);
     CoarseRun r;
-    r.result.x = scenario.start(model().fine);
-    r.result.summary = run_scenario(mode, problem, scenario, r.result.x, {});
+    r.result = test::run_setup(setup);
+    const auto& mode = dynamic_cast<const CoarseMode&>(setup.mode());
     r.coarse = mode.coarse_state();
     *taken_ahead = mode.coarse_level().steps_taken_ahead();
     return r;
@@ -147,7 +136,7 @@ TEST(CoarseMode, TheCoarseStepComputedAheadChangesNoResult) {
   ASSERT_TRUE(config.coarse.concurrent_coarse);  // the default
   int ahead_steps = 0, sequential_steps = 0;
   const CoarseRun ahead = run(config, true, &ahead_steps), sequential = run(config, false, &sequential_steps);
-  ASSERT_FALSE(ahead.result.summary.failed) << ahead.result.summary.failure;
+  ASSERT_FALSE(ahead.result.summary.failed()) << ahead.result.summary.failure;
   EXPECT_EQ(ahead_steps, 14);
   EXPECT_EQ(sequential_steps, 0);
   EXPECT_TRUE(ahead.result.x == sequential.result.x);
@@ -173,8 +162,8 @@ TEST(CoarseMode, NeedsTheCoarseMesh) {
   RunConfig config = short_run();
   DogProblem problem(fine_only.fine, fine_only.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, fine_only.fine);
-  for (const char* name : {"coarse", "twolevel"})
-    EXPECT_THROW(make_mode(name, problem, scenario, config, &fine_only), UsageError) << name;
+  for (ModeKind mode : {ModeKind::kCoarse, ModeKind::kTwoLevel})
+    EXPECT_THROW(make_mode(mode, problem, scenario, config, &fine_only), UsageError) << mode_name(mode);
 }
 
 // A target on a fine vertex without a coarse twin is carried to the coarse mesh through the
@@ -193,15 +182,15 @@ TEST(CoarseMode, CarriesTargetsOnFineOnlyVertices) {
   scenario.positions[1].end = scenario.positions[1].start + Eigen::Vector3d(0, 0, lift);
   const Eigen::Vector3d target = scenario.positions[1].end;
   for (const char* name : {"coarse", "twolevel"}) {
-    DogProblem problem(model().fine, model().fine_topology, config.weights);
-    auto mode = make_mode(name, problem, scenario, config, &model());
-    Dofs x = scenario.start(model().fine);
-    const RunSummary s = run_scenario(*mode, problem, scenario, x, {});
-    ASSERT_FALSE(s.failed) << name << ": " << s.failure;
+    RunSetup setup(model(), parse_mode(name), config, scenario);
+    const RunSummary s = setup.run({});
+    const Dofs& x = setup.positions();
+    Mode* mode = &setup.mode();
+    ASSERT_FALSE(s.failed()) << name << ": " << s.failure;
     EXPECT_LT((vertex_of(x, v) - target).norm(), 0.5 * lift) << name;
     const CoarseLevel* level = nullptr;
-    if (auto* c = dynamic_cast<CoarseMode*>(mode.get())) level = &c->coarse_level();
-    if (auto* t = dynamic_cast<TwoLevelMode*>(mode.get())) level = &t->coarse_level();
+    if (auto* c = dynamic_cast<CoarseMode*>(mode)) level = &c->coarse_level();
+    if (auto* t = dynamic_cast<TwoLevelMode*>(mode)) level = &t->coarse_level();
     ASSERT_NE(level, nullptr);
     const Dofs carried = level->prolongation().apply(level->state());
     EXPECT_LT((vertex_of(carried, v) - target).norm(), 0.5 * lift) << name;

@@ -1,6 +1,5 @@
 // The last iteration of the patch modes (final_projection.h): an ordinary patch round, then the
-// whole sheet projected onto the DOG constraints to the final tolerance. The polishing patch
-// round it replaces moved the sheet far (twolevel, 4_corners 81x81: objective 3.65 to 19.7).
+// whole sheet projected onto the DOG constraints to the final tolerance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,7 +23,7 @@ const DogModel& model() {
 // the constraints to the final tolerance, moved by little more than it was nudged.
 TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
   const test::RunResult r = test::run_mode("standard", model(), test::short_run(30, 0));
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
   Dofs x = r.x;
   for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += 3e-5 * std::sin(1.7 * i);
@@ -36,7 +35,7 @@ TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
   StepReport report;
   ASSERT_TRUE(projection.project(x, report)) << report.failure;
   EXPECT_LT(diagnose(problem, x).dog_max, sqp.final_constraint_tolerance);
-  EXPECT_GT(report.restoration_steps, 0);
+  EXPECT_GT(report.work.restoration_steps, 0);
   // Near flat regions the constraints are nearly quadratic in the normal motion, so removing a
   // residual r takes a move of about sqrt(r); the objective barely changes.
   EXPECT_LT((x - nudged).lpNorm<Eigen::Infinity>(), std::sqrt(before));
@@ -46,7 +45,7 @@ TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
   const Dofs projected = x;
   StepReport again;
   ASSERT_TRUE(projection.project(x, again));
-  EXPECT_EQ(again.restoration_steps, 0);
+  EXPECT_EQ(again.work.restoration_steps, 0);
   EXPECT_TRUE(x == projected);
 }
 
@@ -57,10 +56,7 @@ struct Finish {
 
 // The state after iteration `k` of a run of `iterations` + `hold` iterations.
 Finish after(const char* name, RunConfig config, int k) {
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  auto mode = make_mode(name, problem, scenario, config, &model());
-  Dofs x = scenario.start(model().fine);
+  RunSetup setup(model(), parse_mode(name), config);
   struct Keep : RunObserver {
     int k;
     Dofs x;
@@ -70,9 +66,9 @@ Finish after(const char* name, RunConfig config, int k) {
     }
   } keep;
   keep.k = k;
-  const RunSummary summary = run_scenario(*mode, problem, scenario, x, {&keep});
-  EXPECT_FALSE(summary.failed) << name << ": " << summary.failure;
-  return {keep.d, check_folded(model().fine, problem.sites, keep.x).violations};
+  const RunSummary summary = setup.run({&keep});
+  EXPECT_FALSE(summary.failed()) << name << ": " << summary.failure;
+  return {keep.d, check_folded(model().fine, setup.problem().sites, keep.x).violations};
 }
 
 // The last iteration of a run in the patch modes is an ordinary iteration and the projection: the

@@ -1,4 +1,4 @@
-// Switching modes in the middle of a run (switch_mode, run_scenario's schedule): every mode takes
+// Switching modes in the middle of a run (switch_mode, the switches of a RunSetup): every mode takes
 // over the state another one left without a jump and keeps the DOG constraints; the coarse modes
 // derive their coarse mesh from the state they take over.
 #include <gtest/gtest.h>
@@ -23,13 +23,10 @@ struct SwitchedRun {
   std::vector<double> step;  ///< per iteration: largest vertex displacement
 };
 
-SwitchedRun run_with_switches(const RunConfig& config, const std::string& first) {
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  std::unique_ptr<Mode> mode = make_mode(first, problem, scenario, config, &model());
+SwitchedRun run_with_switches(const RunConfig& config, ModeKind first) {
+  RunSetup setup(model(), first, config);
   SwitchedRun out;
-  out.result.x = scenario.start(model().fine);
-  Dofs previous = out.result.x;
+  Dofs previous = setup.positions();
   struct StepRecorder : test::Recorder {
     Dofs* previous;
     std::vector<double>* step;
@@ -41,26 +38,27 @@ SwitchedRun run_with_switches(const RunConfig& config, const std::string& first)
   } recorder;
   recorder.previous = &previous;
   recorder.step = &out.step;
-  out.result.summary = run_scenario(*mode, problem, scenario, out.result.x, {&recorder}, nullptr,
-                                    switch_schedule(problem, scenario, config, model(), mode));
+  out.result.summary = setup.run({&recorder});
   out.result.reports = recorder.reports;
+  out.result.x = setup.positions();
   return out;
 }
 
 // Every mode takes over from another and hands over to the next; the standard mode finishes.
 TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   RunConfig config = test::short_run(100, 30);
-  config.switches = {{16, "twolevel"}, {31, "coarse"}, {46, "subsolvers"}, {61, "vsadmm"},
-                     {71, "jadmm"},    {76, "proxjadmm"}, {81, "standard"}};
-  const SwitchedRun s = run_with_switches(config, "standard");
-  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  config.switches = {{16, ModeKind::kTwoLevel}, {31, ModeKind::kCoarse},    {46, ModeKind::kSubsolvers},
+                     {61, ModeKind::kVsAdmm},   {71, ModeKind::kJAdmm},     {76, ModeKind::kProxJAdmm},
+                     {81, ModeKind::kStandard}};
+  const SwitchedRun s = run_with_switches(config, ModeKind::kStandard);
+  ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
   ASSERT_EQ(s.result.reports.size(), 130u);
 
   std::map<int, std::string> expected_mode;
   std::string current = "standard";
   size_t next = 0;
   for (int k = 1; k <= 130; ++k) {
-    if (next < config.switches.size() && config.switches[next].iteration == k) current = config.switches[next++].mode;
+    if (next < config.switches.size() && config.switches[next].iteration == k) current = mode_name(config.switches[next++].mode);
     expected_mode[k] = current;
   }
   for (const auto& r : s.result.reports) {
@@ -73,7 +71,7 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   for (int k = 2; k <= 15; ++k) typical = std::max(typical, s.step[k - 1]);
   for (const ModeSwitch& sw : config.switches)
     EXPECT_LT(s.step[sw.iteration - 1], 4 * typical)
-        << "iteration " << sw.iteration << " (" << sw.mode << " takes over): " << s.step[sw.iteration - 1]
+        << "iteration " << sw.iteration << " (" << mode_name(sw.mode) << " takes over): " << s.step[sw.iteration - 1]
         << " against " << typical;
 
   // The standard mode's last iteration polishes the constraints as in a run of its own. (It does
@@ -88,10 +86,10 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
 // weighted objective of 1e14 behind; the reference's behaviour).
 TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
   RunConfig config = test::short_run(30, 5);
-  config.switches = {{10, "standard"}};
+  config.switches = {{10, ModeKind::kStandard}};
   config.twolevel.standard_finish = 0;  // two-level iterations up to the switch (a finish would start at 6)
-  const SwitchedRun s = run_with_switches(config, "twolevel");
-  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  const SwitchedRun s = run_with_switches(config, ModeKind::kTwoLevel);
+  ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
   const auto& reports = s.result.reports;
   ASSERT_EQ(reports.size(), 35u);
   const auto& before = reports[8];  // iteration 9, the two-level mode's last
@@ -101,7 +99,7 @@ TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
     const auto& r = reports[k];
     ASSERT_EQ(r.mode, "standard");
     EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
-    if (r.step.folded || r.step.fold_retries == 0) continue;
+    if (r.step.folded || r.step.work.fold_retries == 0) continue;
     ++exhausted;
     // The objective is at the base fold-bias weight again: of the order of the handed-over sheet's.
     EXPECT_LT(r.diagnostics.objective, 10 * before.diagnostics.objective) << "iteration " << r.iteration;
@@ -113,9 +111,9 @@ TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
 // deformed state continues smoothly, and a coarse run can start from a given state (flatten).
 TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
   RunConfig config = test::short_run(60, 10);
-  config.switches = {{41, "twolevel"}};
-  const SwitchedRun s = run_with_switches(config, "standard");
-  ASSERT_FALSE(s.result.summary.failed) << s.result.summary.failure;
+  config.switches = {{41, ModeKind::kTwoLevel}};
+  const SwitchedRun s = run_with_switches(config, ModeKind::kStandard);
+  ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
   // Iteration 41 moves no more than the standard iterations before it; a coarse mesh left flat
   // would drag the sheet back by its whole deformation.
   double before = 0;
@@ -124,10 +122,10 @@ TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
   for (const auto& r : s.result.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
 
   RunConfig flatten = test::short_run(8, 2);
-  flatten.scenario = "flatten";
+  flatten.scenario = ScenarioKind::kFlatten;
   flatten.fold_angle = 30;
   const test::RunResult r = test::run_mode("coarse", model(), flatten);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
 }
 

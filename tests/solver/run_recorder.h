@@ -6,10 +6,11 @@
 #include <vector>
 
 #include "geometry/dog_model.h"
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
 #include "solver/run/run_config.h"
+#include "solver/run/run_setup.h"
 
 namespace sdog::test {
 
@@ -25,22 +26,26 @@ struct RunResult {
   Dofs x;
 };
 
-/// Runs `mode` with `scenario` on the model's fine mesh.
+inline RunResult run_setup(RunSetup& setup) {
+  RunResult r;
+  Recorder recorder;
+  r.summary = setup.run({&recorder});
+  r.reports = recorder.reports;
+  r.x = setup.positions();
+  return r;
+}
+
+/// Runs `mode` with `scenario` (made from the configuration) on the model's fine mesh.
 inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config,
                           const Scenario& scenario) {
-  DogProblem problem(model.fine, model.fine_topology, config.weights);
-  auto mode = make_mode(mode_name, problem, scenario, config, &model);
-  RunResult r;
-  r.x = scenario.start(model.fine);
-  Recorder recorder;
-  r.summary = run_scenario(*mode, problem, scenario, r.x, {&recorder});
-  r.reports = recorder.reports;
-  return r;
+  RunSetup setup(model, parse_mode(mode_name), config, scenario);
+  return run_setup(setup);
 }
 
 /// Runs `mode` with the configuration's scenario on the model's fine mesh.
 inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config) {
-  return run_mode(mode_name, model, config, make_scenario(config, model.fine));
+  RunSetup setup(model, parse_mode(mode_name), config);
+  return run_setup(setup);
 }
 
 /// The default configuration with the given iteration counts.
@@ -69,14 +74,14 @@ inline void expect_dog_and_patch_reports(const RunResult& r, int patch_count) {
 /// with the angle weight 0, and the DOG constraints hold every iteration.
 inline void expect_follows_angles(const std::string& mode_name, const DogModel& model) {
   RunConfig config = short_run(20, 10);
-  config.scenario = "fold";
+  config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
   const RunResult with = run_mode(mode_name, model, config);
-  ASSERT_FALSE(with.summary.failed) << mode_name << ": " << with.summary.failure;
+  ASSERT_FALSE(with.summary.failed()) << mode_name << ": " << with.summary.failure;
   for (const auto& rep : with.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << mode_name << " " << rep.iteration;
   config.weights.angles = 0;
   const RunResult without = run_mode(mode_name, model, config);
-  ASSERT_FALSE(without.summary.failed) << mode_name << ": " << without.summary.failure;
+  ASSERT_FALSE(without.summary.failed()) << mode_name << ": " << without.summary.failure;
   const double a = with.reports.back().diagnostics.terms[kAngles];
   EXPECT_LT(a, 0.1 * without.reports.back().diagnostics.terms[kAngles]) << mode_name;
 }
@@ -89,14 +94,17 @@ inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name, c
   const RunConfig config = short_run(60, 40);
   const Scenario scenario = make_scenario(config, model.fine);
   const RunResult standard = run_mode("standard", model, config, scenario);
-  ASSERT_FALSE(standard.summary.failed) << standard.summary.failure;
+  ASSERT_FALSE(standard.summary.failed()) << standard.summary.failure;
   DogProblem problem(model.fine, model.fine_topology, config.weights);
-  auto mode = make_mode(mode_name, problem, scenario, config, &model);
-  mode->set_time(1);
+  auto mode = make_mode(parse_mode(mode_name), problem, scenario, config, &model);
   Dofs x = standard.x;
+  scenario.apply(problem, 1.0);  // the final targets, held
   const Diagnostics start = diagnose(problem, x);
   for (int k = 0; k < iterations; ++k) {
-    const StepReport r = mode->iterate(x, k + 1 == iterations);
+    IterationContext held;
+    held.t = 1;
+    held.iterations_left = iterations - 1 - k;
+    const StepReport r = mode->iterate(held, x);
     ASSERT_FALSE(r.failed) << mode_name << " " << k << ": " << r.failure;
   }
   const Diagnostics end = diagnose(problem, x);

@@ -22,12 +22,12 @@ const DogModel& model() {
 
 RunConfig interactive() {
   RunConfig c;
-  c.scenario = "none";  // only the user's constraints
+  c.scenario = ScenarioKind::kNone;  // only the user's constraints
   return c;
 }
 
 TEST(Session, StepsTheBaseScenario) {
-  Session s(model(), RunConfig{}, "standard");
+  Session s(model(), RunConfig{}, ModeKind::kStandard);
   const Dofs start = s.positions();
   for (int k = 0; k < 5; ++k) {
     const IterationReport r = s.step();
@@ -44,7 +44,7 @@ TEST(Session, StepsTheBaseScenario) {
 }
 
 TEST(Session, DraggedHandleLeadsTheSheetAndUndoRestoresIt) {
-  Session s(model(), interactive(), "standard");
+  Session s(model(), interactive(), ModeKind::kStandard);
   const int last = model().fine.vertex_count() - 1;
   EXPECT_EQ(s.add_handle(0), 0);
   EXPECT_EQ(s.add_handle(last), 1);
@@ -73,7 +73,7 @@ TEST(Session, DraggedHandleLeadsTheSheetAndUndoRestoresIt) {
 }
 
 TEST(Session, ADragIsOneEditAndSeveralHandlesAreAddedAtOnce) {
-  Session s(model(), interactive(), "standard");
+  Session s(model(), interactive(), ModeKind::kStandard);
   const int last = model().fine.vertex_count() - 1;
   EXPECT_EQ(s.add_handles({0, 1, last}), 0);
   ASSERT_EQ(s.constraints().handles.size(), 3u);
@@ -104,7 +104,7 @@ TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
     if (points[p].copies.size() == 2 && p > points.size() / 3) site = static_cast<int>(p);
   ASSERT_GE(site, 0);
   auto angle_term_after = [&](bool with_angle) {
-    auto s = std::make_unique<Session>(model(), interactive(), "standard");
+    auto s = std::make_unique<Session>(model(), interactive(), ModeKind::kStandard);
     s->add_handle(0);
     if (with_angle) EXPECT_EQ(s->add_angle(site, 60), 0);
     for (int k = 0; k < 25; ++k) EXPECT_FALSE(s->step().step.failed);
@@ -127,12 +127,12 @@ TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
 }
 
 TEST(Session, ModeSwitchKeepsThePositions) {
-  Session s(model(), RunConfig{}, "standard");
+  Session s(model(), RunConfig{}, ModeKind::kStandard);
   for (int k = 0; k < 10; ++k) ASSERT_FALSE(s.step().step.failed);
   const Dofs before = s.positions();
-  s.set_mode("twolevel");
+  s.set_mode(ModeKind::kTwoLevel);
   EXPECT_EQ(s.positions(), before);
-  EXPECT_EQ(s.mode(), "twolevel");
+  EXPECT_EQ(s.mode(), ModeKind::kTwoLevel);
   ASSERT_NE(s.coarse_positions(), nullptr);
   EXPECT_EQ(s.coarse_positions()->size(), 3 * model().coarse.vertex_count());
   const IterationReport r = s.step();
@@ -140,13 +140,13 @@ TEST(Session, ModeSwitchKeepsThePositions) {
   EXPECT_EQ(r.mode, "twolevel");
   EXPECT_EQ(r.iteration, 11);
   EXPECT_LT(r.diagnostics.dog_max, 1e-4);
-  EXPECT_THROW(s.set_mode("warp"), UsageError);
+  EXPECT_THROW(s.set_mode(parse_mode("warp")), UsageError);
 }
 
 TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   RunConfig config = interactive();
   config.weights.bending = 2;
-  Session s(model(), config, "standard");
+  Session s(model(), config, ModeKind::kStandard);
   s.add_handle(0);
   s.add_handle(7);
   s.move_handle(1, Eigen::Vector3d(1, 2, 3));
@@ -161,19 +161,19 @@ TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   EXPECT_EQ(w.iteration, 3);
   EXPECT_EQ(w.camera, camera);
   EXPECT_EQ(w.config.weights.bending, 2);
-  EXPECT_EQ(w.config.scenario, "none");
+  EXPECT_EQ(w.config.scenario, ScenarioKind::kNone);
   ASSERT_EQ(w.constraints.handles.size(), 2u);
   EXPECT_EQ(w.constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
   EXPECT_LT((w.positions - s.positions()).lpNorm<Eigen::Infinity>(), 1e-12);
 
-  Session back(model(), w.config, w.mode);
+  Session back(model(), w.config, parse_mode(w.mode));
   back.set_constraints(w.constraints);
   back.set_positions(w.positions, w.iteration);
   EXPECT_EQ(back.scenario().positions.size(), 2u);
   EXPECT_EQ(back.iteration(), 3);
   // The same next iteration as the saved session's after a restart of its solver (a loaded
   // session's solver starts with zero multipliers).
-  s.set_mode("standard");
+  s.set_mode(ModeKind::kStandard);
   const IterationReport a = s.step(), b = back.step();
   EXPECT_NEAR(a.diagnostics.objective, b.diagnostics.objective, 1e-9 * (1 + a.diagnostics.objective));
   EXPECT_THROW(back.set_positions(Dofs::Zero(6), 0), InputError);

@@ -28,7 +28,7 @@ const DogModel& model() {
 
 TEST(SubsolversMode, KeepsTheDogConstraintsAndReportsEveryPatch) {
   const Result r = run_subsolvers(model(), test::short_run(20, 5), 2);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   ASSERT_EQ(r.reports.size(), 25u);
   test::expect_dog_and_patch_reports(r, model().fine.patch_count());
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
@@ -41,9 +41,9 @@ TEST(SubsolversMode, CeresBackendKeepsTheDogConstraints) {
   RunConfig config;
   config.iterations = 8;
   config.hold = 2;
-  config.subsolvers.backend = "ceres";
+  config.subsolvers.backend = PatchBackend::kCeres;
   const Result r = run_subsolvers(model(), config, 2);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_GT(r.reports.back().diagnostics.terms[kBending], 1e-3);  // it moved
@@ -56,8 +56,8 @@ TEST(SubsolversMode, StitchingTargetsPullThePatchesTogether) {
   const Result with = run_subsolvers(model(), config, 2);
   config.weights.stitching = 0;  // no coupling at all: each patch on its own
   const Result without = run_subsolvers(model(), config, 2);
-  ASSERT_FALSE(with.summary.failed);
-  ASSERT_FALSE(without.summary.failed);
+  ASSERT_FALSE(with.summary.failed());
+  ASSERT_FALSE(without.summary.failed());
   EXPECT_LT(with.reports.back().diagnostics.stitch_gap_max, 0.5 * without.reports.back().diagnostics.stitch_gap_max);
 }
 
@@ -75,20 +75,18 @@ TEST(SubsolversMode, SameResultWhateverTheThreadCount) {
 // solution still a fixed point.
 TEST(SubsolversMode, ColourSweepKeepsTheGuarantees) {
   RunConfig config = test::short_run(12, 3);
-  config.subsolvers.sweep = "colours";
+  config.subsolvers.sweep = PatchSweep::kColours;
   const Result r = run_subsolvers(model(), config, 2);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   test::expect_dog_and_patch_reports(r, model().fine.patch_count());
-  // The last iteration's polish reaches 1.7e-5 here, not the 5e-7 of the Jacobi sweep (as with
-  // the ADMM modes' augmented patches).
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 5e-5);
   config.hold = 0;
   EXPECT_TRUE(run_subsolvers(model(), config, 1).x == run_subsolvers(model(), config, 2).x);
   // It is another iteration than Jacobi's: the results differ.
   RunConfig jacobi = config;
-  jacobi.subsolvers.sweep = "jacobi";
+  jacobi.subsolvers.sweep = PatchSweep::kJacobi;
   EXPECT_FALSE(run_subsolvers(model(), jacobi, 2).x == run_subsolvers(model(), config, 2).x);
-  config.subsolvers.sweep = "diagonal";
+  config.subsolvers.sweep = static_cast<PatchSweep>(2);  // no such sweep
   EXPECT_NE(config.subsolvers.validate(), "");
 }
 

@@ -39,10 +39,10 @@ TEST(TwoLevelMode, FollowsAngleConstraints) { test::expect_follows_angles("twole
 
 TEST(TwoLevelMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const test::RunResult r = run("twolevel", no_finish(test::short_run(12, 3)), 2);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   test::expect_dog_and_patch_reports(r, model().fine.patch_count());
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-5);
-  EXPECT_GT(r.reports.back().step.factorizations, model().fine.patch_count());  // the coarse step's too
+  EXPECT_GT(r.reports.back().step.work.factorizations, model().fine.patch_count());  // the coarse step's too
 }
 
 // Block Jacobi hands the drag on by one patch per iteration: the dragged corner's patch tears away
@@ -51,8 +51,8 @@ TEST(TwoLevelMode, TheCoarseCorrectionKeepsUpWithADrag) {
   const RunConfig config = no_finish(test::short_run(100, 20));
   const test::RunResult two = run("twolevel", config, 2);
   const test::RunResult jacobi = run("subsolvers", config, 2);
-  ASSERT_FALSE(two.summary.failed) << two.summary.failure;
-  ASSERT_FALSE(jacobi.summary.failed) << jacobi.summary.failure;
+  ASSERT_FALSE(two.summary.failed()) << two.summary.failure;
+  ASSERT_FALSE(jacobi.summary.failed()) << jacobi.summary.failure;
   const Diagnostics& a = two.reports.back().diagnostics;
   const Diagnostics& b = jacobi.reports.back().diagnostics;
   EXPECT_LT(a.stitch_gap_max, 0.5 * b.stitch_gap_max);
@@ -66,12 +66,12 @@ TEST(TwoLevelMode, TheCoarseCorrectionKeepsUpWithADrag) {
 TEST(TwoLevelMode, FlattensAFoldedSheet) {
   static const DogModel curve = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {31, 21});
   RunConfig config = no_finish(RunConfig());
-  config.scenario = "flatten";
+  config.scenario = ScenarioKind::kFlatten;
   config.iterations = 0;
   config.hold = 150;
   if (const char* w = std::getenv("SDOG_TEST_TWOLEVEL_LINK")) config.twolevel.link_weight = std::atof(w);
   const test::RunResult r = test::run_mode("twolevel", curve, config);
-  ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   const double early = r.reports[19].diagnostics.objective;
   double worst = 0;
   for (size_t k = 20; k < r.reports.size(); ++k) worst = std::max(worst, r.reports[k].diagnostics.objective);
@@ -90,8 +90,8 @@ TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
   const test::RunResult soft = run("twolevel", config, 2);
   config.twolevel.fold_sharpness = kFoldSharpness;
   const test::RunResult sharp = run("twolevel", config, 2);
-  ASSERT_FALSE(sharp.summary.failed) << sharp.summary.failure;
-  ASSERT_FALSE(soft.summary.failed) << soft.summary.failure;
+  ASSERT_FALSE(sharp.summary.failed()) << sharp.summary.failure;
+  ASSERT_FALSE(soft.summary.failed()) << soft.summary.failure;
   const Diagnostics& a = soft.reports.back().diagnostics;
   const Diagnostics& b = sharp.reports.back().diagnostics;
   EXPECT_LT(a.terms[kFoldBias], 0.5 * b.terms[kFoldBias]);
@@ -119,18 +119,21 @@ struct SteppedRun {
 
 SteppedRun run_stepwise(RunConfig config, bool concurrent) {
   config.twolevel.concurrent_coarse = concurrent;
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
+  RunSetup setup(model(), ModeKind::kTwoLevel, config);
+  const auto& mode = dynamic_cast<const TwoLevelMode&>(setup.mode());
   SteppedRun r;
-  Dofs x = scenario.start(model().fine);
-  const int total = config.iterations + config.hold;
-  for (int k = 1; k <= total; ++k) {
-    const IterationReport report = run_iteration(mode, problem, scenario, x, k, total - k);
-    EXPECT_FALSE(report.step.failed) << report.step.failure;
-    r.fine.push_back(x);
-    r.coarse.push_back(mode.coarse_state());
-  }
+  struct States : RunObserver {
+    const TwoLevelMode* mode;
+    SteppedRun* run;
+    void on_iteration(const IterationReport& report, const Dofs& x) override {
+      EXPECT_FALSE(report.step.failed) << report.step.failure;
+      run->fine.push_back(x);
+      run->coarse.push_back(mode->coarse_state());
+    }
+  } states;
+  states.mode = &mode;
+  states.run = &r;
+  EXPECT_FALSE(setup.run({&states}).failed());
   r.taken_ahead = mode.coarse_level().steps_taken_ahead();
   return r;
 }
@@ -181,7 +184,7 @@ TEST(TwoLevelMode, ACoarseStepEveryOtherIteration) {
   }
   const test::RunResult every2 = run("twolevel", config, 2);
   const test::RunResult jacobi = run("subsolvers", config, 2);
-  ASSERT_FALSE(every2.summary.failed) << every2.summary.failure;
+  ASSERT_FALSE(every2.summary.failed()) << every2.summary.failure;
   EXPECT_TRUE(every2.reports.back().diagnostics.dog_max < 1e-5);
   EXPECT_LT(every2.reports.back().diagnostics.stitch_gap_max, 0.5 * jacobi.reports.back().diagnostics.stitch_gap_max);
 }
@@ -197,7 +200,7 @@ TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
   const test::RunResult finished = run("twolevel", config, 2);
   const test::RunResult plain = run("twolevel", no_finish(config), 2);
   const test::RunResult standard = run("standard", config, 2);
-  for (const auto* r : {&finished, &plain, &standard}) ASSERT_FALSE(r->summary.failed) << r->summary.failure;
+  for (const auto* r : {&finished, &plain, &standard}) ASSERT_FALSE(r->summary.failed()) << r->summary.failure;
   ASSERT_EQ(finished.reports.size(), 80u);
   for (const auto& r : finished.reports) {
     EXPECT_EQ(r.step.patches.empty(), r.iteration > 70) << "iteration " << r.iteration;
@@ -223,14 +226,14 @@ TEST(TwoLevelMode, TheFinishRetriesFoldsUpToItsCap) {
   for (const double cap : {1.0, 10.0, 100.0}) {
     config.twolevel.finish_fold_bias_cap = cap;
     const test::RunResult r = run("twolevel", config, 2);
-    ASSERT_FALSE(r.summary.failed) << r.summary.failure;
+    ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
     const int most = static_cast<int>(std::lround(std::log10(cap)));
     int unfolded = 0;
     for (const auto& rep : r.reports) {
       if (rep.iteration < first_finishing || rep.step.folded) continue;
       ++unfolded;
       // An iteration that ends unfolded has used every retry the cap allows.
-      EXPECT_EQ(rep.step.fold_retries, most) << "cap " << cap << ", iteration " << rep.iteration;
+      EXPECT_EQ(rep.step.work.fold_retries, most) << "cap " << cap << ", iteration " << rep.iteration;
     }
     EXPECT_GT(unfolded, 0) << "cap " << cap << ": the case should have finishing iterations that end unfolded";
     EXPECT_LT(r.reports.back().diagnostics.dog_max, 5e-7) << "cap " << cap;
@@ -241,20 +244,22 @@ TEST(TwoLevelMode, TheFinishRetriesFoldsUpToItsCap) {
 // turns it off; a negative count is refused.
 TEST(TwoLevelMode, TheStandardFinishNeedsARunOfKnownLength) {
   RunConfig config;
-  DogProblem problem(model().fine, model().fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model().fine);
-  TwoLevelMode mode(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
-  ASSERT_EQ(config.twolevel.standard_finish, 30);  // the default
-  mode.set_iterations_left(Mode::kOpenEnded);
-  EXPECT_FALSE(mode.finishing());
-  mode.set_iterations_left(30);
-  EXPECT_FALSE(mode.finishing());
-  mode.set_iterations_left(29);
-  EXPECT_TRUE(mode.finishing());
+  config.twolevel.standard_finish = 30;
+  auto finishing_after = [&](const RunConfig& c, std::vector<int> iterations_left) {
+    RunSetup setup(model(), ModeKind::kTwoLevel, c);
+    for (int left : iterations_left) {
+      IterationContext ctx;
+      ctx.t = 0.01;
+      ctx.iterations_left = left;
+      EXPECT_FALSE(setup.mode().iterate(ctx, setup.positions()).failed);
+    }
+    return dynamic_cast<const TwoLevelMode&>(setup.mode()).finishing();
+  };
+  EXPECT_FALSE(finishing_after(config, {IterationContext::kOpenEnded}));
+  EXPECT_FALSE(finishing_after(config, {30}));
+  EXPECT_TRUE(finishing_after(config, {30, 29}));
   config.twolevel.standard_finish = 0;
-  TwoLevelMode never(problem, model(), scenario, config.twolevel, config.standard, config.subsolvers);
-  never.set_iterations_left(0);
-  EXPECT_FALSE(never.finishing());
+  EXPECT_FALSE(finishing_after(config, {0}));
   config.twolevel.standard_finish = -1;
   EXPECT_FALSE(config.twolevel.validate().empty());
 }

@@ -361,12 +361,12 @@ class StudioTest : public QObject {
     QCOMPARE(applied.hold, 7);
     QCOMPARE(applied.admm.rho, 3.5);
     QCOMPARE(applied.coarse.fine_to_coarse, false);
-    QCOMPARE(applied.subsolvers.backend, std::string("ceres"));
-    QCOMPARE(applied.subsolvers.sweep, std::string("colours"));
+    QCOMPARE(applied.subsolvers.backend, sdog::PatchBackend::kCeres);
+    QCOMPARE(applied.subsolvers.sweep, sdog::PatchSweep::kColours);
     QCOMPARE(applied.twolevel.fold_sharpness, 250.0);
     QCOMPARE(applied.twolevel.concurrent_coarse, false);
     QCOMPARE(applied.coarse.concurrent_coarse, false);
-    QCOMPARE(applied.scenario, std::string("corners"));  // the rest is kept
+    QCOMPARE(applied.scenario, sdog::ScenarioKind::kCorners);  // the rest is kept
     QVERIFY(!panel->apply_button()->isEnabled());
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 0, kWait);  // the session started again
     window_->step(1);
@@ -391,7 +391,7 @@ class StudioTest : public QObject {
     QCOMPARE(panel->mode_box()->currentText(), QString("vsadmm"));
     panel->scenario_box()->setCurrentText("fold");
     Q_EMIT panel->scenario_box()->activated(panel->scenario_box()->currentIndex());
-    QCOMPARE(window_->run_config().scenario, std::string("fold"));
+    QCOMPARE(window_->run_config().scenario, sdog::ScenarioKind::kFold);
     QTRY_VERIFY_WITH_TIMEOUT(iteration() == 0 && window_->snapshot()->mode == "vsadmm", kWait);
     window_->step(1);
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 1, kWait);
@@ -507,7 +507,7 @@ class StudioTest : public QObject {
     QVERIFY(bad.readAllStandardError().contains("needs PATTERN"));
     // Without a display: one message instead of Qt's abort; --help needs none.
     QProcessEnvironment no_display = QProcessEnvironment::systemEnvironment();
-    for (const QString& name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) no_display.remove(name);
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) no_display.remove(name);
     QProcess headless;
     headless.setProcessEnvironment(no_display);
     headless.start(SDOG_STUDIO_EXE, {kPattern});

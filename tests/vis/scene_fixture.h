@@ -5,6 +5,7 @@
 // iterations of the twolevel mode (a moving coarse mesh for the links).
 #include "geometry/dog_model.h"
 #include "solver/run/run_config.h"
+#include "solver/run/run_setup.h"
 #include "tests/test_support.h"
 #include "ui/vis/scene_state.h"
 
@@ -17,7 +18,7 @@ inline const DogModel& arcs_model() {
 
 inline RunConfig arcs_run_config() {
   RunConfig config;
-  config.scenario = "corners";
+  config.scenario = ScenarioKind::kCorners;
   config.iterations = 40;
   config.hold = 0;
   AngleSpec fold;
@@ -28,8 +29,17 @@ inline RunConfig arcs_run_config() {
   return config;
 }
 
+/// The last state of a run of `mode` over the configuration's scenario, with the constraints at
+/// their final targets.
+inline vis::SceneState run_state(const DogModel& model, ModeKind mode, const RunConfig& config) {
+  RunSetup setup(model, mode, config);
+  const RunSummary summary = setup.run({});
+  EXPECT_FALSE(summary.failed()) << summary.failure;
+  return vis::scene_state(setup.problem(), setup.positions(), setup.mode().coarse_positions(), &setup.scenario(), 1);
+}
+
 inline const vis::SceneState& arcs_standard_state() {
-  static const vis::SceneState state = vis::run_scene_state(arcs_model(), "standard", arcs_run_config());
+  static const vis::SceneState state = run_state(arcs_model(), ModeKind::kStandard, arcs_run_config());
   return state;
 }
 
@@ -47,7 +57,7 @@ inline const vis::SceneState& arcs_twolevel_state() {
     RunConfig config = arcs_run_config();
     config.angles.clear();  // the coarse level does not carry angle constraints
     config.twolevel.standard_finish = 0;  // the coarse mesh moves to the end (the links picture)
-    return vis::run_scene_state(arcs_model(), "twolevel", config);
+    return run_state(arcs_model(), ModeKind::kTwoLevel, config);
   }();
   return state;
 }

@@ -15,6 +15,7 @@
 #include <exception>
 
 #include "base/errors.h"
+#include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
 #include "ui/studio/model_loader.h"
 #include "ui/studio/objective_chart.h"
@@ -149,9 +150,9 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   std::shared_ptr<const DogModel> model;
   const std::string mode_name = mode.toStdString();
   const bool built = attempt([&] {
-    check_mode_name(mode_name, "mode: ");
+    const ModeKind kind = parse_mode(mode_name, "mode: ");
     model = load_model(path.toStdString(), resolution.toStdString());
-    check_mode_usable(mode_name, *model);
+    check_mode_usable(kind, *model);
   });
   if (!built) return false;
   stop_frames();
@@ -179,7 +180,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
                        .arg(model_->fine.patch_count())
                        .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
                                                : QString("no coarse mesh (even resolution)"))
-                       .arg(QString::fromStdString(mode_), QString::fromStdString(config_.scenario)));
+                       .arg(QString::fromStdString(mode_), QString(scenario_name(config_.scenario))));
   update_actions();
   show_solver_state();
   render();
@@ -357,8 +358,8 @@ void MainWindow::reset_solver() {
 bool MainWindow::set_mode(const QString& mode) {
   const std::string name = mode.toStdString();
   if (!attempt([&] {
-        check_mode_name(name, "mode: ");
-        if (model_) check_mode_usable(name, *model_);
+        const ModeKind kind = parse_mode(name, "mode: ");
+        if (model_) check_mode_usable(kind, *model_);
       })) {
     update_actions();
     return false;
@@ -372,9 +373,8 @@ bool MainWindow::set_mode(const QString& mode) {
 
 bool MainWindow::set_scenario(const QString& scenario) {
   const std::string name = scenario.toStdString();
-  if (!attempt([&] { check_scenario_name(name, "scenario: "); })) return false;
   RunConfig config = config_;
-  config.scenario = name;
+  if (!attempt([&] { config.scenario = parse_scenario(name, "scenario: "); })) return false;
   // A new base scenario starts the session again (the user's constraints go with it).
   return set_run_config(config);
 }

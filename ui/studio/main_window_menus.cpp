@@ -9,7 +9,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 
-#include "solver/modes/mode_factory.h"
+#include "solver/modes/mode_kind.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/solver_panel.h"
@@ -241,7 +241,7 @@ void MainWindow::build_solver_menu() {
   };
   add_choices(m->addMenu("&Mode"), mode_names(), mode_actions_, &MainWindow::set_mode);
   for (auto& [name, a] : mode_actions_)
-    if (mode_needs_coarse(name)) a->setToolTip("needs the coarse mesh (odd resolution)");
+    if (mode_needs_coarse(parse_mode(name))) a->setToolTip("needs the coarse mesh (odd resolution)");
   add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::set_scenario);
   connect(add_action(m, "Se&ttings", QKeySequence("Ctrl+T"),
                      "Show the Solver panel: weights, tolerances, mode options and iteration counts"),
@@ -292,9 +292,9 @@ void MainWindow::build_help_menu() {
 void MainWindow::update_actions() {
   for (auto& [name, a] : mode_actions_) {
     a->setChecked(name == mode_);
-    a->setEnabled(model_ && (model_->has_coarse || !mode_needs_coarse(name)));
+    a->setEnabled(model_ && (model_->has_coarse || !mode_needs_coarse(parse_mode(name))));
   }
-  for (auto& [name, a] : scenario_actions_) a->setChecked(name == config_.scenario);
+  for (auto& [name, a] : scenario_actions_) a->setChecked(name == scenario_name(config_.scenario));
   play_action_->setChecked(playing_);
   play_action_->setText(playing_ ? "&Pause" : "&Play");
   undo_action_->setEnabled(snapshot_ && snapshot_->can_undo);

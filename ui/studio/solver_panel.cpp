@@ -10,7 +10,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "solver/modes/mode_factory.h"
+#include "solver/modes/mode_kind.h"
 #include "ui/studio/solver_settings.h"
 
 namespace sdog::studio {
@@ -81,11 +81,11 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
 void SolverPanel::show_state(const std::string& mode, const RunConfig& config, bool has_coarse) {
   const QSignalBlocker block_mode(mode_), block_scenario(scenario_);
   mode_->setCurrentText(QString::fromStdString(mode));
-  scenario_->setCurrentText(QString::fromStdString(config.scenario));
+  scenario_->setCurrentText(scenario_name(config.scenario));
   // The coarse modes need the coarse mesh (odd resolutions): their entries are greyed out.
   if (auto* items = qobject_cast<QStandardItemModel*>(mode_->model()))
     for (int i = 0; i < mode_->count(); ++i) {
-      const bool usable = has_coarse || !mode_needs_coarse(mode_->itemText(i).toStdString());
+      const bool usable = has_coarse || !mode_needs_coarse(parse_mode(mode_->itemText(i).toStdString()));
       items->item(i)->setEnabled(usable);
       items->item(i)->setToolTip(usable ? QString() : "needs the coarse mesh (an odd resolution)");
     }

@@ -65,20 +65,19 @@ void SolverSettingsForm::add_bool(QFormLayout* form, const QString& label, bool&
                      [member](RunConfig& c, const QWidget* w) { member(c) = static_cast<const QCheckBox*>(w)->isChecked(); }});
 }
 
-void SolverSettingsForm::add_choice(QFormLayout* form, const QString& label, std::string& (*member)(RunConfig&),
-                                    const QStringList& choices, const QString& tip) {
+void SolverSettingsForm::add_choice(QFormLayout* form, const QString& label, int (*get)(const RunConfig&),
+                                    void (*set)(RunConfig&, int), const std::vector<std::string>& names,
+                                    const QString& tip) {
+  QStringList choices;
+  for (const auto& n : names) choices << QString::fromStdString(n);
   auto* box = new QComboBox;
   box->addItems(choices);
   box->setToolTip(tip);
   form->addRow(label, box);
   connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, &SolverSettingsForm::edited);
   fields_.push_back({label, box,
-                     [member](RunConfig& c, QWidget* w) {
-                       static_cast<QComboBox*>(w)->setCurrentText(QString::fromStdString(member(c)));
-                     },
-                     [member](RunConfig& c, const QWidget* w) {
-                       member(c) = static_cast<const QComboBox*>(w)->currentText().toStdString();
-                     }});
+                     [get](RunConfig& c, QWidget* w) { static_cast<QComboBox*>(w)->setCurrentIndex(get(c)); },
+                     [set](RunConfig& c, const QWidget* w) { set(c, static_cast<const QComboBox*>(w)->currentIndex()); }});
 }
 
 SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent) : QWidget(parent) {
@@ -115,9 +114,13 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
           "optimality steps per iteration");
 
   f = add_group(layout, "Patch modes (subsolvers, ADMM)");
-  add_choice(f, "patch backend", [](RunConfig& c) -> std::string& { return c.subsolvers.backend; }, {"sqp", "ceres"},
+  add_choice(
+      f, "patch backend", [](const RunConfig& c) { return static_cast<int>(c.subsolvers.backend); },
+      [](RunConfig& c, int i) { c.subsolvers.backend = static_cast<PatchBackend>(i); }, patch_backend_names(),
              "per-patch steps: the SQP solver of the standard mode, or Ceres with an augmented Lagrangian loop");
-  add_choice(f, "patch sweep", [](RunConfig& c) -> std::string& { return c.subsolvers.sweep; }, {"jacobi", "colours"},
+  add_choice(
+      f, "patch sweep", [](const RunConfig& c) { return static_cast<int>(c.subsolvers.sweep); },
+      [](RunConfig& c, int i) { c.subsolvers.sweep = static_cast<PatchSweep>(i); }, patch_sweep_names(),
              "subsolvers and twolevel: every patch at once from the same state (jacobi), or the patch graph's "
              "colours one after another (Gauss-Seidel by colour)");
   add_double(f, "Ceres constraint tolerance",

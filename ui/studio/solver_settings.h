@@ -44,8 +44,8 @@ class SolverSettingsForm : public QWidget {
   void add_int(QFormLayout* form, const QString& label, int& (*member)(RunConfig&), int min, int max,
                const QString& tip);
   void add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&), const QString& tip);
-  void add_choice(QFormLayout* form, const QString& label, std::string& (*member)(RunConfig&),
-                  const QStringList& choices, const QString& tip);
+  void add_choice(QFormLayout* form, const QString& label, int (*get)(const RunConfig&), void (*set)(RunConfig&, int),
+                  const std::vector<std::string>& names, const QString& tip);
   RunConfig base_;
   std::vector<Field> fields_;
 };

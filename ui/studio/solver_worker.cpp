@@ -46,7 +46,7 @@ void SolverWorker::send_snapshot() {
   Snapshot snap;
   snap.state = vis::scene_state(s.problem(), s.positions(), s.coarse_positions(), &s.scenario(), s.time());
   snap.iteration = s.iteration();
-  snap.mode = s.mode();
+  snap.mode = mode_name(s.mode());
   snap.constraints = s.constraints();
   snap.can_undo = s.can_undo();
   snap.can_redo = s.can_redo();
@@ -58,7 +58,7 @@ void SolverWorker::open(const RunConfig& config, const std::string& mode) {
   pause();
   stop_frames();
   session_.reset();
-  session_ = std::make_unique<Session>(*model_, config, mode);
+  session_ = std::make_unique<Session>(*model_, config, parse_mode(mode));
   send_snapshot();
 }
 
@@ -95,7 +95,7 @@ void SolverWorker::reset() {
 }
 
 void SolverWorker::set_mode(const std::string& mode) {
-  session().set_mode(mode);
+  session().set_mode(parse_mode(mode));
   send_snapshot();
 }
 
@@ -160,7 +160,7 @@ void SolverWorker::redo() {
 
 void SolverWorker::restore(const Workspace& w) {
   Session& s = session();
-  if (s.mode() != w.mode) s.set_mode(w.mode);
+  if (mode_name(s.mode()) != w.mode) s.set_mode(parse_mode(w.mode, "workspace: "));
   s.set_constraints(w.constraints);
   if (w.positions.size() > 0) s.set_positions(w.positions, w.iteration);
   send_snapshot();

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "base/errors.h"
-#include "solver/modes/mode_factory.h"
-#include "solver/run/run.h"
 
 namespace sdog::vis {
 
@@ -30,17 +27,6 @@ SceneState scene_state(const DogProblem& problem, const Dofs& x, const Dofs* coa
 SceneState rest_scene_state(const DogModel& model, const Scenario* scenario) {
   const DogProblem problem(model.fine, model.fine_topology);
   return scene_state(problem, problem.rest(), nullptr, scenario, 1);
-}
-
-SceneState run_scene_state(const DogModel& model, const std::string& mode_name, const RunConfig& config) {
-  DogProblem problem(model.fine, model.fine_topology, config.weights);
-  const Scenario scenario = make_scenario(config, model.fine);
-  check_scenario_targets(scenario, config, model.pattern.source + " at " + model.fine_res.str());
-  auto mode = make_mode(mode_name, problem, scenario, config, &model);
-  Dofs x = scenario.start(model.fine);
-  const RunSummary summary = run_scenario(*mode, problem, scenario, x, {});
-  if (summary.failed) throw SolverError("the solver (" + mode_name + ") failed at " + summary.failure);
-  return scene_state(problem, x, mode->coarse_positions(), &scenario, 1);
 }
 
 std::vector<double> log10_residuals(const std::vector<double>& residuals) {

@@ -8,7 +8,6 @@
 
 #include "geometry/dog_model.h"
 #include "solver/problem/diagnostics.h"
-#include "solver/run/run_config.h"
 #include "solver/problem/scenario.h"
 
 namespace sdog::vis {
@@ -46,12 +45,6 @@ SceneState scene_state(const DogProblem& problem, const Dofs& x, const Dofs* coa
 /// The flat rest state of the model (every residual 0) with the scenario's constraints at their
 /// final targets (t = 1; nullptr: none), which shows what a run would ask for.
 SceneState rest_scene_state(const DogModel& model, const Scenario* scenario = nullptr);
-
-/// Runs mode `mode` over the configuration's scenario (config.iterations moving, config.hold
-/// held) from the scenario's start state and returns the last state, with the constraints at
-/// their final targets. Throws UsageError for a mode or scenario that cannot run on the model,
-/// SolverError (naming the iteration and the cause) when the run fails.
-SceneState run_scene_state(const DogModel& model, const std::string& mode, const RunConfig& config);
 
 /// Floor of the log10 DOG residual: residuals below it (and vertices without DOG rows) are shown
 /// at log10(kResidualFloor).

@@ -1,4 +1,6 @@
-#include "solver/patches/ceres/patch_solver.h"
+#include "solver/patches/ceres/ceres_patch_solver.h"
+
+#include "solver/patches/ceres/ceres_patch.h"
 
 #include "base/stopwatch.h"
 
@@ -18,18 +20,8 @@ Eigen::VectorXd block_residual(const Term& t, int b, Position position) {
 
 }  // namespace
 
-std::string PatchOptions::validate() const {
-  if (!(constraint_tolerance > 0)) return "constraint_tolerance must be positive";
-  if (!(final_constraint_tolerance > 0)) return "final_constraint_tolerance must be positive";
-  if (!(initial_penalty > 0)) return "initial_penalty must be positive";
-  if (!(penalty_growth > 1)) return "penalty_growth must be above 1";
-  if (!(max_penalty >= initial_penalty)) return "max_penalty must be at least initial_penalty";
-  if (max_outer < 1 || max_inner < 1) return "max_outer and max_inner must be at least 1";
-  return "";
-}
-
-PatchSolver::PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-                         const PatchOptions& options, const PatchCoupling& coupling)
+CeresPatchSolver::CeresPatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
+                         const CeresPatchOptions& options, const PatchCoupling& coupling)
     : patch_(patch),
       begin_(mesh.patch_begin[patch]),
       end_(mesh.patch_begin[patch + 1]),
@@ -71,16 +63,16 @@ PatchSolver::PatchSolver(const DogMesh& mesh, int patch, const std::vector<Weigh
   }
 }
 
-void PatchSolver::set_weight(size_t index, double weight) {
+void CeresPatchSolver::set_weight(size_t index, double weight) {
   weights_[index] = weight;
   for (TermCost* c : term_costs_[index]) c->set_weight(weight);
 }
 
-void PatchSolver::load(const Dofs& x) {
+void CeresPatchSolver::load(const Dofs& x) {
   for (size_t i = 0; i < local_.size(); ++i) local_[i] = x[3 * begin_ + static_cast<Eigen::Index>(i)];
 }
 
-double PatchSolver::constraint_max_local() {
+double CeresPatchSolver::constraint_max_local() {
   double m = 0;
   auto position = [&](int v) { return Eigen::Vector3d(&local_[3 * v]); };
   for (int b = 0; b < dog_->block_count(); ++b)
@@ -88,7 +80,7 @@ double PatchSolver::constraint_max_local() {
   return m;
 }
 
-double PatchSolver::dog_max(const Dofs& x) const {
+double CeresPatchSolver::dog_max(const Dofs& x) const {
   double m = 0;
   auto position = [&](int v) { return Eigen::Vector3d(vertex_of(x, v + begin_)); };
   for (int b = 0; b < dog_->block_count(); ++b)
@@ -96,7 +88,7 @@ double PatchSolver::dog_max(const Dofs& x) const {
   return m;
 }
 
-double PatchSolver::objective(const Dofs& x) const {
+double CeresPatchSolver::objective(const Dofs& x) const {
   double f = 0;
   auto position = [&](int v) { return Eigen::Vector3d(vertex_of(x, v + begin_)); };
   for (size_t k = 0; k < terms_.size(); ++k)
@@ -105,7 +97,7 @@ double PatchSolver::objective(const Dofs& x) const {
   return f;
 }
 
-PatchReport PatchSolver::step(Dofs& x, bool last) {
+PatchReport CeresPatchSolver::step(Dofs& x, bool last) {
   const double tolerance = options_.constraint_tolerance;
   if (last) options_.constraint_tolerance = options_.final_constraint_tolerance;
   const PatchReport r = solve(x);
@@ -113,7 +105,7 @@ PatchReport PatchSolver::step(Dofs& x, bool last) {
   return r;
 }
 
-PatchReport PatchSolver::solve(Dofs& x) {
+PatchReport CeresPatchSolver::solve(Dofs& x) {
   const auto t0 = Clock::now();
   PatchReport report;
   report.patch = patch_;
@@ -133,8 +125,8 @@ PatchReport PatchSolver::solve(Dofs& x) {
     for (TermCost* c : dog_costs_) c->set_weight(mu_);
     ceres::Solver::Summary summary;
     ceres::Solve(so, problem_.get(), &summary);
-    report.inner += static_cast<int>(summary.iterations.size()) - 1;
-    report.linear_ms += 1e3 * summary.linear_solver_time_in_seconds;
+    report.work.steps += static_cast<int>(summary.iterations.size()) - 1;
+    report.work.factor_ms += 1e3 * summary.linear_solver_time_in_seconds;
     ++report.outer;
     // The multiplier update, from the constraint values at the new point.
     int row = 0;
@@ -157,6 +149,12 @@ PatchReport PatchSolver::solve(Dofs& x) {
   report.objective = objective(x);
   report.ms = ms_between(t0, Clock::now());
   return report;
+}
+
+std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
+                                               const Term& dog, const CeresPatchOptions& options,
+                                               const PatchCoupling& coupling) {
+  return std::make_unique<CeresPatchSolver>(mesh, patch, terms, dog, options, coupling);
 }
 
 }  // namespace sdog

@@ -4,10 +4,10 @@
 
 #include "geometry/dog_model.h"
 #include "solver/problem/dog_problem.h"
-#include "solver/patches/ceres/patch_solver.h"
+#include "solver/patches/ceres/ceres_patch_solver.h"
 #include "solver/patches/patch_sqp.h"
 #include "solver/patches/patch_term.h"
-#include "solver/run/run_config.h"
+#include "solver/problem/scenario.h"
 #include "tests/test_support.h"
 
 namespace sdog {
@@ -27,7 +27,7 @@ struct PatchCase {
   std::vector<std::unique_ptr<PatchStepper>> solvers() const {
     std::vector<std::unique_ptr<PatchStepper>> out;
     for (int p = 0; p < model.fine.patch_count(); ++p)
-      out.push_back(std::make_unique<PatchSolver>(model.fine, p, problem->objective_terms(), problem->dog));
+      out.push_back(std::make_unique<CeresPatchSolver>(model.fine, p, problem->objective_terms(), problem->dog));
     return out;
   }
   // A bent start: the flat sheet rolled around the y axis (a developable state, DOG constraints 0).
@@ -43,12 +43,12 @@ struct PatchCase {
   }
 };
 
-TEST(PatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
+TEST(CeresPatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   const PatchCase s("four_corner_arcs.svg", {15, 15});
   Dofs x = s.bent();
   const Dofs x0 = x;
   // The last patch holds the dragged corner: its objective is far from its minimum.
-  PatchSolver last(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
+  CeresPatchSolver last(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
   const double before = last.objective(x);
   const PatchReport r = last.solve(x);
   EXPECT_TRUE(r.converged);
@@ -57,7 +57,7 @@ TEST(PatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   EXPECT_LT(r.objective, 0.5 * before);
   EXPECT_DOUBLE_EQ(r.objective, last.objective(x));
   EXPECT_GE(r.outer, 1);
-  EXPECT_GE(r.inner, 1);
+  EXPECT_GE(r.work.steps, 1);
   // Only the patch's own vertices moved.
   const int begin = s.model.fine.patch_begin[last.patch()], end = s.model.fine.patch_begin[last.patch() + 1];
   for (int v = 0; v < s.model.fine.vertex_count(); ++v) {
@@ -68,7 +68,7 @@ TEST(PatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   }
 }
 
-TEST(PatchSolver, ParallelSolveEqualsSerialSolve) {
+TEST(CeresPatchSolver, ParallelSolveEqualsSerialSolve) {
   const PatchCase s("four_corner_arcs.svg", {15, 15});
   Dofs serial = s.bent(), parallel = serial;
   std::vector<PatchReport> a, b;
@@ -92,7 +92,7 @@ TEST(PatchSolver, ParallelSolveEqualsSerialSolve) {
   }
 }
 
-TEST(PatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
+TEST(CeresPatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
   const PatchCase s("one_curve.svg", {15, 11});
   auto solvers = s.solvers();
   Dofs x = s.bent();
@@ -106,9 +106,9 @@ TEST(PatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
   }
 }
 
-TEST(PatchSolver, WeightChangesReachTheCeresProblem) {
+TEST(CeresPatchSolver, WeightChangesReachTheCeresProblem) {
   const PatchCase s("one_curve.svg", {15, 11});
-  PatchSolver solver(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
+  CeresPatchSolver solver(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
   Dofs x = s.bent();
   const double before = solver.objective(x);
   solver.set_weight(kPositions, 0);
@@ -149,7 +149,7 @@ TEST(PatchSqp, StepsOnlyItsPatchAndMeetsTheTolerance) {
   const PatchCase s("four_corner_arcs.svg", {15, 15});
   const int patch = s.model.fine.patch_count() - 1;
   PatchSqp sqp(s.model.fine, patch, s.problem->objective_terms(), s.problem->dog, SqpOptions{});
-  PatchSolver reference(s.model.fine, patch, s.problem->objective_terms(), s.problem->dog);
+  CeresPatchSolver reference(s.model.fine, patch, s.problem->objective_terms(), s.problem->dog);
   Dofs x = s.bent();
   const Dofs x0 = x;
   const double before = reference.objective(x);

@@ -26,31 +26,20 @@
 #include "solver/terms/dog_constraints.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/patches/patch_term.h"
-#include "solver/sqp/sqp_solver.h"
+#include "solver/patches/ceres/ceres_patch_options.h"
+#include "solver/terms/weighted_term.h"
 
 namespace sdog {
 
-struct PatchOptions {
-  double constraint_tolerance = 5e-5;  ///< |c|_inf of the patch's DOG constraints
-  double final_constraint_tolerance = 5e-7;  ///< ... in the last iteration of a run
-  double initial_penalty = 1e4;        ///< mu of the first solve
-  double penalty_growth = 10;
-  double max_penalty = 1e12;
-  int max_outer = 12;  ///< augmented-Lagrangian updates per solve
-  int max_inner = 50;  ///< Ceres iterations per update
-  /// Empty when valid, else the offending field and why.
-  std::string validate() const;
-};
-
-class PatchSolver : public PatchStepper {
+class CeresPatchSolver : public PatchStepper {
  public:
   /// Patch `patch` of `mesh`: the blocks of `terms` inside it (and the coupled ones) and the
   /// blocks of `dog` inside it. The terms, `dog` and the coupling's frozen state must outlive the
   /// solver; their targets may change between solves.
-  PatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-              const PatchOptions& options = {}, const PatchCoupling& coupling = {});
-  PatchSolver(const PatchSolver&) = delete;
-  PatchSolver& operator=(const PatchSolver&) = delete;
+  CeresPatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
+              const CeresPatchOptions& options = {}, const PatchCoupling& coupling = {});
+  CeresPatchSolver(const CeresPatchSolver&) = delete;
+  CeresPatchSolver& operator=(const CeresPatchSolver&) = delete;
 
   int patch() const override { return patch_; }
   int vertex_count() const override { return end_ - begin_; }
@@ -68,7 +57,7 @@ class PatchSolver : public PatchStepper {
   void load(const Dofs& x);
   double constraint_max_local();  // of local_
   int patch_, begin_, end_;
-  PatchOptions options_;
+  CeresPatchOptions options_;
   std::vector<double> local_;  // the patch's coordinates, Ceres' parameter blocks
   std::unique_ptr<ceres::Problem> problem_;
   std::vector<std::unique_ptr<PatchTerm>> terms_;   // the objective terms restricted to the patch

@@ -1,0 +1,137 @@
+#include "solver/config/run_config_json.h"
+
+#include <fstream>
+
+#include "base/errors.h"
+#include "solver/config/json_field.h"
+#include "solver/config/option_json.h"
+
+namespace sdog {
+namespace {
+
+using nlohmann::json;
+
+PositionSpec position_spec(const Field& f) {
+  f.expect_object({"vertex", "near", "start", "end", "move"});
+  PositionSpec p;
+  p.path = f.where();
+  if (f.has("vertex") == f.has("near")) f.fail("give exactly one of \"vertex\" (an index) and \"near\" ([x, y] in sheet units)");
+  if (f.has("end") == f.has("move")) f.fail("give exactly one of \"end\" ([x, y, z]) and \"move\" ([dx, dy, dz])");
+  if (f.has("vertex")) p.vertex = f["vertex"].integer(0);
+  if (f.has("near")) p.near = f["near"].vector<2>();
+  if (f.has("start")) p.start = f["start"].vector<3>();
+  if (f.has("end")) p.end = f["end"].vector<3>();
+  if (f.has("move")) p.move = f["move"].vector<3>();
+  return p;
+}
+
+AngleSpec angle_spec(const Field& f) {
+  f.expect_object({"crease_point", "curve", "start", "end"});
+  AngleSpec a;
+  a.path = f.where();
+  if (f.has("crease_point") == f.has("curve"))
+    f.fail("give exactly one of \"crease_point\" (an index) and \"curve\" (a crease curve index)");
+  if (!f.has("end")) f.fail("missing \"end\" (the final dihedral angle in degrees)");
+  if (f.has("crease_point")) a.point = f["crease_point"].integer(0);
+  if (f.has("curve")) a.curve = f["curve"].integer(0);
+  if (f.has("start")) a.start_degrees = f["start"].number();
+  a.end_degrees = f["end"].number();
+  for (double d : {a.start_degrees, a.end_degrees})
+    if (std::abs(d) > 180) f.fail("angles must be in [-180, 180] degrees");
+  return a;
+}
+
+ModeSwitch mode_switch(const Field& f) {
+  f.expect_object({"iteration", "mode"});
+  if (!f.has("iteration") || !f.has("mode")) f.fail("give \"iteration\" (1-based) and \"mode\"");
+  const int iteration = f["iteration"].integer(1);
+  const std::optional<ModeKind> mode = find_mode(f["mode"].text());
+  if (!mode) f["mode"].fail("unknown mode \"" + f["mode"].text() + "\" (known: " + known_modes() + ")");
+  return {iteration, *mode};
+}
+
+template <class T>
+void read_list(const Field& root, const char* key, std::vector<T>& out, T (*read)(const Field&)) {
+  if (!root.has(key)) return;
+  const Field list = root[key];
+  out.clear();
+  for (size_t i = 0; i < list.array_size(); ++i) out.push_back(read(list[i]));
+}
+
+std::vector<std::string> top_level_keys() {
+  std::vector<std::string> keys = option_keys(run_option_table());
+  const RunConfig defaults;
+  for_each_option_section(defaults, [&](const char* key, const auto&, const auto&) {
+    keys.push_back(key);
+  });
+  for (const char* key : {"positions", "angles", "switches"}) keys.push_back(key);
+  return keys;
+}
+
+json vector_json(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  json out = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
+  return out;
+}
+
+}  // namespace
+
+void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
+  const Field root(j, "$", source);
+  root.expect_object(top_level_keys());
+  read_options(root, run_option_table(), c);
+  for_each_option_section(c, [&](const char* key, auto& options, const auto& table) {
+    if (!root.has(key)) return;
+    const Field section = root[key];
+    section.expect_object(option_keys(table));
+    read_options(section, table, options);
+  });
+  read_list(root, "positions", c.positions, position_spec);
+  read_list(root, "angles", c.angles, angle_spec);
+  read_list(root, "switches", c.switches, mode_switch);
+  validate_run_config(c, source);
+}
+
+json read_json_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the " + what);
+  try {
+    return json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(path + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+void read_run_config(const std::string& path, RunConfig& config) {
+  apply_run_config(read_json_file(path, "configuration file"), path, config);
+}
+
+json to_json(const RunConfig& c) {
+  json j = options_json(run_option_table(), c);
+  for_each_option_section(c, [&](const char* key, const auto& options, const auto& table) {
+    j[key] = options_json(table, options);
+  });
+  json positions = json::array(), angles = json::array(), switches = json::array();
+  for (const auto& p : c.positions) {
+    json e = json::object();
+    if (p.vertex) e["vertex"] = *p.vertex;
+    if (p.near) e["near"] = vector_json(*p.near);
+    if (p.start) e["start"] = vector_json(*p.start);
+    if (p.end) e["end"] = vector_json(*p.end);
+    if (p.move) e["move"] = vector_json(*p.move);
+    positions.push_back(e);
+  }
+  for (const auto& a : c.angles) {
+    json e{{"start", a.start_degrees}, {"end", a.end_degrees}};
+    if (a.point) e["crease_point"] = *a.point;
+    if (a.curve) e["curve"] = *a.curve;
+    angles.push_back(e);
+  }
+  for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", mode_name(s.mode)}});
+  j["positions"] = positions;
+  j["angles"] = angles;
+  j["switches"] = switches;
+  return j;
+}
+
+}  // namespace sdog

@@ -1,0 +1,104 @@
+// Scenarios (problem/scenario.h): what the thesis protocol and the fold scenario ask for, targets
+// moving linearly in time and then held, installation into a problem, and the fold seed of a
+// start state.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/dog_model.h"
+#include "solver/problem/dog_problem.h"
+#include "solver/problem/fold_seed.h"
+#include "solver/problem/scenario.h"
+#include "solver/terms/crease_geometry.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+const DogModel& model() {
+  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  return m;
+}
+
+TEST(Scenario, TheCornersProtocolHoldsOneCornerAndDragsTheOther) {
+  const DogMesh& mesh = model().fine;
+  const Scenario s = corners_scenario(mesh, 250, 50);
+  ASSERT_EQ(s.positions.size(), 2u);
+  const PositionConstraint& a = s.positions[0];
+  const PositionConstraint& c = s.positions[1];
+  EXPECT_EQ(mesh.grid[a.vertex], Eigen::Vector2i(0, 0));
+  EXPECT_EQ(mesh.grid[c.vertex], Eigen::Vector2i(mesh.nx() - 1, mesh.ny() - 1));
+  EXPECT_EQ(a.start, a.end);
+  // The thesis's end point: (0.6 x_c, 0.5 (y_c + y_a), 0.4 (y_c + y_a)).
+  const double xc = mesh.V(c.vertex, 0), yc = mesh.V(c.vertex, 1), ya = mesh.V(a.vertex, 1);
+  EXPECT_EQ(c.end, Eigen::Vector3d(0.6 * xc, 0.5 * (yc + ya), 0.4 * (yc + ya)));
+  EXPECT_TRUE(s.angles.empty());
+  EXPECT_TRUE(s.keeps_folds);
+}
+
+TEST(Scenario, TargetsMoveLinearlyThenHold) {
+  const Scenario s = corners_scenario(model().fine, 4, 2);
+  EXPECT_EQ(s.time_of(1), 0.25);
+  EXPECT_EQ(s.time_of(2), 0.5);
+  EXPECT_EQ(s.time_of(4), 1.0);
+  EXPECT_EQ(s.time_of(6), 1.0);
+  Scenario none = s;
+  none.iterations = 0;
+  EXPECT_EQ(none.time_of(1), 1.0);
+  DogProblem problem(model().fine, model().fine_topology);
+  s.install(problem);
+  ASSERT_EQ(problem.positions.block_count(), 2);
+  EXPECT_EQ(problem.positions.target(1), s.positions[1].start);  // installed at t = 0
+  s.apply(problem, 0.5);
+  EXPECT_TRUE(problem.positions.target(1).isApprox(0.5 * (s.positions[1].start + s.positions[1].end)));
+}
+
+TEST(Scenario, TheFoldScenarioAsksForTheAngleAtEveryFoldSite) {
+  const DogMesh& mesh = model().fine;
+  const Scenario s = fold_scenario(mesh, 60, 40, 10);
+  const auto sites = fold_sites(mesh);
+  ASSERT_FALSE(sites.empty());
+  ASSERT_EQ(s.angles.size(), sites.size());
+  for (size_t k = 0; k < sites.size(); ++k) {
+    EXPECT_EQ(s.angles[k].point, sites[k].point);
+    EXPECT_EQ(s.angles[k].start_degrees, 0);
+    EXPECT_EQ(s.angles[k].end_degrees, 60);
+    EXPECT_GE(s.angles[k].alpha, 0);
+    EXPECT_LE(s.angles[k].alpha, M_PI / 2);
+  }
+  ASSERT_EQ(s.curve_signs.size(), mesh.stitching.curves.size());
+  for (double sign : s.curve_signs) EXPECT_EQ(sign, 1.0);
+  for (double sign : fold_scenario(mesh, -30).curve_signs) EXPECT_EQ(sign, -1.0);
+  // Flat targets at t = 0: the installed cosine targets are those of a flat crease (cos 0 = 1).
+  DogProblem problem(mesh, model().fine_topology);
+  s.install(problem);
+  EXPECT_EQ(problem.angles.block_count(), static_cast<int>(sites.size()));
+  // A start state tilted towards the fold (the flat sheet is a symmetric point).
+  EXPECT_GT((s.start(mesh) - problem.rest()).lpNorm<Eigen::Infinity>(), 0);
+}
+
+TEST(FoldSeed, ValleyTiltsUpAndMountainDown) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const std::vector<bool> inside = inside_own_patch(model.fine);
+  const Dofs flat = to_dofs(model.fine.V);
+  const Dofs valley = fold_seed(model.fine, {1.0});
+  const Dofs mountain = fold_seed(model.fine, {-1.0});
+  int raised = 0;
+  for (int v = 0; v < model.fine.vertex_count(); ++v) {
+    EXPECT_EQ(valley[3 * v], flat[3 * v]);
+    EXPECT_EQ(valley[3 * v + 1], flat[3 * v + 1]);
+    EXPECT_EQ(mountain[3 * v + 2], -valley[3 * v + 2]);
+    if (inside[v]) {
+      EXPECT_GE(valley[3 * v + 2], 0) << "vertex " << v;
+    } else {
+      EXPECT_LE(valley[3 * v + 2], 0) << "vertex " << v;
+    }
+    raised += valley[3 * v + 2] > 1e-4;
+  }
+  EXPECT_GT(raised, model.fine.vertex_count() / 2);
+  // No sign for the curve: the flat state.
+  EXPECT_TRUE(fold_seed(model.fine, {0.0}) == flat);
+}
+
+}  // namespace
+}  // namespace sdog
