@@ -14,7 +14,7 @@ DEPS = cmake ninja-build g++ libeigen3-dev libcgal-dev libceres-dev libsuitespar
        libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth
 FUZZ_DEPS = clang libclang-rt-14-dev
 
-.PHONY: all deps fuzz-deps configure build demo test fuzz previews clean
+.PHONY: all deps fuzz-deps configure build demo test fuzz previews reference-docs clean
 
 all: build
 
@@ -72,6 +72,14 @@ previews: build
 	  --overlay vertex-types,crease-curves,wireframe --size 1400x800
 	$(XVFB) $(BUILD)/app/sdog-studio --screenshot docs/studio_dog_residual.png $(DEMO_PATTERN) --res 41x41 \
 	  --overlay dog-residual,handles,crease-curves --iters 60 --size 1400x800
+
+# Rewrites the generated tables of docs/reference/ (everything after the marker line) from the
+# program's own option definitions; a test checks that they match.
+REFERENCE_MARKER = <!-- generated tables below: make reference-docs -->
+reference-docs: build
+	@for page in command-line configuration; do f=docs/reference/$$page.md; \
+	  sed -n '1,/^$(REFERENCE_MARKER)$$/p' $$f > $$f.tmp && $(BUILD)/app/sdog-reference $$page >> $$f.tmp && mv $$f.tmp $$f || exit 1; \
+	  echo "wrote $$f"; done
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD) out

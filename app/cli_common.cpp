@@ -1,5 +1,7 @@
 #include "app/cli_common.h"
 
+#include "app/commands.h"
+
 #include <cmath>
 
 #include "base/errors.h"
@@ -60,6 +62,19 @@ std::string command_line_text(int argc, char** argv) {
     line += (i ? " " : "") + arg;
   }
   return line;
+}
+
+void register_sdog_commands(CLI::App& app, Runner& run, const std::string& command_line) {
+  app.name("sdog");
+  app.description(
+      "Scalable DOGs: crease patterns (SVG) to discrete orthogonal geodesic nets (DOGs), their "
+      "coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options.");
+  app.require_subcommand(1);
+  register_mesh_command(app, run);
+  register_render_command(app, run);
+  register_run_command(app, run);
+  register_bench_command(app, run);
+  register_compare_command(app, run, command_line);
 }
 
 }  // namespace sdog::cli

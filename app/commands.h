@@ -17,4 +17,7 @@ void register_bench_command(CLI::App& app, Runner& run);
 /// `command_line`: the whole command line as typed, recorded in compare.json.
 void register_compare_command(CLI::App& app, Runner& run, const std::string& command_line);
 
+/// The sdog application: its description and every subcommand above.
+void register_sdog_commands(CLI::App& app, Runner& run, const std::string& command_line);
+
 }  // namespace sdog::cli

@@ -233,7 +233,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                     ->capture_default_str();
   cmd->add_option("--config", a->config,
                   "JSON file with constraints, iteration counts, weights and solver options (command-line "
-                  "options win); see README, 'Run configuration'");
+                  "options win); see docs/reference/configuration.md");
   cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))

@@ -8,16 +8,9 @@
 #include "base/errors.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{
-      "Scalable DOGs: crease patterns (SVG) to discrete orthogonal geodesic nets (DOGs), their "
-      "coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options."};
-  app.require_subcommand(1);
+  CLI::App app;
   sdog::cli::Runner run;
-  sdog::cli::register_mesh_command(app, run);
-  sdog::cli::register_render_command(app, run);
-  sdog::cli::register_run_command(app, run);
-  sdog::cli::register_bench_command(app, run);
-  sdog::cli::register_compare_command(app, run, sdog::cli::command_line_text(argc, argv));
+  sdog::cli::register_sdog_commands(app, run, sdog::cli::command_line_text(argc, argv));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -13,21 +13,16 @@
 #include <string>
 #include <iostream>
 #include <map>
+#include <memory>
 
+#include "app/studio_options.h"
 #include "app/versions.h"
 #include "base/errors.h"
-#include "solver/modes/mode_factory.h"
 #include "ui/studio/frame_rate.h"
 #include "ui/studio/main_window.h"
 #include "ui/vis/layers.h"
 
 namespace {
-
-struct StudioArgs {
-  std::string pattern, res = "auto", mode = "standard", overlay, view = "3d", screenshot, size = "1600x1000";
-  int iterations = 0;
-  double measure_fps = 0;
-};
 
 QString about_text() {
   QString text = "<h3>Scalable DOGs studio</h3><p>Crease patterns to discrete orthogonal geodesic nets, "
@@ -36,24 +31,6 @@ QString about_text() {
   for (const auto& [name, version] : versions)
     text += QString("<tr><td>%1</td><td>%2</td></tr>").arg(QString::fromStdString(name), QString::fromStdString(version));
   return text + QString("<tr><td>qt</td><td>%1</td></tr></table>").arg(qVersion());
-}
-
-/// The command line's options, bound to `a`.
-void add_options(CLI::App& cli, StudioArgs& a) {
-  cli.name("sdog-studio");
-  cli.add_option("PATTERN", a.pattern, "crease pattern (SVG) to open");
-  cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh), or auto: 41 along the longer side")->capture_default_str();
-  cli.add_option("--mode", a.mode, "solver mode (" + sdog::known_modes() + ")")->capture_default_str();
-  cli.add_option("--overlay", a.overlay, "comma-separated overlays to show instead of vertex-types,wireframe (" +
-                                             sdog::vis::known_layers() + ")");
-  cli.add_option("--view", a.view, "3d, flat or side-by-side")->capture_default_str();
-  cli.add_option("--iters", a.iterations, "step the solver N iterations first")->check(CLI::Range(0, 100000));
-  cli.add_option("--screenshot", a.screenshot, "save the window as PNG and exit (needs PATTERN)");
-  cli.add_option("--size", a.size, "window size WIDTHxHEIGHT")->capture_default_str();
-  cli.add_option("--measure-fps", a.measure_fps,
-                 "play the solver for SECONDS while turning the camera, print the view's frame rate and exit "
-                 "(needs PATTERN)")
-      ->check(CLI::Range(0.5, 3600.0));
 }
 
 /// True when Qt has somewhere to show windows: an X or Wayland display, or a platform chosen
@@ -66,12 +43,68 @@ bool has_display(int argc, char** argv) {
   return false;
 }
 
+using sdog::cli::StudioArgs;
+
+// Window size, view and overlays from the command line; false (after a message) for bad values.
+bool configure_window(sdog::studio::MainWindow& window, const StudioArgs& a) {
+  try {
+    const sdog::vis::ImageSize size = sdog::vis::parse_image_size(a.size);
+    window.resize(size.width, size.height);
+    window.set_view(sdog::vis::parse_view(a.view));
+    if (!a.overlay.empty()) {
+      const auto layers = sdog::vis::parse_layers(a.overlay);
+      for (sdog::vis::Layer l : sdog::vis::all_layers()) window.set_layer(l, false);
+      for (sdog::vis::Layer l : layers) window.set_layer(l, true);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "sdog-studio: " << e.what() << "\n";
+    return false;
+  }
+  return true;
+}
+
+// --measure-fps: once the first state is shown (and the iterations asked for are done), plays and
+// turns the camera for the given time, prints the frame rate and quits.
+void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, QApplication& qt, const int& exit_code) {
+  auto measuring = std::make_shared<bool>(false);
+  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, measuring] {
+    if (*measuring || window.snapshot()->iteration < a.iterations) return;
+    *measuring = true;
+    QTimer::singleShot(0, &window, [&] {
+      const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
+      const sdog::vis::ImageSize view{window.renderer()->GetSize()[0], window.renderer()->GetSize()[1]};
+      std::printf("view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d pixels:\n",
+                  a.mode.c_str(), a.pattern.c_str(), a.res.c_str(), window.model()->fine.vertex_count(), view.width,
+                  view.height);
+      std::printf("  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max %.1f ms\n",
+                  r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
+      std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
+      std::fflush(stdout);
+      qt.exit(exit_code);
+    });
+  });
+}
+
+// --screenshot: saves the window once the state of the last iteration asked for is shown, and quits.
+void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, QApplication& qt,
+                           const int& exit_code) {
+  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
+    if (window.snapshot()->iteration < a.iterations) return;
+    QTimer::singleShot(300, &window, [&] {
+      if (window.save_window_image(QString::fromStdString(a.screenshot))) {
+        std::cout << "wrote " << a.screenshot << "\n";
+        qt.exit(exit_code);
+      }
+    });
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   StudioArgs a;
-  CLI::App cli{"Scalable DOGs studio: see and steer the solver"};
-  add_options(cli, a);
+  CLI::App cli;
+  sdog::cli::add_studio_options(cli, a);
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {  // no window needed
       std::cout << cli.help();
@@ -84,13 +117,9 @@ int main(int argc, char** argv) {
   }
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication qt(argc, argv);  // takes Qt's own options out of argv
-
   try {
     cli.parse(argc, argv);
-    if (!a.screenshot.empty() && a.pattern.empty()) throw CLI::ValidationError("--screenshot", "needs PATTERN");
-    if (a.measure_fps > 0 && a.pattern.empty()) throw CLI::ValidationError("--measure-fps", "needs PATTERN");
-    if (a.measure_fps > 0 && !a.screenshot.empty())
-      throw CLI::ValidationError("--measure-fps", "cannot be combined with --screenshot");
+    sdog::cli::check_studio_args(a);
   } catch (const CLI::CallForHelp& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
@@ -107,56 +136,14 @@ int main(int argc, char** argv) {
       exit_code = 1;
       qt.exit(1);
     });
-  try {
-    const sdog::vis::ImageSize size = sdog::vis::parse_image_size(a.size);
-    window.resize(size.width, size.height);
-    window.set_view(sdog::vis::parse_view(a.view));
-    if (!a.overlay.empty()) {
-      const auto layers = sdog::vis::parse_layers(a.overlay);
-      for (sdog::vis::Layer l : sdog::vis::all_layers()) window.set_layer(l, false);
-      for (sdog::vis::Layer l : layers) window.set_layer(l, true);
-    }
-  } catch (const std::exception& e) {
-    std::cerr << "sdog-studio: " << e.what() << "\n";
-    return 2;
-  }
+  if (!configure_window(window, a)) return 2;
   window.show();
   if (!a.pattern.empty() &&
       !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res), QString::fromStdString(a.mode)))
     if (batch) return 1;
   if (a.iterations > 0) window.step(a.iterations);
-  bool measuring = false;
-  if (a.measure_fps > 0) {
-    // Measured once the first state is shown (and the iterations asked for are done).
-    QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
-      if (measuring || window.snapshot()->iteration < a.iterations) return;
-      measuring = true;
-      QTimer::singleShot(0, &window, [&] {
-        const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
-        const sdog::vis::ImageSize view{window.renderer()->GetSize()[0], window.renderer()->GetSize()[1]};
-        std::printf("view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d pixels:\n",
-                    a.mode.c_str(), a.pattern.c_str(), a.res.c_str(), window.model()->fine.vertex_count(), view.width,
-                    view.height);
-        std::printf("  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max %.1f ms\n",
-                    r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
-        std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
-        std::fflush(stdout);
-        qt.exit(exit_code);
-      });
-    });
-  }
-  if (!a.screenshot.empty()) {
-    // Saves the window once the state of the last iteration asked for is shown.
-    QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
-      if (window.snapshot()->iteration < a.iterations) return;
-      QTimer::singleShot(300, &window, [&] {
-        if (window.save_window_image(QString::fromStdString(a.screenshot))) {
-          std::cout << "wrote " << a.screenshot << "\n";
-          qt.exit(exit_code);
-        }
-      });
-    });
-  }
+  if (a.measure_fps > 0) measure_when_shown(window, a, qt, exit_code);
+  if (!a.screenshot.empty()) screenshot_when_shown(window, a, qt, exit_code);
   const int code = qt.exec();
   return exit_code ? exit_code : code;
 }

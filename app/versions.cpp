@@ -1,13 +1,14 @@
 #include "app/versions.h"
 
 #include <CGAL/version.h>
-#include <ceres/version.h>
-#include <cholmod.h>
 #include <tbb/version.h>
 #include <vtkVersion.h>
 
 #include <Eigen/Core>
 #include <string>
+
+#include "solver/patches/ceres/ceres_patch.h"
+#include "solver/sqp/cholmod_factor.h"
 
 namespace sdog::cli {
 
@@ -20,8 +21,8 @@ nlohmann::json software_versions() {
           {"compiler", __VERSION__},
           {"eigen", dotted(EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
           {"cgal", CGAL_VERSION_STR},
-          {"ceres", CERES_VERSION_STRING},
-          {"cholmod", dotted(CHOLMOD_MAIN_VERSION, CHOLMOD_SUB_VERSION, CHOLMOD_SUBSUB_VERSION)},
+          {"ceres", ceres_version()},
+          {"cholmod", cholmod_version()},
           {"tbb", TBB_VERSION_STRING},
           {"vtk", vtkVersion::GetVTKVersion()},
           {"nlohmann_json",

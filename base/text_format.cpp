@@ -20,4 +20,14 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
   return out;
 }
 
+std::string markdown_cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') out += ' ';
+    else if (c == '|') out += "\\|";
+    else out += c;
+  }
+  return out;
+}
+
 }  // namespace sdog

@@ -10,6 +10,8 @@ namespace sdog {
 std::string format_number(double v);
 /// "(x, y)" with format_number.
 std::string format_point(const Eigen::Vector2d& p);
+/// Text for one cell of a Markdown table: line breaks become spaces, pipes are escaped.
+std::string markdown_cell(const std::string& text);
 /// The items separated by `separator`: join({"a", "b"}, ", ") is "a, b".
 std::string join(const std::vector<std::string>& items, const std::string& separator);
 

@@ -46,12 +46,9 @@ void TwoLevelMode::begin_finish_if_due(int left) {
   if (finish_ || left == IterationContext::kOpenEnded || left >= options_.standard_finish) return;
   // As a switch to the standard mode (mode_factory.h): it installs the scenario's blocks in the
   // fine problem, whose weights the two-level mode left as configured. Fold retries only up to the
-  // cap: from the sites the two-level iterations left across their crease the escalation to 1e14
-  // wrecked the sheet (valley 61x61: objective 6.4e9 in the first finishing iteration, 30.6 at the
-  // end, against 1.59 without retries), while one step of x10 refolds sites that are close (30
-  // iterations: parallel_curves_4 27x45 folded at 3.14 instead of unfolded at 3.15, valley 41x41
-  // folded at 2.64 instead of unfolded at 6.76; docs/solver-modes.md, "The two-level mode's
-  // standard finish").
+  // cap: from sites the two-level iterations left across their crease, the escalation to the
+  // standard's 1e14 wrecks the sheet, while one step of x10 refolds the sites that are close
+  // (docs/design/rejected.md).
   StandardOptions options = standard_;
   options.max_fold_bias = problem_.weights.fold_bias * options_.finish_fold_bias_cap;
   finish_ = std::make_unique<StandardMode>(problem_, scenario_, options);
@@ -60,8 +57,7 @@ void TwoLevelMode::begin_finish_if_due(int left) {
 StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
   // The last one is an ordinary standard iteration and the projection onto the constraints, not
   // the standard's polish: its exact-Hessian steps rely on multipliers settled over a whole run,
-  // and after a few standard iterations they moved the sheet far (4_corners 81x81, 10 finishing
-  // iterations: objective 2.33 at iteration 299, 6.67 after the polish).
+  // and after a few standard iterations they move the sheet far (docs/design/rejected.md).
   const Dofs x0 = last ? x : Dofs();
   StepReport report = finish_->step(x, false);
   if (last && !report.failed && !add_projection(finish_->sqp().project(x), report)) x = x0;  // rolled back

@@ -14,8 +14,8 @@
 // time where the patches leave a core idle. With a positive link weight the coarse step reads the
 // fine state, and the steps run one after another.
 // `coarse_every` k > 1: the coarse step runs only in every k-th iteration and its correction is
-// applied in k equal shares, one per iteration (docs/solver-modes.md, "A coarse step every other
-// iteration": up to 1.24x faster iterations at 4_corners 81x81, worse on the thesis grid).
+// applied in k equal shares, one per iteration (faster iterations, a worse thesis grid:
+// docs/design/rejected.md).
 // Block Jacobi alone hands a drag on by one patch per iteration and lags far behind moving
 // targets; the correction moves the whole sheet at once. The coarse state enters the fine problem
 // only as a displacement, never as a target, so once the coarse mesh settles the fine iteration is
@@ -28,9 +28,8 @@
 // `finish_fold_bias_cap` times the base fold-bias weight), as if the run switched to the standard
 // mode there; the coarse mesh stays where it was. The last of them is an ordinary standard
 // iteration and the projection onto the constraints (as the patch modes' last iteration), not the
-// standard's polish. Block Jacobi converges slowly on a held state: on the thesis grid 30 such
-// iterations bring the geometric-mean objective ratio to the standard mode from 2.17 to 1.04
-// (docs/solver-modes.md, "The two-level mode's standard finish").
+// standard's polish. Block Jacobi converges slowly on a held state; the finish brings the result
+// to the standard mode's (docs/design/modes.md).
 #include <memory>
 
 #include "geometry/dog_model.h"

@@ -9,16 +9,14 @@
 // iteration, as the standard mode sets its own count.
 //
 // OpenMP: Debian's CHOLMOD wraps small copy loops of every supernode in OpenMP regions with a
-// fixed team of 4 threads, whatever OMP_NUM_THREADS says. Waking that team per supernode cost more
-// than the loops save (4_corners 81x81, 2 cores: 137 ms per standard iteration, 80 ms without the
-// regions), and a team per patch thread oversubscribes the cores. So
+// fixed team of 4 threads, whatever OMP_NUM_THREADS says. Waking that team per supernode costs more
+// than the loops save (docs/design/rejected.md), and a team per patch thread oversubscribes the
+// cores. So
 // set_blas_threads also makes every OpenMP region run on the calling thread. libgomp keeps that
 // limit per thread (a new thread starts from the process defaults), so threads that factorise
 // on their own, such as the TBB workers of the patch modes, call serial_openmp_regions() too:
-// without it every worker's first factorisation started a team of 4 OpenMP threads that then
-// spun beside the patch solves (4_corners 81x81, subsolvers, 2 patch threads: 56.6 ms per
-// iteration; 40.2 ms with OMP_WAIT_POLICY=passive, the teams idle instead of spinning; 37.5 ms
-// with this call).
+// without it every worker's first factorisation starts a team of 4 OpenMP threads that then spin
+// beside the patch solves.
 namespace sdog {
 
 /// The count from SDOG_BLAS_THREADS (1..64), else 2.

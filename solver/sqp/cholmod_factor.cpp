@@ -13,6 +13,11 @@ constexpr double kRelaxedZeros[3] = {0.9, 0.2, 0.1};
 
 }  // namespace
 
+std::string cholmod_version() {
+  return std::to_string(CHOLMOD_MAIN_VERSION) + "." + std::to_string(CHOLMOD_SUB_VERSION) + "." +
+         std::to_string(CHOLMOD_SUBSUB_VERSION);
+}
+
 struct CholmodFactor::Impl {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };

@@ -1,10 +1,14 @@
 #pragma once
 // CHOLMOD's supernodal Cholesky factorisation of the SQP solver's matrix K (lower triangle), set
-// up once for a sparsity pattern. Private to the sqp layer: the only place that includes CHOLMOD.
+// up once for a sparsity pattern. The only place that includes CHOLMOD.
 #include <Eigen/Sparse>
 #include <memory>
+#include <string>
 
 namespace sdog {
+
+/// "MAJOR.MINOR.PATCH" of the CHOLMOD the program was built with.
+std::string cholmod_version();
 
 class CholmodFactor {
  public:

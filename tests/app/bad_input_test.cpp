@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"res_garbage", svg(kCrease), "abc", 2, {"\"abc\"", "31x21"}}),
     [](const auto& info) { return info.param.name; });
 
-TEST(BadInputFiles, MissingFile) {
+TEST(BadInputFiles, AMissingFileIsAnInputErrorNamingIt) {
   const auto r = test::run_sdog("mesh /nonexistent/pattern.svg --res 21x21");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(test::count_lines(r.err), 1);
@@ -111,7 +111,7 @@ TEST(BadInputFiles, DirectoryInsteadOfFile) {
   EXPECT_NE(r.err.find(dir), std::string::npos) << r.err;
 }
 
-TEST(BadInputFiles, UnwritableOutputDirectory) {
+TEST(BadInputFiles, AnUnwritableOutputDirectoryIsAnOutputError) {
   const std::string dir = test::temp_dir("unwritable");
   const std::string blocker = test::write_file(dir, "file", "x");
   const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 21x21 --out " +
@@ -125,7 +125,7 @@ TEST(BadInputFiles, UnwritableOutputDirectory) {
 // a missing folder named in one line before any work starts.
 TEST(BadInputFiles, MissingThesisPatternsFolder) {
   const std::string out = test::temp_dir("grid_missing");
-  for (const std::string command : {std::string("bench --thesis-grid"), "compare --thesis-grid --modes standard --out " + out})
+  for (const std::string& command : {std::string("bench --thesis-grid"), "compare --thesis-grid --modes standard --out " + out})
     for (const char* option : {"--patterns-dir", "--patterns"}) {
       const auto r = test::run_sdog(command + " " + option + " /nonexistent/thesis");
       EXPECT_EQ(r.code, 1) << command << " " << option << ": " << r.err;

@@ -14,7 +14,7 @@ TEST(Resolution, ParsesBothFormsAndRejectsGarbage) {
     EXPECT_THROW(parse_resolution(bad), UsageError) << bad;
 }
 
-TEST(Resolution, RangeAndParity) {
+TEST(Resolution, IsCheckedForRangeAndParity) {
   EXPECT_NO_THROW(check_resolution({3, 3}, true));
   EXPECT_NO_THROW(check_resolution({2001, 2001}, true));
   EXPECT_THROW(check_resolution({2, 21}, false), UsageError);
@@ -68,7 +68,7 @@ TEST(AxisLayout, PinsOnTheEndsNeedNoLine) {
   EXPECT_EQ(a.anchors.size(), 2u);
 }
 
-TEST(AxisLayout, RefinementDoublesIndices) {
+TEST(AxisLayout, RefinementDoublesTheAnchorIndices) {
   const AxisLayout c = layout_axis(0, 10, 6, {4.1});
   const AxisLayout f = refine_axis(c);
   EXPECT_EQ(f.n, 11);

@@ -124,7 +124,7 @@ TEST(PatternCleaning, NearbyJunctionCoordinatesAreAligned) {
   EXPECT_EQ(count_pattern_patches(c), 5);
 }
 
-TEST(PatternCleaning, OptionsAreValidated) {
+TEST(PatternCleaning, RefusesInvalidOptions) {
   CleaningOptions o;
   o.snap_fraction = -1;
   EXPECT_FALSE(o.validate().empty());

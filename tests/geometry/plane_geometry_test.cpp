@@ -17,7 +17,7 @@ TEST(PlaneGeometry, OrientationAndPointInPolygonAreExact) {
   EXPECT_DOUBLE_EQ(signed_area(square), 1.0);
 }
 
-TEST(PlaneGeometry, ContactsBetweenPolylines) {
+TEST(PlaneGeometry, FindsEveryContactBetweenPolylines) {
   const Polyline2 zigzag{{0, 0}, {1, 1}, {2, 0}, {3, 1}};
   const Polyline2 line{{0, 0.5}, {3, 0.5}};
   const auto contacts = find_segment_contacts({&zigzag, &line}, {false, false});

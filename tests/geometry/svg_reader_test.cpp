@@ -128,7 +128,7 @@ TEST(SvgNumbers, FollowThePathGrammar) {
   EXPECT_EQ(text.substr(pos), "e");  // an exponent needs digits
 }
 
-TEST(SvgNumbers, NonFiniteSpellingsAndOverflow) {
+TEST(SvgNumbers, RefuseNonFiniteSpellingsAndOverflow) {
   for (std::string_view text :
        {"nan", "NaN", "-inf", "Infinity", "1e999", "-1e400", "1e99999999999"}) {
     std::size_t pos = 0;
@@ -144,7 +144,7 @@ TEST(SvgNumbers, NonFiniteSpellingsAndOverflow) {
   EXPECT_EQ(sdog::svg::scan_number("-", pos, v), sdog::svg::NumberScan::absent);
 }
 
-TEST(SvgPath, MoveAndLineAbsoluteAndRelative) {
+TEST(SvgPath, MovesAndLinesReadAbsoluteAndRelativeCoordinates) {
   const auto curves = path_curves("M10 20 L30 40 l5 -5 L 0.5,0.25");
   ASSERT_EQ(curves.size(), 1u);
   expect_points(curves[0], {{10, 20}, {30, 40}, {35, 35}, {0.5, 0.25}});
@@ -152,13 +152,13 @@ TEST(SvgPath, MoveAndLineAbsoluteAndRelative) {
   EXPECT_EQ(curves[0].element, "path");
 }
 
-TEST(SvgPath, HorizontalAndVertical) {
+TEST(SvgPath, HorizontalAndVerticalLinesMoveOneCoordinate) {
   const auto curves = path_curves("M1 2 H10 V20 h-3 v-4");
   ASSERT_EQ(curves.size(), 1u);
   expect_points(curves[0], {{1, 2}, {10, 2}, {10, 20}, {7, 20}, {7, 16}});
 }
 
-TEST(SvgPath, ImplicitRepeatedCommands) {
+TEST(SvgPath, RepeatedCoordinatesRepeatTheCommand) {
   expect_points(path_curves("M0 0 10 10 20 0")[0], {{0, 0}, {10, 10}, {20, 0}});
   expect_points(path_curves("m1 1 2 2 3 3")[0], {{1, 1}, {3, 3}, {6, 6}});
   expect_points(path_curves("M0,0L1,1,2,2 3 3")[0], {{0, 0}, {1, 1}, {2, 2}, {3, 3}});
@@ -167,7 +167,7 @@ TEST(SvgPath, ImplicitRepeatedCommands) {
                      path_curves("M0 0 C1 2 3 4 5 6 C7 8 9 10 11 12")[0]);
 }
 
-TEST(SvgPath, NumbersWithoutSeparators) {
+TEST(SvgPath, NumbersWithoutSeparatorsAreSplitByTheGrammar) {
   expect_points(path_curves("M1.5.5 10-5")[0], {{1.5, 0.5}, {10, -5}});
   expect_points(path_curves("M-.5e1,+2E-1L3,4")[0], {{-5, 0.2}, {3, 4}});
 }
@@ -225,7 +225,7 @@ TEST(SvgPath, ArcFlagsWithoutSeparators) {
 /// Arc from (0,0) to (10,0) with radius 10: the centres are (5, ±5√3). In SVG user space (y down)
 /// sweep=1 turns towards increasing angles. Around (5, 5√3) the end points are at -120° and -60°;
 /// around (5, -5√3) at 120° and 60°. The midpoints of the four arcs follow.
-TEST(SvgPath, ArcFlagCombinations) {
+TEST(SvgPath, EveryArcFlagCombinationPicksItsArc) {
   const double h = 5 * std::sqrt(3.0);
   struct Case {
     int large, sweep;
@@ -296,7 +296,7 @@ TEST(SvgPath, ZeroRadiusArcIsALineAndEqualEndpointsAreOmitted) {
   expect_points(path_curves("M0 0 L5 0 A5 5 0 0 1 5 0 L5 5")[0], {{0, 0}, {5, 0}, {5, 5}});
 }
 
-TEST(SvgPath, SubpathsAndClosing) {
+TEST(SvgPath, SubpathsStartAtMovesAndCloseAtZ) {
   const auto curves = path_curves("M0 0 L10 0 L10 10 Z M20 20 L30 20");
   ASSERT_EQ(curves.size(), 2u);
   expect_points(curves[0], {{0, 0}, {10, 0}, {10, 10}});
@@ -367,7 +367,7 @@ TEST(SvgExactness, CurveEndpointsAreTheParsedEndpoints) {
   EXPECT_EQ(curve.points.back(), Vec(x3, -y3));
 }
 
-TEST(SvgExactness, IllustratorSample) {
+TEST(SvgExactness, ReadsAnIllustratorSampleExactly) {
   const std::string text =
       "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
       "<svg version=\"1.1\" id=\"Layer_1\" xmlns=\"http://www.w3.org/2000/svg\" x=\"0px\" "
@@ -479,7 +479,7 @@ TEST(SvgFlatness, TransformedCurvesKeepTheToleranceInRootUnits) {
 // ----------------------------------------------------------------------------------------------
 // Basic shapes
 
-TEST(SvgShapes, Circle) {
+TEST(SvgShapes, CirclesBecomeClosedCurvesOfTheirRadius) {
   const double tol = 1e-4 * 100;
   const SvgCurve curve = only_curve("<circle id=\"c\" cx=\"50\" cy=\"40\" r=\"30\"/>", 1e-4);
   EXPECT_TRUE(curve.closed);
@@ -498,7 +498,7 @@ TEST(SvgShapes, Circle) {
   }
 }
 
-TEST(SvgShapes, Ellipse) {
+TEST(SvgShapes, EllipsesBecomeClosedCurvesOfTheirRadii) {
   const SvgCurve curve = only_curve("<ellipse cx=\"50\" cy=\"40\" rx=\"30\" ry=\"10\"/>");
   EXPECT_TRUE(curve.closed);
   for (const Vec& p : curve.points) {
@@ -511,7 +511,7 @@ TEST(SvgShapes, Ellipse) {
   EXPECT_TRUE(parse("<ellipse rx=\"0\" ry=\"3\"/><circle r=\"0\"/>").curves.empty());
 }
 
-TEST(SvgShapes, RectLinePolylinePolygon) {
+TEST(SvgShapes, RectLinePolylineAndPolygonBecomeCurves) {
   const SvgDrawing drawing = parse(
       "<rect x=\"1\" y=\"2\" width=\"10\" height=\"20\" rx=\"3\"/>\n"
       "<line x1=\"1\" y1=\"2\" x2=\"3\" y2=\"4\"/>\n"
@@ -532,7 +532,7 @@ TEST(SvgShapes, RectLinePolylinePolygon) {
   EXPECT_EQ(drawing.curves[3].line, 5);
 }
 
-TEST(SvgShapes, LengthUnits) {
+TEST(SvgShapes, LengthUnitsAreConvertedToUserUnits) {
   const SvgCurve curve = only_curve("<line x1=\"1in\" y1=\"0\" x2=\"25.4mm\" y2=\"12pt\"/>");
   EXPECT_DOUBLE_EQ(curve.points[0].x(), 96);
   EXPECT_DOUBLE_EQ(curve.points[1].x(), 96);
@@ -543,14 +543,14 @@ TEST(SvgShapes, LengthUnits) {
 // ----------------------------------------------------------------------------------------------
 // Transforms
 
-TEST(SvgTransforms, GroupAndElementCompose) {
+TEST(SvgTransforms, GroupAndElementTransformsCompose) {
   // rotate(90) maps (1,0) to (0,1), then translate(10,20): (10,21). Exact for quarter turns.
   const SvgCurve curve = only_curve(
       "<g transform=\"translate(10,20)\"><path transform=\"rotate(90)\" d=\"M1 0 L2 0\"/></g>");
   expect_points(curve, {{10, 21}, {10, 22}});
 }
 
-TEST(SvgTransforms, NestedTranslateRotateScale) {
+TEST(SvgTransforms, NestedTranslateRotateAndScaleCompose) {
   // scale(2) ∘ translate(1,1) ∘ rotate(30) ∘ scale(3, 1) applied to (1, 1).
   const SvgCurve curve = only_curve(
       "<g transform=\"scale(2)\"><g transform=\"translate(1 1)\">"
@@ -564,7 +564,7 @@ TEST(SvgTransforms, NestedTranslateRotateScale) {
   expect_near_point(svg_space(curve.points[1]), expected);
 }
 
-TEST(SvgTransforms, RotateAboutACentre) {
+TEST(SvgTransforms, RotationsTurnAboutTheirCentre) {
   expect_points(only_curve("<path transform=\"rotate(90 5 5)\" d=\"M10 5 L5 5\"/>"),
                 {{5, 10}, {5, 5}});
   const SvgCurve curve =
@@ -574,7 +574,7 @@ TEST(SvgTransforms, RotateAboutACentre) {
   expect_near_point(svg_space(curve.points[1]), Vec(10, 20));
 }
 
-TEST(SvgTransforms, SkewAndMatrix) {
+TEST(SvgTransforms, SkewAndMatrixTransformsApply) {
   expect_near_point(
       svg_space(only_curve("<path transform=\"skewX(45)\" d=\"M0 0 L2 3\"/>").points[1]),
       Vec(5, 3));
@@ -595,7 +595,7 @@ TEST(SvgTransforms, ListsApplyRightToLeft) {
                 {{12, 2}, {10, 0}});
 }
 
-TEST(SvgTransforms, ParserAndAffineInternals) {
+TEST(SvgTransforms, TheParserAndAffineMapsGiveHandComputedValues) {
   const sdog::svg::Affine t = sdog::svg::parse_transform("scale(2,3)");
   EXPECT_DOUBLE_EQ(t.max_stretch(), 3);
   EXPECT_NEAR(sdog::svg::parse_transform("rotate(17)").max_stretch(), 1, 1e-15);
@@ -608,7 +608,7 @@ TEST(SvgTransforms, ParserAndAffineInternals) {
 // ----------------------------------------------------------------------------------------------
 // Colours and styles
 
-TEST(SvgStyle, ColourFormats) {
+TEST(SvgStyle, ReadsEveryColourFormat) {
   using sdog::svg::parse_color;
   EXPECT_EQ(parse_color("#ABC"), "#aabbcc");
   EXPECT_EQ(parse_color(" #EF4545 "), "#ef4545");
@@ -623,7 +623,7 @@ TEST(SvgStyle, ColourFormats) {
     EXPECT_THROW(parse_color(bad), sdog::svg::ElementError) << bad;
 }
 
-TEST(SvgStyle, StrokeAttribute) {
+TEST(SvgStyle, TheStrokeAttributeSetsTheColour) {
   const SvgCurve curve = only_curve("<path stroke=\"red\" d=\"M0 0 L1 1\"/>");
   EXPECT_EQ(curve.color, "#ff0000");
   EXPECT_FALSE(curve.is_boundary);
@@ -646,7 +646,7 @@ TEST(SvgStyle, LaterRulesWinAmongClasses) {
   EXPECT_EQ(only_curve(sheet + "<path class=\"a\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
 }
 
-TEST(SvgStyle, StylesheetSyntax) {
+TEST(SvgStyle, ReadsStylesheetRules) {
   const std::string sheet =
       "<defs><style type=\"text/css\"><![CDATA[\n"
       "  /* crease colours */\n"
@@ -667,7 +667,7 @@ TEST(SvgStyle, StylesheetSyntax) {
   EXPECT_TRUE(drawing.curves[2].is_boundary);
 }
 
-TEST(SvgStyle, InheritanceFromGroups) {
+TEST(SvgStyle, GroupsPassTheirStyleToChildren) {
   EXPECT_EQ(only_curve("<g stroke=\"#123456\"><g><path d=\"M0 0 L1 1\"/></g></g>").color,
             "#123456");
   EXPECT_EQ(only_curve("<g stroke=\"red\"><g style=\"stroke:blue\"><path d=\"M0 0 L1 1\"/></g></g>")
@@ -683,7 +683,7 @@ TEST(SvgStyle, InheritanceFromGroups) {
       "#00ff00");
 }
 
-TEST(SvgStyle, FillFallback) {
+TEST(SvgStyle, FillGivesTheColourWithoutAStroke) {
   EXPECT_EQ(only_curve("<path fill=\"#00ff00\" d=\"M0 0 L1 1\"/>").color, "#00ff00");
   EXPECT_EQ(only_curve("<path stroke=\"none\" fill=\"blue\" d=\"M0 0 L1 1\"/>").color, "#0000ff");
   EXPECT_EQ(only_curve("<g fill=\"blue\"><path stroke=\"none\" d=\"M0 0 L1 1\"/></g>").color,
@@ -700,7 +700,7 @@ TEST(SvgStyle, FillFallback) {
   EXPECT_FALSE(near_black.is_boundary);
 }
 
-TEST(SvgStyle, DashedDetection) {
+TEST(SvgStyle, DashedStrokesAreDetected) {
   const SvgDrawing drawing = parse(
       "<style>.d{stroke-dasharray:3,3}</style>"
       "<path stroke-dasharray=\"5,3\" d=\"M0 0 L1 1\"/>"
@@ -730,7 +730,7 @@ TEST(SvgStyle, HiddenAndNonRenderedElementsAreSkipped) {
   EXPECT_EQ(drawing.curves[0].id, "kept");
 }
 
-TEST(SvgStyle, DocumentOrderAndLines) {
+TEST(SvgStyle, CurvesKeepDocumentOrderAndSourceLines) {
   const SvgDrawing drawing = parse(
       "<g>\n<line x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\"/>\n</g>\n<path d=\"M0 0 L1 1 M2 2 L3 3\"/>");
   ASSERT_EQ(drawing.curves.size(), 3u);
@@ -744,7 +744,7 @@ TEST(SvgStyle, DocumentOrderAndLines) {
 // ----------------------------------------------------------------------------------------------
 // viewBox
 
-TEST(SvgViewBox, WhitespaceAndCommas) {
+TEST(SvgViewBox, ToleratesWhitespaceAndCommas) {
   const SvgDrawing drawing = parse("", 1e-5, "viewBox=\" 10,20 , 30\n40 \"");
   ASSERT_TRUE(drawing.has_viewbox);
   EXPECT_EQ(drawing.viewbox.xmin, 10);
@@ -753,7 +753,7 @@ TEST(SvgViewBox, WhitespaceAndCommas) {
   EXPECT_EQ(drawing.viewbox.ymax, -20);
 }
 
-TEST(SvgViewBox, WidthHeightFallback) {
+TEST(SvgViewBox, FallsBackOnWidthAndHeight) {
   SvgDrawing drawing = parse("", 1e-5, "width=\"200px\" height=\"100\"");
   ASSERT_TRUE(drawing.has_viewbox);
   EXPECT_EQ(drawing.viewbox.xmin, 0);
@@ -779,7 +779,7 @@ TEST(SvgViewBox, DegenerateIsAcceptedButNonNumericIsNot) {
 // ----------------------------------------------------------------------------------------------
 // Errors
 
-TEST(SvgErrors, MissingFileAndDirectory) {
+TEST(SvgErrors, AMissingFileOrADirectoryIsAnInputError) {
   const std::string missing = ::testing::TempDir() + "/sdog_no_such_file.svg";
   EXPECT_EQ(error_of([&] { sdog::read_svg_file(missing); }),
             missing + ": cannot open file (No such file or directory)");
@@ -789,7 +789,7 @@ TEST(SvgErrors, MissingFileAndDirectory) {
       std::string::npos);
 }
 
-TEST(SvgErrors, ReadsFromFile) {
+TEST(SvgErrors, AFileIsReadFromDisk) {
   const std::string path = ::testing::TempDir() + "/sdog_svg_reader_test.svg";
   {
     std::ofstream out(path);
@@ -802,7 +802,7 @@ TEST(SvgErrors, ReadsFromFile) {
   std::filesystem::remove(path);
 }
 
-TEST(SvgErrors, NotXmlAndWrongRoot) {
+TEST(SvgErrors, NonXmlAndAWrongRootAreRefused) {
   std::string message = error_of([] { sdog::parse_svg("hello <", "a.svg"); });
   EXPECT_EQ(message.rfind("a.svg:1: not an XML file: ", 0), 0u) << message;
   EXPECT_NE(message.find(" at byte "), std::string::npos);
@@ -814,7 +814,7 @@ TEST(SvgErrors, NotXmlAndWrongRoot) {
             "c.svg: the root element is <html>, expected <svg>");
 }
 
-TEST(SvgErrors, PathSyntaxMessage) {
+TEST(SvgErrors, APathSyntaxErrorNamesFileLineElementAndCharacter) {
   const std::string text =
       "<svg viewBox=\"0 0 10 10\">\n<g>\n<path id=\"c3\" d=\"M 0 0 C 10\"/>\n</g></svg>";
   const std::string message = error_of([&] { sdog::parse_svg(text, "pattern.svg"); });
@@ -826,7 +826,7 @@ TEST(SvgErrors, PathSyntaxMessage) {
   EXPECT_EQ(message.find('\n'), std::string::npos);
 }
 
-TEST(SvgErrors, PathSyntaxKinds) {
+TEST(SvgErrors, EveryPathSyntaxErrorSaysWhatWasExpected) {
   struct Case {
     const char* d;
     const char* expected;
@@ -852,7 +852,7 @@ TEST(SvgErrors, PathSyntaxKinds) {
   }
 }
 
-TEST(SvgErrors, NonFiniteCoordinates) {
+TEST(SvgErrors, NonFiniteCoordinatesAreRefused) {
   for (const char* body :
        {"<path d=\"M0 0 L nan 5\"/>", "<path d=\"M0 0 L inf 5\"/>", "<path d=\"M0 0 L 1e999 5\"/>",
         "<path d=\"M0 0 L 5 -Infinity\"/>", "<path d=\"M1e308 0 l1e308 0\"/>",
@@ -869,7 +869,7 @@ TEST(SvgErrors, NonFiniteCoordinates) {
         << body;
 }
 
-TEST(SvgErrors, OtherElementErrors) {
+TEST(SvgErrors, UnsupportedElementsAndBadAttributesAreRefused) {
   EXPECT_EQ(
       parse_error("<g><use id=\"u1\" href=\"#x\"/></g>"),
       "test.svg:2: <use id=\"u1\">: <use> is not supported; ungroup/expand it in your editor");
@@ -887,7 +887,7 @@ TEST(SvgErrors, OtherElementErrors) {
             std::string::npos);
 }
 
-TEST(SvgErrors, TooManyPoints) {
+TEST(SvgErrors, TooManyPointsAreRefused) {
   sdog::SvgReadOptions options;
   options.flatness = 1e-300;
   const std::string message = error_of([&] {
@@ -939,7 +939,7 @@ TEST(SvgFlattenInternals, LastPointIsTheEndPointItself) {
   EXPECT_EQ(points.back(), p3);
 }
 
-TEST(SvgFlattenInternals, DegenerateCubicTerminates) {
+TEST(SvgFlattenInternals, ADegenerateCubicTerminates) {
   std::vector<Vec> points;
   sdog::svg::PointSink sink(points, 100000);
   sdog::svg::flatten_cubic(Vec(1, 1), Vec(1, 1), Vec(1, 1), Vec(1, 1), 1e-9, sink);

@@ -109,7 +109,7 @@ TEST(AdmmMode, ThreeRowsPerStitchingPair) {
   }
 }
 
-TEST(AdmmMode, FollowAngleConstraints) {
+TEST(AdmmMode, TheModesFollowAngleConstraints) {
   for (const char* name : kAdmmModes) test::expect_follows_angles(name, model());
 }
 

@@ -14,7 +14,7 @@ namespace {
 
 class PatchColouring : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(PatchColouring, NeighboursDiffer) {
+TEST_P(PatchColouring, NeighboursGetDifferentColours) {
   const DogModel m = build_dog_model(read_crease_pattern(test::dataset(GetParam())), {21, 21});
   const DogMesh& mesh = m.fine;
   const std::vector<int> colour = colour_patches(mesh);

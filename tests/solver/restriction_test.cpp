@@ -39,7 +39,7 @@ TEST(Restriction, IsExactForAffineMotionsOfTheFlatSheet) {
   }
 }
 
-TEST(Restriction, CopiesLinkVertices) {
+TEST(Restriction, CopiesTheLinkVertices) {
   const DogModel& m = model();
   Dofs fine = Dofs::Random(3 * m.fine.vertex_count());
   const Dofs coarse = restrict_to_coarse(m, fine);

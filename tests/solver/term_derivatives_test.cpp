@@ -186,7 +186,7 @@ void check_second_order(const Term& t, const Dofs& x, int max_blocks = 100) {
   }
 }
 
-TEST(TermDerivatives, Bending) {
+TEST(TermDerivatives, BendingMatchesFiniteDifferencesAndAutodiff) {
   const auto& f = fixture();
   const LinearPointTerm t = make_bending_term(f.model.fine_topology, f.rest);
   for (unsigned seed : {1u, 2u}) check_jacobians(t, perturbed(f.rest, seed, 0.2, 0.5));
@@ -204,7 +204,7 @@ TEST(TermDerivatives, BendingVanishesAtRest) {
   EXPECT_LT(worst, 1e-12);
 }
 
-TEST(TermDerivatives, Isometry) {
+TEST(TermDerivatives, IsometryMatchesFiniteDifferencesAndAutodiff) {
   const auto& f = fixture();
   const IsometryTerm t(f.model.fine_topology, f.rest);
   for (unsigned seed : {3u, 4u}) {
@@ -214,7 +214,7 @@ TEST(TermDerivatives, Isometry) {
   }
 }
 
-TEST(TermDerivatives, PositionsEdgePointsStitchingLinks) {
+TEST(TermDerivatives, LinearTermsMatchFiniteDifferencesAndAutodiff) {
   const auto& f = fixture();
   const DogMesh& mesh = f.model.fine;
   LinearPointTerm positions("positions"), edge_points("edge_points"), stitching("stitching");
@@ -233,7 +233,7 @@ TEST(TermDerivatives, PositionsEdgePointsStitchingLinks) {
   check_jacobians(stitching, x);
 }
 
-TEST(TermDerivatives, EdgeAnglesAtCreasePoints) {
+TEST(TermDerivatives, EdgeAnglesMatchFiniteDifferencesAndAutodiff) {
   const auto& f = fixture();
   EdgeAngleTerm t;
   add_crease_angles(f, t);
@@ -242,7 +242,7 @@ TEST(TermDerivatives, EdgeAnglesAtCreasePoints) {
   check_second_order(t, x);
 }
 
-TEST(TermDerivatives, FoldBias) {
+TEST(TermDerivatives, FoldBiasMatchesFiniteDifferencesAndAutodiff) {
   const auto& f = fixture();
   const auto sites = fold_sites(f.model.fine);
   const FoldBiasTerm t(f.model.fine, sites);
@@ -256,7 +256,7 @@ TEST(TermDerivatives, FoldBias) {
 // A patch's view of a cross-patch term with the other patches frozen (patch_term.h): residuals
 // equal the whole term's at the frozen state, the Jacobian is the inside columns of the whole one,
 // and both derivatives agree with finite differences in the patch's own unknowns.
-TEST(TermDerivatives, SplitPatchBlocksAgainstAFrozenState) {
+TEST(TermDerivatives, SplitPatchBlocksMatchFiniteDifferences) {
   const auto& f = fixture();
   const DogMesh& mesh = f.model.fine;
   EdgeAngleTerm angles;
@@ -292,7 +292,7 @@ TEST(TermDerivatives, SplitPatchBlocksAgainstAFrozenState) {
   EXPECT_GT(split, 0);  // the crease edges' angle blocks reach across patches
 }
 
-TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessian) {
+TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessianMatchFiniteDifferences) {
   const auto& f = fixture();
   const DogConstraints t(f.model.fine_topology);
   EXPECT_EQ(t.row_count(), 3 * f.model.fine_topology.count(VertexClass::Star) +

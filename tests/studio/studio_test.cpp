@@ -10,6 +10,7 @@
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QProcess>
@@ -464,6 +465,23 @@ class StudioTest : public QObject {
     QVERIFY(errors_.isEmpty());
     QVERIFY(!other.open_workspace(dir.filePath("missing.json")));
     QCOMPARE(errors_.size(), 1);
+  }
+
+  // docs/reference/studio.md lists the shortcut of every action of the window, as Qt writes it.
+  void documents_every_shortcut() {
+    QFile file(QString(SDOG_DOCS_DIR) + "/reference/studio.md");
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString page = QString::fromUtf8(file.readAll());
+    int shortcuts = 0;
+    for (const QAction* action : window_->findChildren<QAction*>()) {
+      for (const QKeySequence& key : action->shortcuts()) {
+        const QString text = key.toString(QKeySequence::PortableText);
+        ++shortcuts;
+        QVERIFY2(page.contains("`" + text + "`"),
+                 qPrintable("the shortcut " + text + " of " + action->text() + " is not in docs/reference/studio.md"));
+      }
+    }
+    QVERIFY(shortcuts > 20);
   }
 
   void command_line_screenshot() {

@@ -83,7 +83,7 @@ const OverlayCase& find_case(const std::string& baseline) {
 
 struct OverlayRendering : ::testing::TestWithParam<OverlayCase> {};
 
-TEST_P(OverlayRendering, MatchesBaseline) {
+TEST_P(OverlayRendering, MatchesItsBaselinePicture) {
   const OverlayCase& c = GetParam();
   const std::string path = render(c, "picture.png");
   auto img = test::read_png(path);
@@ -106,7 +106,7 @@ TEST(OverlayRendering, EveryOverlayHasABaselineCase) {
   }
 }
 
-TEST(OverlayRendering, LayerColoursAppear) {
+TEST(OverlayRendering, EveryLayerColourAppearsInThePicture) {
   const std::string types = render(find_case("overlay_vertex_types"), "types.png");
   auto img = test::read_png(types);
   for (VertexType t : {VertexType::Link, VertexType::I, VertexType::X, VertexType::CoarseOnly})
@@ -152,7 +152,7 @@ TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
   EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
 }
 
-TEST(OverlayRendering, TransparentBackground) {
+TEST(OverlayRendering, KeepsTheBackgroundTransparentWhenAsked) {
   auto img = test::read_png(render(find_case("overlay_dog_residual"), "transparent.png", true));
   ASSERT_EQ(img->GetNumberOfScalarComponents(), 4);
   EXPECT_EQ(img->GetScalarComponentAsDouble(2, 2, 0, 3), 0);

@@ -42,8 +42,8 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   renderer_->SetBackground(1, 1, 1);
   render_window_->AddRenderer(renderer_);
   // No multisampling: with software OpenGL (Mesa's llvmpipe, as under xvfb) 8 samples per pixel
-  // took the frame rate at 81x81 from 30 to 20 per second (sdog-studio --measure-fps); exported
-  // pictures have none either. View > Smooth edges turns FXAA on instead.
+  // cost a third of the frame rate (sdog-studio --measure-fps); exported pictures have none either.
+  // View > Smooth edges turns FXAA on instead.
   render_window_->SetMultiSamples(0);
   view_->setRenderWindow(render_window_);
   view_->setToolTip("Left drag: rotate, right drag or wheel: zoom, middle drag: pan; click: pick a vertex; "

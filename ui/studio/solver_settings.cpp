@@ -83,15 +83,26 @@ void SolverSettingsForm::add_choice(QFormLayout* form, const QString& label, int
 SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  add_scenario_group(layout);
+  add_weights_group(layout);
+  add_standard_group(layout);
+  add_patches_group(layout);
+  add_coarse_group(layout);
+  layout->addStretch(1);
+  set_config(config);
+}
 
+void SolverSettingsForm::add_scenario_group(QVBoxLayout* layout) {
   QFormLayout* f = add_group(layout, "Scenario");
   add_int(f, "iterations", [](RunConfig& c) -> int& { return c.iterations; }, 1, 1000000,
           "iterations over which the scenario's targets move");
   add_int(f, "hold", [](RunConfig& c) -> int& { return c.hold; }, 0, 1000000, "iterations with the final targets");
   add_double(f, "fold angle", [](RunConfig& c) -> double& { return c.fold_angle; }, -180, 180, 1,
              "fold scenario: the final dihedral angle at every fold site, degrees");
+}
 
-  f = add_group(layout, "Objective weights");
+void SolverSettingsForm::add_weights_group(QVBoxLayout* layout) {
+  QFormLayout* f = add_group(layout, "Objective weights");
   const QString weight = "weight of the term in the objective (0: off)";
   add_double(f, "bending weight", [](RunConfig& c) -> double& { return c.weights.bending; }, 0, 1e9, 4, weight);
   add_double(f, "isometry weight", [](RunConfig& c) -> double& { return c.weights.isometry; }, 0, 1e9, 4,
@@ -101,8 +112,10 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
   add_double(f, "edge points weight", [](RunConfig& c) -> double& { return c.weights.edge_points; }, 0, 1e9, 4, weight);
   add_double(f, "angles weight", [](RunConfig& c) -> double& { return c.weights.angles; }, 0, 1e9, 4, weight);
   add_double(f, "fold bias weight", [](RunConfig& c) -> double& { return c.weights.fold_bias; }, 0, 1e9, 4, weight);
+}
 
-  f = add_group(layout, "Standard mode (SQP)");
+void SolverSettingsForm::add_standard_group(QVBoxLayout* layout) {
+  QFormLayout* f = add_group(layout, "Standard mode (SQP)");
   add_double(f, "KKT tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.kkt_tolerance; }, 0, 1, 9,
              "optimality wanted of a step");
   add_double(f, "constraint tolerance", [](RunConfig& c) -> double& { return c.standard.sqp.constraint_tolerance; }, 0,
@@ -112,8 +125,10 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
              "largest DOG constraint residual wanted after the last iteration");
   add_int(f, "SQP steps per iteration", [](RunConfig& c) -> int& { return c.standard.sqp.max_steps; }, 1, 100,
           "optimality steps per iteration");
+}
 
-  f = add_group(layout, "Patch modes (subsolvers, ADMM)");
+void SolverSettingsForm::add_patches_group(QVBoxLayout* layout) {
+  QFormLayout* f = add_group(layout, "Patch modes (subsolvers, ADMM)");
   add_choice(
       f, "patch backend", [](const RunConfig& c) { return static_cast<int>(c.subsolvers.backend); },
       [](RunConfig& c, int i) { c.subsolvers.backend = static_cast<PatchBackend>(i); }, patch_backend_names(),
@@ -135,8 +150,10 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
   static_cast<QDoubleSpinBox*>(fields_.back().widget)->setSpecialValueText("default: 0.001 (patches - 1)");
   add_int(f, "ADMM rounds per iteration", [](RunConfig& c) -> int& { return c.admm.inner; }, 1, 1000,
           "ADMM rounds (patch solves and multiplier updates) per solver iteration");
+}
 
-  f = add_group(layout, "Coarse modes (coarse, twolevel)");
+void SolverSettingsForm::add_coarse_group(QVBoxLayout* layout) {
+  QFormLayout* f = add_group(layout, "Coarse modes (coarse, twolevel)");
   add_double(f, "coarse link weight", [](RunConfig& c) -> double& { return c.coarse.link_weight; }, 0, 1e9, 6,
              "coarse mode: pull between fine link vertices and their coarse twins (the thesis's ftc_weight)");
   add_bool(f, "fine-to-coarse links", [](RunConfig& c) -> bool& { return c.coarse.fine_to_coarse; },
@@ -153,8 +170,6 @@ SolverSettingsForm::SolverSettingsForm(const RunConfig& config, QWidget* parent)
   add_bool(f, "twolevel concurrent coarse step", [](RunConfig& c) -> bool& { return c.twolevel.concurrent_coarse; },
            "twolevel mode: the next iteration's coarse step runs beside this one's fine round (same results; "
            "off: one after the other)");
-  layout->addStretch(1);
-  set_config(config);
 }
 
 void SolverSettingsForm::set_config(const RunConfig& config) {

@@ -4,6 +4,7 @@
 // ADMM, coarse and two-level modes, edited as a RunConfig (the rest of the configuration, such as
 // the listed constraints, is kept as it was).
 #include <QString>
+#include <QVBoxLayout>
 #include <QWidget>
 #include <functional>
 #include <vector>
@@ -46,6 +47,11 @@ class SolverSettingsForm : public QWidget {
   void add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&), const QString& tip);
   void add_choice(QFormLayout* form, const QString& label, int (*get)(const RunConfig&), void (*set)(RunConfig&, int),
                   const std::vector<std::string>& names, const QString& tip);
+  void add_scenario_group(QVBoxLayout* layout);
+  void add_weights_group(QVBoxLayout* layout);
+  void add_standard_group(QVBoxLayout* layout);
+  void add_patches_group(QVBoxLayout* layout);
+  void add_coarse_group(QVBoxLayout* layout);
   RunConfig base_;
   std::vector<Field> fields_;
 };

@@ -266,9 +266,17 @@ double Scene::coarse_offset() const {
 }
 
 void Scene::refresh() {
-  Overlays& o = *overlays_;
   const bool flat = options_.view == View::Flat;
   const Eigen::MatrixX3d& fine_x = flat ? model_.fine.V : state_.fine;
+  refresh_fine(fine_x);
+  if (coarse_) refresh_coarse(fine_x, flat || state_.coarse.rows() == 0 ? model_.coarse.V : state_.coarse);
+  refresh_stitch_gaps();
+  refresh_handles(fine_x, flat);
+  apply_layers();
+}
+
+void Scene::refresh_fine(const Eigen::MatrixX3d& fine_x) {
+  Overlays& o = *overlays_;
   fine_->set_positions(fine_x);
   vtkPointData* pd = fine_->grid()->GetPointData();
   set_array(pd, "dog_residual", state_.fields.dog_residual);
@@ -279,25 +287,26 @@ void Scene::refresh() {
   o.bending_lut->SetTableRange(bending[0], bending[1]);
   const auto strain = robust_range(state_.fields.edge_strain);
   o.strain_lut->SetTableRange(strain[0], strain[1]);
+}
 
-  const Eigen::MatrixX3d* coarse_x = nullptr;
-  if (coarse_) {
-    coarse_x = flat || state_.coarse.rows() == 0 ? &model_.coarse.V : &state_.coarse;
-    coarse_->set_positions(*coarse_x);
-
-    const double dx = coarse_offset();
-    vtkPoints* lp = o.links->GetPoints();
-    vtkIdType next = 0;
-    for (int v = 0; v < model_.fine.vertex_count(); ++v) {
-      const int c = model_.map.fine_to_coarse[v];
-      if (c < 0) continue;
-      lp->SetPoint(next++, fine_x(v, 0), fine_x(v, 1), fine_x(v, 2));
-      lp->SetPoint(next++, (*coarse_x)(c, 0) + dx, (*coarse_x)(c, 1), (*coarse_x)(c, 2));
-    }
-    lp->Modified();
+// The coarse mesh and the links from every fine link vertex to its coarse twin.
+void Scene::refresh_coarse(const Eigen::MatrixX3d& fine_x, const Eigen::MatrixX3d& coarse_x) {
+  coarse_->set_positions(coarse_x);
+  const double dx = coarse_offset();
+  vtkPoints* lp = overlays_->links->GetPoints();
+  vtkIdType next = 0;
+  for (int v = 0; v < model_.fine.vertex_count(); ++v) {
+    const int c = model_.map.fine_to_coarse[v];
+    if (c < 0) continue;
+    lp->SetPoint(next++, fine_x(v, 0), fine_x(v, 1), fine_x(v, 2));
+    lp->SetPoint(next++, coarse_x(c, 0) + dx, coarse_x(c, 1), coarse_x(c, 2));
   }
+  lp->Modified();
+}
 
-  // Stitch gaps: a sphere at each crease point, radius 0.15 to 0.6 fine grid spacings with the gap.
+// Stitch gaps: a sphere at each crease point, radius 0.15 to 0.6 fine grid spacings with the gap.
+void Scene::refresh_stitch_gaps() {
+  Overlays& o = *overlays_;
   const auto& creases = fine_->crease_points();
   const auto gap_range = zero_based_range(state_.fields.stitch_gap);
   o.gap_lut->SetTableRange(gap_range[0], gap_range[1]);
@@ -311,8 +320,12 @@ void Scene::refresh() {
   gp->Modified();
   set_array(o.gaps->GetPointData(), "stitch_gap", state_.fields.stitch_gap);
   set_array(o.gaps->GetPointData(), "radius", radius);
+}
 
-  // Handles (targets and residual lines only where positions are current: not in the flat view).
+// Handles (targets and residual lines only where positions are current: not in the flat view) and
+// angle-constraint sites.
+void Scene::refresh_handles(const Eigen::MatrixX3d& fine_x, bool flat) {
+  Overlays& o = *overlays_;
   vtkPoints* hp = o.handle_lines->GetPoints();
   const auto& handles = state_.constraints.handles;
   hp->SetNumberOfPoints(static_cast<vtkIdType>(2 * handles.size()));
@@ -332,6 +345,7 @@ void Scene::refresh() {
   o.handle_lines->SetLines(lines);
   o.handle_points->SetVerts(handle_verts);
   o.target_points->SetVerts(target_verts);
+  const auto& creases = fine_->crease_points();
   vtkPoints* ap = o.angle_sites->GetPoints();
   const auto& sites = state_.constraints.angle_sites;
   ap->SetNumberOfPoints(static_cast<vtkIdType>(sites.size()));
@@ -343,7 +357,6 @@ void Scene::refresh() {
   }
   ap->Modified();
   o.angle_sites->SetVerts(site_verts);
-  apply_layers();
 }
 
 void Scene::set_layer(Layer layer, bool on) {

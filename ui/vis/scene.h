@@ -97,6 +97,10 @@ class Scene {
   void apply_layers();
   void apply_view();
   void refresh();
+  void refresh_fine(const Eigen::MatrixX3d& fine_x);
+  void refresh_coarse(const Eigen::MatrixX3d& fine_x, const Eigen::MatrixX3d& coarse_x);
+  void refresh_stitch_gaps();
+  void refresh_handles(const Eigen::MatrixX3d& fine_x, bool flat);
   double coarse_offset() const;
   const DogModel& model_;
   vtkRenderer* renderer_;

@@ -2,6 +2,7 @@
 // A patch stepped by Ceres with an augmented Lagrangian (ceres_patch_solver.h), behind the
 // PatchStepper interface: the patch modes choose it without including Ceres.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "geometry/dog_mesh.h"
@@ -11,6 +12,9 @@
 #include "solver/terms/weighted_term.h"
 
 namespace sdog {
+
+/// The version of the Ceres the program was built with.
+std::string ceres_version();
 
 /// The terms, `dog` and the coupling's frozen state must outlive the stepper.
 std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,

@@ -1,5 +1,7 @@
 #include "solver/patches/ceres/ceres_patch_solver.h"
 
+#include <ceres/version.h>
+
 #include "solver/patches/ceres/ceres_patch.h"
 
 #include "base/stopwatch.h"
@@ -150,6 +152,8 @@ PatchReport CeresPatchSolver::solve(Dofs& x) {
   report.ms = ms_between(t0, Clock::now());
   return report;
 }
+
+std::string ceres_version() { return CERES_VERSION_STRING; }
 
 std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
                                                const Term& dog, const CeresPatchOptions& options,

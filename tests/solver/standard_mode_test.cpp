@@ -1,6 +1,5 @@
-// The standard SQP solver on whole runs: the constraint bars of the thesis protocol after every
-// iteration, the fold direction, failure handling and determinism. The thesis cases need
-// ../shared and skip without it.
+// The standard SQP solver on whole runs: the constraint bars of a run after every iteration, the
+// fold direction, failure handling and determinism. (The eight thesis runs: tests/slow/.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,7 +38,7 @@ void expect_constraint_bars(const RunResult& r, int iterations) {
   EXPECT_TRUE(r.reports.back().step.folded);
 }
 
-TEST(StandardSolver, CornersProtocolOnAProjectPattern) {
+TEST(StandardMode, CornersProtocolOnAProjectPattern) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.iterations = 80;
@@ -60,7 +59,7 @@ TEST(StandardSolver, CornersProtocolOnAProjectPattern) {
 // When the polish of the last iteration stops short of the final tolerance, SqpSolver::project
 // finishes it. Here the polish is starved (no exact-Hessian
 // steps, two restoration steps) so that it must stop short on a small case.
-TEST(StandardSolver, AShortPolishIsFinishedByTheProjection) {
+TEST(StandardMode, AShortPolishIsFinishedByTheProjection) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   RunConfig config = test::short_run(25, 5);  // the last iterations are held: comparable objectives
   config.standard.sqp.polish_steps = 0;
@@ -77,7 +76,7 @@ TEST(StandardSolver, AShortPolishIsFinishedByTheProjection) {
   EXPECT_NEAR(last.diagnostics.objective, r.reports[28].diagnostics.objective, 0.02 * r.reports[28].diagnostics.objective);
 }
 
-TEST(StandardSolver, FoldScenarioReachesTheDihedralAngle) {
+TEST(StandardMode, FoldScenarioReachesTheDihedralAngle) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
@@ -99,7 +98,7 @@ TEST(StandardSolver, FoldScenarioReachesTheDihedralAngle) {
   EXPECT_GT(zmax - zmin, 2.0);
 }
 
-TEST(StandardSolver, MountainIsTheMirrorImageOfValley) {
+TEST(StandardMode, MountainIsTheMirrorImageOfValley) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
@@ -122,7 +121,7 @@ TEST(StandardSolver, MountainIsTheMirrorImageOfValley) {
   EXPECT_LT(worst, 1e-8);
 }
 
-TEST(StandardSolver, NonFiniteTargetsFailAndRollBack) {
+TEST(StandardMode, NonFiniteTargetsFailAndRollBack) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   Scenario scenario = make_scenario(config, model.fine);
@@ -142,7 +141,7 @@ TEST(StandardSolver, NonFiniteTargetsFailAndRollBack) {
   EXPECT_TRUE(x == x0) << "the failed iteration was not rolled back";
 }
 
-TEST(StandardSolver, RepeatedRunsAreIdentical) {
+TEST(StandardMode, RepeatedRunsAreIdentical) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {15, 15});
   RunConfig config;
   config.iterations = 20;
@@ -154,40 +153,6 @@ TEST(StandardSolver, RepeatedRunsAreIdentical) {
   for (size_t k = 0; k < a.reports.size(); ++k)
     EXPECT_EQ(a.reports[k].diagnostics.objective, b.reports[k].diagnostics.objective) << k;
 }
-
-// ---- The eight thesis runs (resolutions 1 and 2), 300 iterations each.
-
-struct ThesisCase {
-  std::string pattern;
-  int nx, ny;
-  double thesis_objective;  // ../shared/reference/thesis-results.md, Figure 6.2, standard
-  friend void PrintTo(const ThesisCase& c, std::ostream* os) { *os << c.pattern << " " << c.nx << "x" << c.ny; }
-};
-
-class ThesisProtocol : public ::testing::TestWithParam<ThesisCase> {};
-
-TEST_P(ThesisProtocol, MeetsTheConstraintBarsAndTheThesisObjective) {
-  SDOG_REQUIRE_SHARED();
-  const ThesisCase& c = GetParam();
-  const DogModel model =
-      build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg"), {c.nx, c.ny});
-  const RunResult r = run(model, RunConfig{});
-  expect_constraint_bars(r, 300);
-  const double objective = r.reports.back().diagnostics.objective;
-  // At most 15% above the thesis (a lower objective is a better local minimum); far below would
-  // mean a different problem.
-  EXPECT_LT(objective, 1.15 * c.thesis_objective);
-  EXPECT_GT(objective, 0.7 * c.thesis_objective);
-  RecordProperty("final_objective", std::to_string(objective));
-}
-
-INSTANTIATE_TEST_SUITE_P(Cases, ThesisProtocol,
-                         ::testing::Values(ThesisCase{"1_curve", 31, 21, 2.94}, ThesisCase{"1_curve", 43, 31, 3.00},
-                                           ThesisCase{"4_corners", 21, 21, 1.96},
-                                           ThesisCase{"4_corners", 41, 41, 2.53}, ThesisCase{"valley", 21, 21, 1.10},
-                                           ThesisCase{"valley", 41, 41, 1.42},
-                                           ThesisCase{"parallel_curves_4", 27, 45, 3.75},
-                                           ThesisCase{"parallel_curves_4", 39, 65, 4.50}));
 
 }  // namespace
 }  // namespace sdog

@@ -1,0 +1,66 @@
+// sdog bench as a user runs it: the table as CSV, and an unwritable CSV refused before the work.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/app/csv.h"
+#include "tests/app/run_sdog.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+using test::Csv;
+using test::read_csv;
+
+const std::string kPattern = test::dataset("one_curve.svg");
+
+TEST(BenchCommand, UnwritableCsvFailsBeforeTheWork) {
+  const std::string dir = test::temp_dir("bench_unwritable");
+  test::write_file(dir, "file", "x");
+  auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv " + dir +
+                          "/file/bench.csv");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/file"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("15x11"), std::string::npos) << "benchmarked before failing:\n" << r.out;
+  // A directory that passes access() for root but takes no files (/proc): refused before the work too.
+  r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv /proc/bench.csv");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("/proc: the output directory is not writable"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("15x11"), std::string::npos) << "benchmarked before failing:\n" << r.out;
+}
+
+TEST(BenchCommand, WritesTheTableAsCsv) {
+  const std::string dir = test::temp_dir("bench");
+  const auto r = test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --modes standard,subsolvers --iters 12 --repeat 2 --csv " +
+                                dir + "/bench.csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("median_ms"), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir + "/bench.csv");
+  for (const char* name : {"pattern", "res", "mode", "vertices", "dof", "median_ms", "ms_per_dof", "sqp_steps", "factor_ms",
+                           "final_objective", "dog_max"})
+    EXPECT_GE(csv.column(name), 0) << name;
+  ASSERT_EQ(csv.rows.size(), 2u);
+  const auto& row = csv.rows[0];
+  // The speedups over the standard run: 1 for the standard itself; for the other mode the ratio of
+  // the medians (4 digits each in the CSV).
+  EXPECT_EQ(csv.rows[1][csv.column("mode")], "subsolvers");
+  EXPECT_EQ(std::stod(row[csv.column("speedup")]), 1.0);
+  EXPECT_EQ(std::stod(row[csv.column("speedup_paired")]), 1.0);
+  const double speedup = std::stod(row[csv.column("median_ms")]) / std::stod(csv.rows[1][csv.column("median_ms")]);
+  EXPECT_NEAR(std::stod(csv.rows[1][csv.column("speedup")]), speedup, 2e-3 * speedup);
+  EXPECT_GT(std::stod(csv.rows[1][csv.column("speedup_paired")]), 0);
+  EXPECT_EQ(csv.rows[1][csv.column("repeats")], "2");
+  EXPECT_EQ(row[csv.column("res")], "15x11");
+  EXPECT_EQ(row[csv.column("mode")], "standard");
+  const int vertices = std::stoi(row[csv.column("vertices")]);
+  EXPECT_EQ(std::stoi(row[csv.column("dof")]), 3 * vertices);
+  EXPECT_GT(std::stod(row[csv.column("median_ms")]), 0);
+  EXPECT_NEAR(std::stod(row[csv.column("ms_per_dof")]), std::stod(row[csv.column("median_ms")]) / (3 * vertices),
+              1e-6 * std::stod(row[csv.column("median_ms")]));
+  EXPECT_LT(std::stod(row[csv.column("dog_max")]), 1e-4);
+}
+
+}  // namespace
+}  // namespace sdog

@@ -1,0 +1,68 @@
+// The reference pages say what the programs do: their generated tables match the option
+// definitions (`make reference-docs` renews them), and the output-files page names every column
+// the programs write.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/reference.h"
+#include "solver/config/reference.h"
+#include "solver/experiments/tables.h"
+#include "solver/run/run_log.h"
+
+namespace sdog {
+namespace {
+
+const char* const kMarker = "<!-- generated tables below: make reference-docs -->\n";
+
+std::string page(const std::string& name) {
+  std::ifstream in(std::string(SDOG_DOCS_DIR) + "/reference/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The part of a reference page after the marker line.
+std::string generated_part(const std::string& name) {
+  const std::string text = page(name);
+  const size_t at = text.find(kMarker);
+  if (at == std::string::npos) return "(no marker line in " + name + ")";
+  return text.substr(at + std::string(kMarker).size());
+}
+
+TEST(ReferenceDocs, TheCommandLineTablesMatchTheOptionDefinitions) {
+  EXPECT_EQ(generated_part("command-line.md"), cli::command_line_reference())
+      << "docs/reference/command-line.md is out of date: run `make reference-docs`";
+}
+
+TEST(ReferenceDocs, TheConfigurationTablesMatchTheOptionTables) {
+  EXPECT_EQ(generated_part("configuration.md"), configuration_reference())
+      << "docs/reference/configuration.md is out of date: run `make reference-docs`";
+}
+
+TEST(ReferenceDocs, TheGeneratedTablesListEveryOptionAndKey) {
+  const std::string cli = cli::command_line_reference();
+  for (const char* option : {"`--res`", "`--mode`", "`--switch`", "`--thesis-grid`", "`--plot-size`",
+                             "`--screenshot`", "`--measure-fps`", "`--keep-failed`"})
+    EXPECT_NE(cli.find(option), std::string::npos) << option;
+  const std::string config = configuration_reference();
+  for (const char* key : {"`kkt_tolerance`", "`rho_max`", "`polish_epsilon`", "`coarse_every`", "`p`",
+                          "`backend`", "`fold_bias`", "`angle`"})
+    EXPECT_NE(config.find(key), std::string::npos) << key;
+  EXPECT_NE(config.find("| `rho_max` | number > 0 | `1e+12` |"), std::string::npos);
+}
+
+TEST(ReferenceDocs, TheOutputFilesPageNamesEveryColumn) {
+  const std::string text = page("output-files.md");
+  std::vector<std::vector<std::string>> tables = {run_csv_columns(), patches_csv_columns(), bench_columns(),
+                                                  compare_columns(), series_columns()};
+  for (const auto& columns : tables)
+    for (const std::string& c : columns)
+      EXPECT_NE(text.find("| `" + c + "` |"), std::string::npos) << "column " << c << " is not described";
+}
+
+}  // namespace
+}  // namespace sdog
