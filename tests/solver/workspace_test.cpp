@@ -8,21 +8,14 @@
 #include "geometry/dog_model.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
+#include "tests/solver/session_fixture.h"
 #include "tests/test_support.h"
 
 namespace sdog {
 namespace {
 
-const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
-  return m;
-}
-
-RunConfig interactive() {
-  RunConfig c;
-  c.scenario = ScenarioKind::kNone;  // only the user's constraints
-  return c;
-}
+const DogModel& model() { return test::session_model(); }
+using test::interactive;
 
 TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   RunConfig config = interactive();
