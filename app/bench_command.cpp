@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/threads.h"
 #include "base/atomic_output.h"
@@ -42,6 +43,7 @@ struct BenchArgs {
   int repeat = 3;
   int threads = 0;
   std::string csv;
+  std::string preset;
 };
 
 void print_row(const CaseResult& r) {
@@ -86,6 +88,9 @@ void bench(const BenchArgs& a) {
     csv_name = path.filename().string();
   }
   RunConfig config;
+  // The thesis grid reproduces the thesis: its preset unless another is asked for.
+  const std::string preset = !a.preset.empty() ? a.preset : a.thesis_grid ? "thesis" : "";
+  if (!preset.empty()) apply_preset(config.preset = parse_preset(preset, "--preset: "), config);
   config.iterations = a.iterations;
   config.hold = a.iterations / 5;
   std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s %7s\n", "pattern", "res", "mode", "verts", "dof",
@@ -124,7 +129,10 @@ void register_bench_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
   cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
-  cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
+  cmd->add_flag("--thesis-grid", a->thesis_grid,
+                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset unless --preset "
+                "says otherwise");
+  add_preset_option(*cmd, a->preset);
   cmd->add_option("--patterns-dir,--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
   cmd->add_option("--iters", a->iterations, "moving iterations of the protocol (hold: a fifth of that)")

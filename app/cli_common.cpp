@@ -5,8 +5,16 @@
 #include <cmath>
 
 #include "base/errors.h"
+#include "solver/run/run_config.h"
 
 namespace sdog::cli {
+
+void add_preset_option(CLI::App& cmd, std::string& preset) {
+  cmd.add_option("--preset", preset,
+                 "solver settings to start from, before --config and the other options: default (exact "
+                 "stitching) or thesis (the thesis's solver, for its numbers)")
+      ->check(CLI::IsMember(preset_names()));
+}
 
 void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
   cmd.add_option("PATTERN", o.pattern,

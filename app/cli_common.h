@@ -20,6 +20,9 @@ struct PatternOptions {
 /// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand.
 void add_pattern_options(CLI::App& cmd, PatternOptions& o);
 
+/// Adds --preset NAME (the solver settings a run starts from: default or thesis).
+void add_preset_option(CLI::App& cmd, std::string& preset);
+
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
 DogModel build_model(const PatternOptions& o);
 

@@ -37,6 +37,7 @@ struct CompareArgs {
   int hold = 50;
   std::string scenario = "corners";
   std::string config;
+  std::string preset;
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr;
   int threads = 0;
   int repeat = 1;
@@ -111,6 +112,9 @@ nlohmann::json row_json(const CaseResult& r) {
 
 RunConfig compare_config(const CompareArgs& a) {
   RunConfig config;
+  // The thesis grid reproduces the thesis: its preset unless another is asked for.
+  const std::string preset = !a.preset.empty() ? a.preset : a.thesis_grid ? "thesis" : "";
+  if (!preset.empty()) apply_preset(config.preset = parse_preset(preset, "--preset: "), config);
   if (!a.config.empty()) read_run_config(a.config, config);
   if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
   if (a.iterations_opt->count() || a.config.empty()) config.iterations = a.iterations;
@@ -232,7 +236,10 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
   cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_modes() + ")")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_flag("--thesis-grid", a->thesis_grid, "the 16 cases of the thesis (4 patterns x 4 resolutions)");
+  cmd->add_flag("--thesis-grid", a->thesis_grid,
+                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset unless --preset "
+                "says otherwise");
+  add_preset_option(*cmd, a->preset);
   cmd->add_option("--patterns-dir,--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
   a->iterations_opt = cmd->add_option("--iters", a->iterations, "iterations over which the targets move")

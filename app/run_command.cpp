@@ -30,6 +30,7 @@ struct RunArgs {
   std::vector<std::string> switches;  // "ITER:MODE"
   std::string scenario = "corners";
   std::string config;
+  std::string preset;
   std::string out;
   double angle = 90;
   int iterations = 250;
@@ -85,6 +86,7 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
 
 RunConfig run_config(const RunArgs& a) {
   RunConfig config;
+  if (!a.preset.empty()) apply_preset(config.preset = parse_preset(a.preset, "--preset: "), config);
   if (!a.config.empty()) read_run_config(a.config, config);
   if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
   if (a.iterations_opt->count()) config.iterations = a.iterations;
@@ -234,6 +236,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--config", a->config,
                   "JSON file with constraints, iteration counts, weights and solver options (command-line "
                   "options win); see docs/reference/configuration.md");
+  add_preset_option(*cmd, a->preset);
   cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))

@@ -80,6 +80,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   const Field root(j, "$", source);
   root.expect_object(top_level_keys());
   read_options(root, run_option_table(), c);
+  if (root.has("preset")) apply_preset(c.preset, c);
   for_each_option_section(c, [&](const char* key, auto& options, const auto& table) {
     if (!root.has(key)) return;
     const Field section = root[key];

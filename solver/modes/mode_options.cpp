@@ -4,6 +4,7 @@
 
 namespace sdog {
 
+std::vector<std::string> stitching_names() { return {"exact", "soft"}; }
 std::vector<std::string> patch_backend_names() { return {"sqp", "ceres"}; }
 std::vector<std::string> patch_sweep_names() { return {"jacobi", "colours"}; }
 
@@ -16,6 +17,9 @@ const OptionTable<StandardOptions>& standard_option_table() {
                          "an iteration that leaves a crease unfolded is solved again with a raised fold bias"),
           real_option("max_fold_bias", &O::max_fold_bias, Bounds::positive(),
                       "the fold-bias weight is raised at most to this"),
+          choice_option("stitching", &O::stitching, stitching_names(),
+                        "exact: the copies of a crease point coincide as hard constraints; soft: only the "
+                        "stitching term pulls them together (the thesis)"),
       });
   return table;
 }

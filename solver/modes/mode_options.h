@@ -9,11 +9,16 @@
 
 namespace sdog {
 
+/// How the two copies of a crease point are held together: as hard constraints beside the DOG
+/// constraints (kExact) or by the soft stitching term alone (kSoft, the thesis).
+enum class Stitching { kExact, kSoft };
+
 /// The standard mode (standard_mode.h) and the standard iterations of the other modes.
 struct StandardOptions {
   SqpOptions sqp;
   bool folding = true;          ///< fold check and fold-bias escalation (standard_mode.h)
   double max_fold_bias = 1e14;  ///< the escalation stops at this weight
+  Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
   /// step of the two-resolution modes, which may run beside the patch solves, uses 1
   /// (coarse_level.h).
@@ -92,6 +97,7 @@ struct ModeOptions {
   TwoLevelOptions twolevel;
 };
 
+std::vector<std::string> stitching_names();
 std::vector<std::string> patch_backend_names();
 std::vector<std::string> patch_sweep_names();
 

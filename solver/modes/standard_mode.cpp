@@ -14,12 +14,16 @@ constexpr double kFoldBiasGrowth = 10;
 }  // namespace
 
 StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
-    : problem_(problem), scenario_(scenario), options_(options), base_fold_bias_(problem.weights.fold_bias) {
+    : problem_(problem),
+      scenario_(scenario),
+      options_(options),
+      constraints_(problem, options.stitching),
+      base_fold_bias_(problem.weights.fold_bias) {
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;
-  sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(), problem_.dog,
-                                     options_.sqp);
+  sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(),
+                                     constraints_.term(), options_.sqp);
 }
 
 StandardMode::~StandardMode() = default;
@@ -45,6 +49,16 @@ StepReport StandardMode::step(Dofs& x, bool last) {
   // Every iteration: a patch mode before may have lowered it.
   set_blas_threads(options_.blas_threads > 0 ? options_.blas_threads : default_blas_threads());
   StepReport report;
+  if (restore_first_) {
+    restore_first_ = false;
+    const SqpReport restored = sqp_->restore_constraints(x);
+    report.work += restored.work;
+    if (restored.failed) {
+      report.failed = true;
+      report.failure = restored.failure;
+      return report;
+    }
+  }
   double constraint_max = 0;  // of the last attempt
   if (!options_.folding) {
     solve(x, last, report, constraint_max);
@@ -105,6 +119,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
 
 void StandardMode::start_from(const Dofs&) {
   sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
+  restore_first_ = options_.stitching == Stitching::kExact;
   if (options_.folding) set_fold_bias(base_fold_bias_);
 }
 

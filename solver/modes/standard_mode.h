@@ -6,10 +6,15 @@
 // iteration keeps its attempt with the fewest unfolded sites (among those meeting the constraints as
 // well as the first attempt) and the base weight. Off for scenarios that unfold
 // (Scenario::keeps_folds false).
+//
+// Exact stitching (the default): the stitching of the crease points is a hard constraint beside
+// the DOG constraints (hard_constraints.h), so the two copies of every crease point coincide to
+// the constraint tolerance after every iteration.
 #include <memory>
 
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
+#include "solver/modes/hard_constraints.h"
 #include "solver/problem/dog_problem.h"
 
 namespace sdog {
@@ -23,7 +28,8 @@ class StandardMode : public Mode {
   ~StandardMode() override;
   ModeKind kind() const override { return ModeKind::kStandard; }
   StepReport iterate(const IterationContext& ctx, Dofs& x) override;
-  /// Zero multipliers and the base fold bias: a fresh start from x.
+  /// Zero multipliers and the base fold bias: a fresh start from x. With exact stitching the next
+  /// iteration first restores the constraints (a state from a patch mode has gaps at the creases).
   void start_from(const Dofs& x) override;
 
   /// Sets the targets of scenario time t.
@@ -44,8 +50,10 @@ class StandardMode : public Mode {
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions options_;
+  HardConstraints constraints_;
   std::unique_ptr<SqpSolver> sqp_;
   double base_fold_bias_;
+  bool restore_first_ = false;
 };
 
 }  // namespace sdog

@@ -54,7 +54,8 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     }
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
-    const IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
+    IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
+    report.elapsed_ms = ms_since(start);
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {

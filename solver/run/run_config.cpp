@@ -21,9 +21,28 @@ ScenarioKind parse_scenario(const std::string& name, const std::string& what) {
   return static_cast<ScenarioKind>(it - names.begin());
 }
 
+std::vector<std::string> preset_names() { return {"default", "thesis"}; }
+
+Preset parse_preset(const std::string& name, const std::string& what) {
+  const auto names = preset_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw UsageError(what + "unknown preset '" + name + "' (known: " + join(names, ", ") + ")");
+  return static_cast<Preset>(it - names.begin());
+}
+
+void apply_preset(Preset preset, ModeOptions& o) {
+  const StandardOptions defaults;
+  const bool thesis = preset == Preset::kThesis;
+  o.standard.stitching = thesis ? Stitching::kSoft : defaults.stitching;
+  o.standard.sqp.polish_factorizations = thesis ? 0 : defaults.sqp.polish_factorizations;
+}
+
 const OptionTable<RunConfig>& run_option_table() {
   using C = RunConfig;
   static const OptionTable<C> table = {
+      choice_option("preset", &C::preset, preset_names(),
+                    "default: exact stitching; thesis: the thesis's solver (soft stitching, no factorisation "
+                    "budget for the polish), for its numbers; applied before the other keys (also --preset)"),
       choice_option("scenario", &C::scenario, scenario_names(),
                     "corners: the thesis protocol; fold: every crease folds from flat to angle; none: only the "
                     "listed constraints; flatten: a folded sheet is left to unfold (also --scenario)"),

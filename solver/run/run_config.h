@@ -22,6 +22,16 @@ const char* scenario_name(ScenarioKind scenario);
 /// Throws UsageError "`what`unknown scenario 'name' (known: ...)" unless `name` is a scenario.
 ScenarioKind parse_scenario(const std::string& name, const std::string& what = "");
 
+/// Named sets of solver settings. kDefault: exact stitching, a polish with a factorisation
+/// budget. kThesis: the thesis's solver, for reproducing its numbers: soft stitching (weight 10), a
+/// polish without a budget.
+enum class Preset { kDefault, kThesis };
+std::vector<std::string> preset_names();
+/// Throws UsageError "`what`unknown preset 'name' (known: ...)" unless `name` is a preset.
+Preset parse_preset(const std::string& name, const std::string& what = "");
+/// Sets the options a preset decides (the others keep their values).
+void apply_preset(Preset preset, ModeOptions& options);
+
 /// A position constraint before it is resolved against a mesh.
 struct PositionSpec {
   std::string path;                      ///< source and JSON path, for messages
@@ -49,6 +59,7 @@ struct ModeSwitch {
 
 /// The run's configuration: the options of every mode (ModeOptions) and what the run asks for.
 struct RunConfig : ModeOptions {
+  Preset preset = Preset::kDefault;  ///< the preset the solver options started from
   ScenarioKind scenario = ScenarioKind::kCorners;  ///< kNone: only the listed constraints
   int iterations = 250;                            ///< iterations over which targets move
   int hold = 50;                                   ///< iterations with the final targets

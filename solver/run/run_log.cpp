@@ -49,6 +49,7 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"factorizations", [](const R& r) { return count(r.step.work.factorizations); }},
       {"restoration_steps", [](const R& r) { return count(r.step.work.restoration_steps); }},
       {"mode", [](const R& r) { return r.mode; }},
+      {"elapsed_ms", [](const R& r) { return number(r.elapsed_ms); }},
   };
   return columns;
 }

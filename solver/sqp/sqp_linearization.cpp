@@ -198,6 +198,7 @@ bool SqpSolver::refactorize(const Dofs& x, Linearization& lin, double epsilon, b
   for (int attempt = 0; attempt < kFactorizationAttempts; ++attempt) {
     if (factor_->factorize(m_.K.lower(), delta_)) {
       ++report.work.factorizations;
+      ++factorizations_;
       report.work.factor_ms += ms_since(t0);
       factored_ = true;
       return true;

@@ -26,6 +26,8 @@ const OptionTable<SqpOptions>& sqp_option_table() {
                      "restoration steps per iteration at most (twice that in the last)"),
       integer_option("polish_steps", &S::polish_steps, Bounds::at_least(0),
                      "exact-Hessian steps of the last iteration's polish at most"),
+      integer_option("polish_factorizations", &S::polish_factorizations, Bounds::at_least(0),
+                     "factorisations of the last iteration's polish and projection at most (0: no limit)"),
       integer_option("local_rings", &S::local_rings, Bounds::at_least(0),
                      "rings of neighbours around the violated rows that a local restoration step moves"),
       real_option("local_fraction", &S::local_fraction, Bounds::between(0, 1),

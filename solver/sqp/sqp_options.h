@@ -19,6 +19,7 @@ struct SqpOptions {
   double final_constraint_tolerance = 5e-7;  ///< ... after the last one
   int max_restoration_steps = 20;            ///< per iteration (twice that in the last one)
   int polish_steps = 10;                     ///< exact-Hessian steps of the last iteration
+  int polish_factorizations = 300;           ///< factorisations of the last iteration's polish (0: no limit)
   int local_rings = 2;                       ///< neighbourhood of a local restoration step
   double local_fraction = 0.1;               ///< local steps while at most this share of rows is violated
   double armijo = 1e-4;                      ///< sufficient decrease factor of the line search

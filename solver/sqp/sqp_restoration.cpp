@@ -62,7 +62,7 @@ bool SqpSolver::restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings
   double cmax = c.lpNorm<Eigen::Infinity>();
   Linearization lin;
   Eigen::VectorXd c_try;
-  while (cmax > tolerance && report.work.restoration_steps < settings.max_steps) {
+  while (cmax > tolerance && report.work.restoration_steps < settings.max_steps && within_budget()) {
     const int violated = static_cast<int>((c.array().abs() > tolerance).count());
     const Kind kind = chord_ok                                                         ? kChord
                       : local_ok && violated <= options_.local_fraction * rows_.count ? kLocal

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "solver/sqp/cholmod_factor.h"
 
@@ -34,7 +35,8 @@ SqpSolver::SqpSolver(int vertex_count, std::vector<WeightedTerm> objective, cons
          SymmetricBlockMatrix(vertex_count, all_terms(objective_, constraints)),
          SymmetricBlockMatrix(vertex_count, all_terms(objective_, constraints)),
          SymmetricBlockMatrix(vertex_count, all_terms(objective_, constraints))},
-      local_(vertex_count, constraints, options.local_rings) {
+      local_(vertex_count, constraints, options.local_rings),
+      factorization_stop_(std::numeric_limits<long>::max()) {
   for (int b = 0; b < constraints_.block_count(); ++b) {
     rows_.first.push_back(rows_.count);
     rows_.count += constraints_.residual_count(b);
@@ -87,6 +89,7 @@ SqpReport SqpSolver::iterate(Dofs& x, bool last) {
 // unpolished state, and keeps the more feasible result. A polish that fails or ends less feasible
 // is dropped; one that stops short is finished by the projection.
 void SqpSolver::polish(Dofs& x, SqpReport& report) {
+  if (options_.polish_factorizations > 0) factorization_stop_ = factorizations_ + options_.polish_factorizations;
   const Dofs x1 = x;
   const Eigen::VectorXd lambda1 = lambda_;
   Dofs best_x = x1;
@@ -112,6 +115,7 @@ void SqpSolver::polish(Dofs& x, SqpReport& report) {
     report.work += projection.work;
     if (!projection.failed) report.constraint_max = projection.constraint_max;
   }
+  factorization_stop_ = std::numeric_limits<long>::max();
 }
 
 SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
@@ -131,7 +135,7 @@ SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
   if (!relinearize(x, lin, report)) return fail(kNotFinite);
   double error = kkt_error(lin) * kFirstErrorWeight;
   auto more_steps = [&]() {
-    if (report.work.steps >= pass.max_steps || !(error > options_.kkt_tolerance)) return false;
+    if (report.work.steps >= pass.max_steps || !(error > options_.kkt_tolerance) || !within_budget()) return false;
     return !pass.stop_when_feasible || lin.c.lpNorm<Eigen::Infinity>() > pass.tolerance;
   };
   while (more_steps()) {

@@ -34,6 +34,7 @@
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
 //    at rho_max. If the state is still above final_constraint_tolerance, project() finishes it.
+//    The polish and that projection make at most polish_factorizations factorisations together.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
@@ -146,7 +147,10 @@ class SqpSolver {
 
   // sqp_solver.cpp: the iteration and its polish.
   SqpReport run_pass(Dofs& x, const Pass& pass);
+  /// At most polish_factorizations factorisations (0: no limit).
   void polish(Dofs& x, SqpReport& report);
+  /// False once the polish has used its factorisations.
+  bool within_budget() const { return factorizations_ < factorization_stop_; }
   // sqp_step.cpp: one optimality step (KKT solve and line search).
   StepOutcome optimality_step(Dofs& x, Linearization& lin, const Pass& pass, SqpReport& report);
   /// A backtracking search along d with the Armijo condition on Phi_mu (see above).
@@ -205,6 +209,8 @@ class SqpSolver {
   double delta_ = 0;
   RowMatrix factored_J_;
   LocalRestoration local_;
+  long factorizations_ = 0;  ///< made so far
+  long factorization_stop_;  ///< no factorisation from this count on (the polish budget)
 };
 
 }  // namespace sdog

@@ -30,7 +30,7 @@ TEST_P(ThesisProtocol, MeetsTheConstraintBarsAndTheThesisObjective) {
   const ThesisCase& c = GetParam();
   const DogModel model =
       build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg"), {c.nx, c.ny});
-  const RunResult r = test::run_mode("standard", model, RunConfig{});
+  const RunResult r = test::run_mode("standard", model, test::thesis_config());
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   ASSERT_EQ(r.summary.iterations, 300);
   for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;

@@ -40,7 +40,7 @@ void expect_constraint_bars(const RunResult& r, int iterations) {
 
 TEST(StandardMode, CornersProtocolOnAProjectPattern) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
-  RunConfig config;
+  RunConfig config = test::thesis_config();
   config.iterations = 80;
   config.hold = 20;
   const RunResult r = run(model, config);
@@ -61,7 +61,7 @@ TEST(StandardMode, CornersProtocolOnAProjectPattern) {
 // steps, two restoration steps) so that it must stop short on a small case.
 TEST(StandardMode, AShortPolishIsFinishedByTheProjection) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
-  RunConfig config = test::short_run(25, 5);  // the last iterations are held: comparable objectives
+  RunConfig config = test::thesis_run(25, 5);  // the last iterations are held: comparable objectives
   config.standard.sqp.polish_steps = 0;
   config.standard.sqp.max_restoration_steps = 1;
   const RunResult r = run(model, config);
@@ -78,7 +78,7 @@ TEST(StandardMode, AShortPolishIsFinishedByTheProjection) {
 
 TEST(StandardMode, FoldScenarioReachesTheDihedralAngle) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
-  RunConfig config;
+  RunConfig config = test::thesis_config();
   config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
   config.iterations = 40;

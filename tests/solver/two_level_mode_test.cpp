@@ -198,7 +198,7 @@ TEST(TwoLevelMode, ACoarseStepEveryOtherIteration) {
 // nearer the standard mode's objective than the plain two-level iteration, folded and on the
 // constraints.
 TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
-  RunConfig config = test::short_run(60, 20);
+  RunConfig config = test::thesis_run(60, 20);  // the finish measured against the thesis's solver
   config.twolevel.standard_finish = 10;
   const test::RunResult finished = run("twolevel", config, 2);
   const test::RunResult plain = run("twolevel", no_finish(config), 2);

@@ -16,8 +16,11 @@ inline const DogModel& arcs_model() {
   return model;
 }
 
+/// The thesis preset: its soft stitching leaves the gaps the stitching overlay shows.
 inline RunConfig arcs_run_config() {
   RunConfig config;
+  config.preset = Preset::kThesis;
+  apply_preset(config.preset, config);
   config.scenario = ScenarioKind::kCorners;
   config.iterations = 40;
   config.hold = 0;
