@@ -17,6 +17,7 @@
 #include "solver/terms/isometry.h"
 #include "solver/terms/linear_point_term.h"
 #include "solver/patches/patch_term.h"
+#include "solver/terms/stacked_term.h"
 #include "tests/test_support.h"
 
 namespace sdog {
@@ -302,6 +303,46 @@ TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessianMatchFiniteDifferen
     check_jacobians(t, x);
     check_second_order(t, x);
   }
+}
+
+// The stacked constraint term of exact stitching: each block is its part's block with the residuals
+// and the Jacobian multiplied by the part's scale (checked against the parts and finite
+// differences), and its second derivatives match finite differences of its gradient.
+TEST(TermDerivatives, StackedTermScalesItsPartsAndMatchesFiniteDifferences) {
+  const auto& f = fixture();
+  const DogMesh& mesh = f.model.fine;
+  const DogConstraints dog(f.model.fine_topology);
+  LinearPointTerm stitching("stitching");
+  for (const auto& pair : mesh.stitching.pairs) {
+    const auto& p = mesh.stitching.points[pair.point];
+    const EdgePoint& a = p.copies[pair.a];
+    const EdgePoint& b = p.copies[pair.b];
+    stitching.add({{a.v1, a.t}, {a.v2, 1 - a.t}, {b.v1, -b.t}, {b.v2, -(1 - b.t)}});
+  }
+  ASSERT_GT(stitching.block_count(), 0);
+  const double scale = 1.7;
+  const StackedTerm stacked({{&dog, 1.0}, {&stitching, scale}});
+  ASSERT_EQ(stacked.block_count(), dog.block_count() + stitching.block_count());
+  EXPECT_FALSE(stacked.is_linear());
+  const Dofs x = perturbed(f.rest, 11, 0.15, 0.4);
+  for (int b : {0, dog.block_count() - 1, dog.block_count(), stacked.block_count() - 1}) {
+    const bool second = b >= dog.block_count();
+    const Term& part = second ? static_cast<const Term&>(stitching) : dog;
+    const int local = second ? b - dog.block_count() : b;
+    const double s = second ? scale : 1.0;
+    ASSERT_EQ(stacked.block_size(b), part.block_size(local));
+    ASSERT_EQ(stacked.residual_count(b), part.residual_count(local));
+    const Matrix J = analytic_jacobian(stacked, b, x);
+    EXPECT_LT(relative_error(J, s * analytic_jacobian(part, local, x)), 1e-15) << "block " << b;
+    EXPECT_LT(relative_error(J, numeric_jacobian(stacked, b, x, 1e-5)), 1e-6) << "block " << b;
+    std::vector<Eigen::Vector3d> p(stacked.block_size(b));
+    gather_block(stacked, b, x, p.data());
+    Eigen::VectorXd r(stacked.residual_count(b)), q(part.residual_count(local));
+    stacked.evaluate(b, p.data(), r.data(), nullptr);
+    part.evaluate(local, p.data(), q.data(), nullptr);
+    EXPECT_LT((r - s * q).norm(), 1e-15 * (1 + r.norm())) << "block " << b;
+  }
+  check_second_order(stacked, x);
 }
 
 // Constraint values alone (line searches, restoration) take a shorter path than values with the
