@@ -88,9 +88,7 @@ void bench(const BenchArgs& a) {
     csv_name = path.filename().string();
   }
   RunConfig config;
-  // The thesis grid reproduces the thesis: its preset unless another is asked for.
-  const std::string preset = !a.preset.empty() ? a.preset : a.thesis_grid ? "thesis" : "";
-  if (!preset.empty()) apply_preset(config.preset = parse_preset(preset, "--preset: "), config);
+  apply_preset_option(a.preset, a.thesis_grid, config);
   config.iterations = a.iterations;
   config.hold = a.iterations / 5;
   std::printf("%-18s %-6s %-9s %6s %6s %9s %9s %6s %9s %7s %10s %9s %7s\n", "pattern", "res", "mode", "verts", "dof",

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "geometry/dog_model.h"
+#include "solver/run/run_config.h"
 
 namespace sdog::cli {
 
@@ -22,6 +23,10 @@ void add_pattern_options(CLI::App& cmd, PatternOptions& o);
 
 /// Adds --preset NAME (the solver settings a run starts from: default or thesis).
 void add_preset_option(CLI::App& cmd, std::string& preset);
+
+/// Applies the --preset value to `config` (before its file and the other options); with
+/// `thesis_grid` and no --preset, the thesis preset (the thesis grid reproduces the thesis).
+void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig& config);
 
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
 DogModel build_model(const PatternOptions& o);

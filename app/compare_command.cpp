@@ -112,9 +112,7 @@ nlohmann::json row_json(const CaseResult& r) {
 
 RunConfig compare_config(const CompareArgs& a) {
   RunConfig config;
-  // The thesis grid reproduces the thesis: its preset unless another is asked for.
-  const std::string preset = !a.preset.empty() ? a.preset : a.thesis_grid ? "thesis" : "";
-  if (!preset.empty()) apply_preset(config.preset = parse_preset(preset, "--preset: "), config);
+  apply_preset_option(a.preset, a.thesis_grid, config);
   if (!a.config.empty()) read_run_config(a.config, config);
   if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
   if (a.iterations_opt->count() || a.config.empty()) config.iterations = a.iterations;

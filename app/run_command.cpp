@@ -86,7 +86,7 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
 
 RunConfig run_config(const RunArgs& a) {
   RunConfig config;
-  if (!a.preset.empty()) apply_preset(config.preset = parse_preset(a.preset, "--preset: "), config);
+  apply_preset_option(a.preset, false, config);
   if (!a.config.empty()) read_run_config(a.config, config);
   if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
   if (a.iterations_opt->count()) config.iterations = a.iterations;

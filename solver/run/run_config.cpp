@@ -6,6 +6,20 @@
 #include "base/text_format.h"
 
 namespace sdog {
+namespace {
+
+// The value of enum E whose name (names[i] names value i) is `name`; else UsageError
+// "`what`unknown `noun` 'name' (known: ...)".
+template <class E>
+E parse_name(const std::vector<std::string>& names, const std::string& name, const char* noun,
+             const std::string& what) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+    throw UsageError(what + "unknown " + noun + " '" + name + "' (known: " + join(names, ", ") + ")");
+  return static_cast<E>(it - names.begin());
+}
+
+}  // namespace
 
 std::vector<std::string> scenario_names() { return {"corners", "fold", "none", "flatten"}; }
 
@@ -15,19 +29,13 @@ const char* scenario_name(ScenarioKind scenario) {
 }
 
 ScenarioKind parse_scenario(const std::string& name, const std::string& what) {
-  const auto names = scenario_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw UsageError(what + "unknown scenario '" + name + "' (known: " + join(names, ", ") + ")");
-  return static_cast<ScenarioKind>(it - names.begin());
+  return parse_name<ScenarioKind>(scenario_names(), name, "scenario", what);
 }
 
 std::vector<std::string> preset_names() { return {"default", "thesis"}; }
 
 Preset parse_preset(const std::string& name, const std::string& what) {
-  const auto names = preset_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw UsageError(what + "unknown preset '" + name + "' (known: " + join(names, ", ") + ")");
-  return static_cast<Preset>(it - names.begin());
+  return parse_name<Preset>(preset_names(), name, "preset", what);
 }
 
 void apply_preset(Preset preset, ModeOptions& o) {

@@ -38,6 +38,10 @@ bool StackedTerm::has_second_order() const {
 
 void StackedTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* y, double* H) const {
   const auto [part, local] = locate(b);
+  if (part->scale == 1) {
+    part->term->add_second_order(local, p, y, H);
+    return;
+  }
   // sum_i y_i Hess(s r_i) = sum_i (s y_i) Hess(r_i)
   std::vector<double> scaled(y, y + residual_count(b));
   for (double& v : scaled) v *= part->scale;

@@ -275,6 +275,9 @@ TEST(RunCommand, UsageErrorsExitWithTwo) {
   auto r = test::run_sdog(kSmallRun + " --mode warp");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("warp"), std::string::npos) << r.err;
+  r = test::run_sdog(kSmallRun + " --preset warp");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--preset: warp"), std::string::npos) << r.err;
   r = test::run_sdog("run '" + test::dataset("diagonal_fold.svg") + "' --res 21x21 -q --scenario fold");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("no fold sites"), std::string::npos) << r.err;

@@ -92,6 +92,21 @@ TEST(RunConfigJson, ListsOfConstraintsAndSwitchesRoundTrip) {
   EXPECT_EQ(to_json(again), to_json(c));
 }
 
+// "preset" sets its options first; the keys of the file then change what it set.
+TEST(RunConfigJson, ThePresetIsAppliedBeforeTheOtherKeys) {
+  RunConfig c;
+  apply_run_config(json::parse(R"({"preset": "thesis", "solver": {"polish_factorizations": 7}})"), "c.json", c);
+  EXPECT_EQ(c.preset, Preset::kThesis);
+  EXPECT_EQ(c.standard.stitching, Stitching::kSoft);
+  EXPECT_EQ(c.standard.sqp.polish_factorizations, 7);
+  RunConfig d;
+  apply_run_config(json::parse(R"({"preset": "default"})"), "d.json", d);
+  EXPECT_EQ(d.standard.stitching, Stitching::kExact);
+  EXPECT_EQ(d.standard.sqp.polish_factorizations, SqpOptions().polish_factorizations);
+  RunConfig e;
+  EXPECT_THROW(apply_run_config(json::parse(R"({"preset": "warp"})"), "e.json", e), InputError);
+}
+
 TEST(RunConfigJson, TheDefaultProximalWeightDependsOnThePatchCount) {
   RunConfig config;
   EXPECT_DOUBLE_EQ(config.admm.proximal_weight(4), 0.003);
