@@ -35,8 +35,13 @@ std::unique_ptr<Mode> make_mode(ModeKind mode, DogProblem& problem, const Scenar
                                 const ModeOptions& options, const DogModel* model) {
   const SqpOptions& sqp = options.standard.sqp;
   switch (mode) {
-    case ModeKind::kStandard:
-      return std::make_unique<StandardMode>(problem, scenario, options.standard);
+    case ModeKind::kStandard: {
+      // The standard mode with exact stitching: the violated rows after a step lie all along the
+      // creases, where local restoration steps cost more than the global ones they replace.
+      StandardOptions standard = options.standard;
+      if (standard.sqp.local_fraction < 0 && standard.stitching == Stitching::kExact) standard.sqp.local_fraction = 0;
+      return std::make_unique<StandardMode>(problem, scenario, standard);
+    }
     case ModeKind::kSubsolvers:
       return std::make_unique<SubsolversMode>(problem, scenario, options.subsolvers, sqp);
     case ModeKind::kVsAdmm:

@@ -30,8 +30,9 @@ const OptionTable<SqpOptions>& sqp_option_table() {
                      "factorisations of the last iteration's polish and projection at most (0: no limit)"),
       integer_option("local_rings", &S::local_rings, Bounds::at_least(0),
                      "rings of neighbours around the violated rows that a local restoration step moves"),
-      real_option("local_fraction", &S::local_fraction, Bounds::between(0, 1),
-                  "local restoration steps while at most this share of the constraint rows is violated"),
+      real_option("local_fraction", &S::local_fraction, Bounds::between(-1, 1),
+                  "local restoration steps while at most this share of the constraint rows is violated; "
+                  "negative: automatic (none in the standard mode with exact stitching, else 0.1)"),
       real_option("armijo", &S::armijo, Bounds::open(0, 0.5), "sufficient-decrease factor of the line search"),
       integer_option("max_backtracks", &S::max_backtracks, Bounds::at_least(0),
                      "halvings of a step before the line search gives up"),

@@ -8,6 +8,7 @@
 namespace sdog {
 
 struct SqpOptions {
+  static constexpr double kDefaultLocalFraction = 0.1;
   double kkt_tolerance = 1e-3;               ///< on max(|grad f - J^T lambda|_inf, |c|_inf)
   int max_steps = 1;                         ///< optimality steps per iteration (reference: 5)
   double epsilon = 1e-6;                     ///< constraint-block regularisation (rho = 1/epsilon)
@@ -21,7 +22,9 @@ struct SqpOptions {
   int polish_steps = 10;                     ///< exact-Hessian steps of the last iteration
   int polish_factorizations = 300;           ///< factorisations of the last iteration's polish (0: no limit)
   int local_rings = 2;                       ///< neighbourhood of a local restoration step
-  double local_fraction = 0.1;               ///< local steps while at most this share of rows is violated
+  /// Local steps while at most this share of rows is violated; negative: automatic (0 in the
+  /// standard mode with exact stitching, else kDefaultLocalFraction).
+  double local_fraction = -1;
   double armijo = 1e-4;                      ///< sufficient decrease factor of the line search
   int max_backtracks = 20;                   ///< halvings of the step before giving up
   double regularization = 1e-8;              ///< smallest shift delta of K

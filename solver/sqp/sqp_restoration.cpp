@@ -1,4 +1,6 @@
 // Restoration of the DOG constraints (sqp_solver.h, step 2) and the projection that ends a run.
+#include <algorithm>
+
 #include "base/stopwatch.h"
 #include "solver/sqp/sqp_solver.h"
 
@@ -18,7 +20,7 @@ SqpReport SqpSolver::restore_constraints(Dofs& x) {
   SqpReport report;
   factored_ = false;  // the factor of an earlier state does not fit x
   Eigen::VectorXd c = constraint_values(x);
-  const Restoration restoration{options_.constraint_tolerance, options_.max_restoration_steps, true,
+  const Restoration restoration{options_.constraint_tolerance, options_.max_restoration_steps, local_fraction(),
                                 options_.restoration_epsilon, options_.rho_max};
   if (!c.allFinite() || !restore(x, c, restoration, report)) {
     report.failed = true;
@@ -36,12 +38,12 @@ SqpReport SqpSolver::project(Dofs& x) {
   // First without local steps: they move the few vertices around the violated rows with the rest
   // frozen and can stall above the tolerance where chord and global steps reach it. Then, if that
   // stops short, with them, which finish the cases where the global steps stall.
-  Restoration restoration{options_.final_constraint_tolerance, kProjectionSteps, false, options_.polish_epsilon,
+  Restoration restoration{options_.final_constraint_tolerance, kProjectionSteps, 0, options_.polish_epsilon,
                           options_.rho_max};
   bool ok = c.allFinite() && restore(x, c, restoration, report);
   if (ok && c.lpNorm<Eigen::Infinity>() > restoration.tolerance) {
     restoration.max_steps = report.work.restoration_steps + kProjectionSteps;
-    restoration.local_steps = true;
+    restoration.local_fraction = std::max(local_fraction(), SqpOptions::kDefaultLocalFraction);
     ok = restore(x, c, restoration, report);
   }
   if (!ok) {
@@ -56,7 +58,7 @@ SqpReport SqpSolver::project(Dofs& x) {
 
 bool SqpSolver::restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings, SqpReport& report) {
   enum Kind { kChord, kLocal, kGlobal };
-  bool chord_ok = factored_, local_ok = settings.local_steps;
+  bool chord_ok = factored_, local_ok = settings.local_fraction > 0;
   int chords = 0;
   const double tolerance = settings.tolerance;
   double cmax = c.lpNorm<Eigen::Infinity>();
@@ -65,7 +67,7 @@ bool SqpSolver::restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings
   while (cmax > tolerance && report.work.restoration_steps < settings.max_steps && within_budget()) {
     const int violated = static_cast<int>((c.array().abs() > tolerance).count());
     const Kind kind = chord_ok                                                         ? kChord
-                      : local_ok && violated <= options_.local_fraction * rows_.count ? kLocal
+                      : local_ok && violated <= settings.local_fraction * rows_.count ? kLocal
                                                                                        : kGlobal;
     Eigen::VectorXd d;
     if (kind == kChord) {

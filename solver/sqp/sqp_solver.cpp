@@ -151,7 +151,7 @@ SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
   }
   Eigen::VectorXd c = lin.c;
   if (!c.allFinite()) return fail(kNotFinite);
-  const Restoration restoration{pass.tolerance, pass.max_restoration_steps, true, pass.restoration_epsilon,
+  const Restoration restoration{pass.tolerance, pass.max_restoration_steps, local_fraction(), pass.restoration_epsilon,
                                 pass.rho_cap};
   if (!restore(x, c, restoration, report)) return fail(report.failure);
   report.constraint_max = c.lpNorm<Eigen::Infinity>();

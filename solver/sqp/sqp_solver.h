@@ -29,7 +29,10 @@
 //    metric of H, (H + rho J^T J) d = -rho J^T c, backtracking until |c| decreases. In order of
 //    cost: a chord step with the last factorisation and its Jacobian (a second-order correction;
 //    repeated while it cuts |c|_2^2 by 20%, at most 5 times), a local step on the neighbourhood of the violated rows
-//    when they are few (local_restoration.h), a fresh global factorisation.
+//    when they are few (local_fraction; local_restoration.h), a fresh global factorisation. The
+//    standard mode with exact stitching takes no local steps (local_fraction automatic): its
+//    violated rows after a step lie all along the creases, where local steps cost more than the
+//    global ones they replace.
 // 3. In the last iteration of a run only: a polishing iteration (up to polish_steps steps with the
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
@@ -134,11 +137,11 @@ class SqpSolver {
   };
   Pass ordinary_pass() const;
   Pass polish_pass(double rho_cap) const;
-  /// Restoration settings: how far, how many steps, whether local steps are allowed, the metric.
+  /// Restoration settings: how far, how many steps, when local steps are taken, the metric.
   struct Restoration {
     double tolerance;
     int max_steps;
-    bool local_steps;
+    double local_fraction;  ///< local steps while at most this share of rows is violated (0: none)
     double epsilon;
     double rho_cap;
   };
@@ -153,6 +156,10 @@ class SqpSolver {
   bool within_budget() const { return factorizations_ < factorization_stop_; }
   // sqp_step.cpp: one optimality step (KKT solve and line search).
   StepOutcome optimality_step(Dofs& x, Linearization& lin, const Pass& pass, SqpReport& report);
+  /// options_.local_fraction with the automatic value resolved.
+  double local_fraction() const {
+    return options_.local_fraction < 0 ? SqpOptions::kDefaultLocalFraction : options_.local_fraction;
+  }
   /// A backtracking search along d with the Armijo condition on Phi_mu (see above).
   struct LineSearch {
     bool accepted = false;

@@ -90,5 +90,24 @@ TEST(PolishBudget, BoundsTheLastIterationsFactorisations) {
   EXPECT_EQ(two, one + 1);
 }
 
+// The automatic local_fraction: the standard mode with exact stitching takes no local restoration
+// steps; with soft stitching, or with the fraction set, it does (the ordinary iterations only: the
+// last iteration's projection may always finish with local steps).
+TEST(LocalRestoration, TheStandardModeWithExactStitchingTakesNone) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  auto local_steps = [&](const RunConfig& config) {
+    const test::RunResult r = test::run_mode("standard", model, config);
+    EXPECT_FALSE(r.summary.failed()) << r.summary.failure;
+    int steps = 0;
+    for (size_t i = 0; i + 1 < r.reports.size(); ++i) steps += r.reports[i].step.work.local_steps;
+    return steps;
+  };
+  EXPECT_EQ(local_steps(test::short_run(30, 5)), 0);
+  EXPECT_GT(local_steps(test::thesis_run(30, 5)), 0);
+  RunConfig set = test::short_run(30, 5);
+  set.standard.sqp.local_fraction = SqpOptions::kDefaultLocalFraction;
+  EXPECT_GT(local_steps(set), 0);
+}
+
 }  // namespace
 }  // namespace sdog
