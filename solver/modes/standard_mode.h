@@ -12,9 +12,9 @@
 // the constraint tolerance after every iteration.
 #include <memory>
 
+#include "solver/modes/hard_constraints.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
-#include "solver/modes/hard_constraints.h"
 #include "solver/problem/dog_problem.h"
 
 namespace sdog {

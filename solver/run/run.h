@@ -19,7 +19,7 @@ struct IterationReport {
   double objective_final_targets = 0;  ///< weighted objective with the targets of t = 1
   StepReport step;
   double iteration_ms = 0;
-  double elapsed_ms = 0;  ///< since the run started (set by run_scenario and the session)
+  double elapsed_ms = 0;  ///< since the run started (set by run_scenario)
 };
 
 /// Receives every iteration (and the state after it).
