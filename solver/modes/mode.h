@@ -31,6 +31,12 @@ struct StepReport {
   Work work;
   double step_length = 0;
   bool folded = true;
+  /// The state meets the KKT tolerance for the targets it reports (standard iterations that
+  /// converge; unknown for the others).
+  std::optional<bool> converged;
+  /// How far along this iteration's requested target motion the reported targets are (1: all
+  /// the way; less when a converging iteration approached far targets in sub-steps).
+  double target_fraction = 1;
   bool failed = false;
   std::string failure;               ///< why; the mode rolled x back
   std::vector<PatchReport> patches;  ///< per-patch solves of the multi-patch modes, in patch order

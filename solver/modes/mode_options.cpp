@@ -17,6 +17,12 @@ const OptionTable<StandardOptions>& standard_option_table() {
                          "an iteration that leaves a crease unfolded is solved again with a raised fold bias"),
           real_option("max_fold_bias", &O::max_fold_bias, Bounds::positive(),
                       "the fold-bias weight is raised at most to this"),
+          boolean_option("converge", &O::converge,
+                         "converging iterations: targets that moved far are approached in sub-steps, and "
+                         "once they hold an iteration takes steps until the objective settles (off: max_steps "
+                         "steps per iteration, the thesis)"),
+          integer_option("max_iteration_steps", &O::max_iteration_steps, Bounds::at_least(1),
+                         "SQP steps of a converging iteration whose targets hold, at most"),
           choice_option("stitching", &O::stitching, stitching_names(),
                         "exact: the copies of a crease point coincide as hard constraints; soft: only the "
                         "stitching term pulls them together (the thesis)"),

@@ -18,6 +18,9 @@ struct StandardOptions {
   SqpOptions sqp;
   bool folding = true;          ///< fold check and fold-bias escalation (standard_mode.h)
   double max_fold_bias = 1e14;  ///< the escalation stops at this weight
+  /// Converging iterations (standard_mode.h); off: sqp.max_steps steps per iteration (the thesis).
+  bool converge = true;
+  int max_iteration_steps = 10;  ///< SQP steps of a converging iteration whose targets hold, at most
   Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
   /// step of the two-resolution modes, which may run beside the patch solves, uses 1

@@ -10,6 +10,9 @@ namespace {
 
 // Each retry multiplies the fold-bias weight by this.
 constexpr double kFoldBiasGrowth = 10;
+// The smallest continuation sub-step (fraction of the remaining target motion); a sub-step this
+// small that fails fails the iteration.
+constexpr double kSmallestSubstep = 1.0 / 1024;
 
 }  // namespace
 
@@ -22,8 +25,12 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;
+  SqpOptions sqp = options_.sqp;
+  // With exact stitching the violated rows after a step lie all along the creases, where local
+  // restoration steps cost more than the global ones they replace.
+  if (sqp.local_fraction < 0 && options_.stitching == Stitching::kExact) sqp.local_fraction = 0;
   sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(),
-                                     constraints_.term(), options_.sqp);
+                                     constraints_.term(), sqp);
 }
 
 StandardMode::~StandardMode() = default;
@@ -35,50 +42,115 @@ StepReport StandardMode::iterate(const IterationContext& ctx, Dofs& x) {
   return step(x, ctx.last());
 }
 
-bool StandardMode::solve(Dofs& x, bool last, StepReport& report, double& constraint_max) {
-  const SqpReport r = sqp_->iterate(x, last);
+bool StandardMode::solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max) {
+  const SqpReport r = max_steps > 0 ? sqp_->converge(x, max_steps) : sqp_->iterate(x, last);
   report.work += r.work;
   report.step_length = r.step_length;
   constraint_max = r.constraint_max;
   report.failed = r.failed;
   report.failure = r.failure;
+  if (max_steps > 0) report.converged = r.converged;
   return !r.failed;
 }
 
 StepReport StandardMode::step(Dofs& x, bool last) {
   // Every iteration: a patch mode before may have lowered it.
   set_blas_threads(options_.blas_threads > 0 ? options_.blas_threads : default_blas_threads());
-  StepReport report;
   if (restore_first_) {
     restore_first_ = false;
     const SqpReport restored = sqp_->restore_constraints(x);
-    report.work += restored.work;
     if (restored.failed) {
+      StepReport report;
+      report.work = restored.work;
       report.failed = true;
       report.failure = restored.failure;
       return report;
     }
+    StepReport report = options_.converge ? converge(x, last) : attempt(x, last, 0);
+    report.work += restored.work;
+    return report;
   }
-  double constraint_max = 0;  // of the last attempt
+  return options_.converge ? converge(x, last) : attempt(x, last, 0);
+}
+
+StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
+  StepReport report;
+  double& constraint_max = constraint_max_;  // of the last attempt
   if (!options_.folding) {
-    solve(x, last, report, constraint_max);
+    solve(x, last, max_steps, report, constraint_max);
     return report;
   }
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = sqp_->multipliers();
-  if (!solve(x, last, report, constraint_max)) return report;
+  if (!solve(x, last, max_steps, report, constraint_max)) return report;
   const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
   report.folded = check.folded;
   if (report.folded) {
     set_fold_bias(base_fold_bias_);
     return report;
   }
-  escalate_fold_bias(x, x0, lambda0, last, check.violations, constraint_max, report);
+  escalate_fold_bias(x, x0, lambda0, last, max_steps, check.violations, constraint_max, report);
+  return report;
+}
+
+StepReport StandardMode::converge(Dofs& x, bool last) {
+  const Targets goal = Targets::of(problem_);
+  if (!reached_ || !reached_->matches(goal)) {
+    reached_ = Targets::met_by(problem_, x);
+    converged_ = false;
+  }
+  const bool moving = reached_->distance(goal) > 0;
+  if (moving) converged_ = false;
+  StepReport report;
+  if (converged_ && !last) {  // nothing left to do: no factorisation
+    report.converged = true;
+    return report;
+  }
+  // Moving targets: sqp.max_steps steps (the next iteration moves them again); held ones: up to
+  // max_iteration_steps steps, until converged.
+  const int max_steps = moving ? options_.sqp.max_steps : options_.max_iteration_steps;
+  while (true) {
+    const double s = moving ? std::min(1.0, substep_) : 1.0;
+    const Targets at = reached_->towards(goal, s);
+    at.install(problem_);
+    const Dofs x0 = x;
+    const Eigen::VectorXd lambda0 = sqp_->multipliers();
+    Work work = report.work;
+    report = attempt(x, false, max_steps);
+    report.work += work;
+    const bool kept = !report.failed && (!moving || constraint_max_ <= options_.sqp.constraint_tolerance);
+    if (kept) {
+      reached_ = at;
+      report.target_fraction = s;
+      converged_ = s == 1 && report.converged.value_or(false);
+      report.converged = converged_;
+      substep_ = std::min(1.0, 2 * substep_);
+      break;
+    }
+    x = x0;
+    sqp_->set_multipliers(lambda0);
+    if (!moving || substep_ <= kSmallestSubstep) {  // even the smallest sub-step fails
+      reached_->install(problem_);
+      report.target_fraction = 0;
+      report.converged = false;
+      if (!report.failed) {
+        report.failed = true;
+        report.failure = "the constraints cannot be met even for a small move of the targets";
+      }
+      break;
+    }
+    substep_ /= 2;
+  }
+  if (last && !report.failed && constraint_max_ > options_.sqp.final_constraint_tolerance) {
+    const SqpReport projected = sqp_->project(x);
+    report.work += projected.work;
+    if (!projected.failed) constraint_max_ = projected.constraint_max;
+  }
   return report;
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
-                                      int violations, double constraint_max, StepReport& report) {
+                                      int max_steps, int violations, double constraint_max, StepReport& report) {
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -88,7 +160,8 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     Eigen::VectorXd lambda;
     int violations;
     double step_length;
-  } best{x, sqp_->multipliers(), violations, report.step_length};
+    std::optional<bool> converged;
+  } best{x, sqp_->multipliers(), violations, report.step_length, report.converged};
   // As in the reference: an escalated bias stays for the next iteration and returns to its base
   // value once an iteration ends folded.
   double weight = problem_.weights.fold_bias;
@@ -97,7 +170,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     sqp_->set_multipliers(lambda0);
     set_fold_bias(weight *= kFoldBiasGrowth);
     ++report.work.fold_retries;
-    if (!solve(x, last, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
+    if (!solve(x, last, max_steps, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
       break;
@@ -105,7 +178,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
     report.folded = check.folded;
     if (check.violations < best.violations && constraint_max <= feasible)
-      best = {x, sqp_->multipliers(), check.violations, report.step_length};
+      best = {x, sqp_->multipliers(), check.violations, report.step_length, report.converged};
   }
   if (!report.folded && report.work.fold_retries > 0) {
     // Unlike the reference, which keeps the last attempt and the capped weight: past a point the
@@ -113,6 +186,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     x = best.x;
     sqp_->set_multipliers(best.lambda);
     report.step_length = best.step_length;
+    report.converged = best.converged;
     set_fold_bias(base_fold_bias_);
   }
 }
@@ -120,6 +194,9 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
 void StandardMode::start_from(const Dofs&) {
   sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
   restore_first_ = options_.stitching == Stitching::kExact;
+  reached_.reset();
+  substep_ = 1;
+  converged_ = false;
   if (options_.folding) set_fold_bias(base_fold_bias_);
 }
 

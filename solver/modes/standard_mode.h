@@ -10,12 +10,27 @@
 // Exact stitching (the default): the stitching of the crease points is a hard constraint beside
 // the DOG constraints (hard_constraints.h), so the two copies of every crease point coincide to
 // the constraint tolerance after every iteration.
+// Converging iterations (StandardOptions::converge, the default): an iteration takes SQP steps
+// until the KKT error is below the tolerance (none when the state already meets it, so a held,
+// converged state costs no factorisation). Targets that moved further than that can follow are
+// approached by continuation: the targets are moved from those the state has reached towards the
+// requested ones in sub-steps, a sub-step that converges doubles the next one, one that fails or
+// does not converge within kSubstepSteps steps is rolled back and halved. An iteration ends when
+// the requested targets are met or its step budget (max_iteration_steps) is spent; it reports the
+// targets it got to (target_fraction) and the next iteration goes on from there. A target the
+// sheet cannot reach (off the sheet, or asking for stretching) leaves the sheet as close as its
+// constraints allow: the soft targets are met in the least-squares sense, which converges.
+//
+// Exact stitching (the default): the stitching of the crease points is a hard constraint beside
+// the DOG constraints (hard_constraints.h).
 #include <memory>
+#include <optional>
 
 #include "solver/modes/hard_constraints.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
 #include "solver/problem/dog_problem.h"
+#include "solver/problem/targets.h"
 
 namespace sdog {
 
@@ -30,6 +45,8 @@ class StandardMode : public Mode {
   StepReport iterate(const IterationContext& ctx, Dofs& x) override;
   /// Zero multipliers and the base fold bias: a fresh start from x. With exact stitching the next
   /// iteration first restores the constraints (a state from a patch mode has gaps at the creases).
+  /// Zero multipliers and the base fold bias: a fresh start from x (whose targets are those it
+  /// meets).
   void start_from(const Dofs& x) override;
 
   /// Sets the targets of scenario time t.
@@ -41,11 +58,17 @@ class StandardMode : public Mode {
   SqpSolver& sqp() { return *sqp_; }
 
  private:
-  /// One SQP iteration, its work added to `report`; false when it failed.
-  bool solve(Dofs& x, bool last, StepReport& report, double& constraint_max);
+  /// SQP steps of the current targets with the fold check and its retries (folding mode): the
+  /// thesis's iteration (max_steps 0: sqp.max_steps steps, polished when `last`) or at most
+  /// max_steps steps towards convergence.
+  StepReport attempt(Dofs& x, bool last, int max_steps);
+  /// A converging iteration (continuation towards the installed targets).
+  StepReport converge(Dofs& x, bool last);
+  /// One SQP solve, its work added to `report`; false when it failed.
+  bool solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max);
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
-  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int violations,
-                          double constraint_max, StepReport& report);
+  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int max_steps,
+                          int violations, double constraint_max, StepReport& report);
   void set_fold_bias(double weight);
   DogProblem& problem_;
   Scenario scenario_;
@@ -54,6 +77,10 @@ class StandardMode : public Mode {
   std::unique_ptr<SqpSolver> sqp_;
   double base_fold_bias_;
   bool restore_first_ = false;
+  std::optional<Targets> reached_;  ///< the targets the state was last solved for
+  double substep_ = 1;              ///< of the next continuation sub-step
+  bool converged_ = false;          ///< x is converged for reached_
+  double constraint_max_ = 0;       ///< after the last solve
 };
 
 }  // namespace sdog

@@ -1,6 +1,7 @@
 #include "solver/run/run.h"
 
 #include "base/stopwatch.h"
+#include "solver/problem/targets.h"
 
 namespace sdog {
 
@@ -30,10 +31,11 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
   report.step = mode.iterate(ctx, x);
   report.iteration_ms = ms_since(t0);
   report.diagnostics = diagnose(problem, x);
-  if (report.t < 1) {
+  if (report.t < 1 || report.step.target_fraction < 1) {
+    const Targets reported = Targets::of(problem);  // those the mode reports x for
     scenario.apply(problem, 1.0);
     report.objective_final_targets = weighted_objective(problem, x);
-    scenario.apply(problem, report.t);
+    reported.install(problem);
   } else {
     report.objective_final_targets = report.diagnostics.objective;
   }

@@ -43,14 +43,15 @@ void apply_preset(Preset preset, ModeOptions& o) {
   const bool thesis = preset == Preset::kThesis;
   o.standard.stitching = thesis ? Stitching::kSoft : defaults.stitching;
   o.standard.sqp.polish_factorizations = thesis ? 0 : defaults.sqp.polish_factorizations;
+  o.standard.converge = thesis ? false : defaults.converge;
 }
 
 const OptionTable<RunConfig>& run_option_table() {
   using C = RunConfig;
   static const OptionTable<C> table = {
       choice_option("preset", &C::preset, preset_names(),
-                    "default: exact stitching; thesis: the thesis's solver (soft stitching, no factorisation "
-                    "budget for the polish), for its numbers; applied before the other keys (also --preset)"),
+                    "default: exact stitching, converging iterations; thesis: the thesis's solver (soft stitching, "
+                    "one step per iteration, no factorisation budget for the polish), for its numbers; applied before the other keys (also --preset)"),
       choice_option("scenario", &C::scenario, scenario_names(),
                     "corners: the thesis protocol; fold: every crease folds from flat to angle; none: only the "
                     "listed constraints; flatten: a folded sheet is left to unfold (also --scenario)"),

@@ -49,6 +49,9 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"factorizations", [](const R& r) { return count(r.step.work.factorizations); }},
       {"restoration_steps", [](const R& r) { return count(r.step.work.restoration_steps); }},
       {"mode", [](const R& r) { return r.mode; }},
+      {"converged",
+       [](const R& r) { return r.step.converged ? std::string(*r.step.converged ? "1" : "0") : std::string(); }},
+      {"target_fraction", [](const R& r) { return number(r.step.target_fraction); }},
       {"elapsed_ms", [](const R& r) { return number(r.elapsed_ms); }},
   };
   return columns;

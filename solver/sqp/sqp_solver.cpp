@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "solver/sqp/cholmod_factor.h"
@@ -64,7 +66,7 @@ SqpSolver::~SqpSolver() = default;
 
 SqpSolver::Pass SqpSolver::ordinary_pass() const {
   return {options_.constraint_tolerance, options_.max_steps, options_.max_restoration_steps, false,
-          options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max};
+          options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max, true};
 }
 
 SqpSolver::Pass SqpSolver::polish_pass(double rho_cap) const {
@@ -74,12 +76,46 @@ SqpSolver::Pass SqpSolver::polish_pass(double rho_cap) const {
           true,
           true,
           options_.polish_epsilon,
-          std::max(rho_cap, 1 / options_.epsilon)};
+          std::max(rho_cap, 1 / options_.epsilon),
+          true};
 }
 
 SqpReport SqpSolver::iterate(Dofs& x, bool last) {
   SqpReport report = run_pass(x, ordinary_pass());
   if (last && !report.failed && report.constraint_max > options_.final_constraint_tolerance) polish(x, report);
+  return report;
+}
+
+SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
+  // Passes of one optimality step and its restoration, as in iterate() but without the forced
+  // first step, until one finds x stationary or changes f by at most converged_change.
+  Pass pass = ordinary_pass();
+  pass.max_steps = 1;
+  pass.first_step_always = false;
+  SqpReport report;
+  const Dofs x0 = x;
+  const Eigen::VectorXd lambda0 = lambda_;
+  double f = objective(x);
+  while (true) {
+    const SqpReport r = run_pass(x, pass);
+    report.work += r.work;
+    report.constraint_max = r.constraint_max;
+    if (r.failed) {
+      x = x0;
+      lambda_ = lambda0;
+      report.failed = true;
+      report.failure = r.failure;
+      return report;
+    }
+    const double f_before = f;
+    f = objective(x);
+    if (r.work.steps > 0) report.step_length = r.step_length;
+    const double crit = getenv("SDOG_PRED") ? std::abs(r.full_step_decrease) : std::abs(f_before - f);
+    if (getenv("SDOG_TRACE")) fprintf(stderr, "  steps %d alpha %.3g f %.6g df %.3e pred %.3e c %.2e\n", r.work.steps, r.step_length, f, f_before - f, r.full_step_decrease, r.constraint_max);
+    const bool stationary = r.work.steps == 0 || crit <= options_.converged_change * std::max(1.0, f);
+    report.converged = stationary && r.constraint_max <= options_.constraint_tolerance;
+    if (report.converged || report.work.steps >= max_steps) break;
+  }
   return report;
 }
 
@@ -133,7 +169,7 @@ SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
   delta_ = options_.regularization;
   Linearization lin;
   if (!relinearize(x, lin, report)) return fail(kNotFinite);
-  double error = kkt_error(lin) * kFirstErrorWeight;
+  double error = kkt_error(lin) * (pass.first_step_always ? kFirstErrorWeight : 1);
   auto more_steps = [&]() {
     if (report.work.steps >= pass.max_steps || !(error > options_.kkt_tolerance) || !within_budget()) return false;
     return !pass.stop_when_feasible || lin.c.lpNorm<Eigen::Infinity>() > pass.tolerance;

@@ -68,6 +68,10 @@ struct SqpReport {
   Work work;
   double constraint_max = 0;  ///< |c|_inf at the end
   double step_length = 0;     ///< line-search step of the last optimality step
+  /// -grad f . d of the last optimality step d: the objective's decrease a full step would give to
+  /// first order.
+  double full_step_decrease = 0;
+  bool converged = false;     ///< stationary or f changed by at most converged_change, and feasible (converge() only)
   bool failed = false;
   std::string failure;  ///< why, when failed (x and the multipliers were rolled back)
 };
@@ -84,6 +88,15 @@ class SqpSolver {
   /// One iteration from x (updated in place; rolled back on failure). `last`: the last iteration
   /// of a run (tighter constraint tolerance, polish).
   SqpReport iterate(Dofs& x, bool last = false);
+
+  /// Optimality steps from x until the KKT error is below kkt_tolerance (none when it already is:
+  /// a converged state costs no factorisation), at most `max_steps`, then restoration to the
+  /// constraint tolerance. Reports whether the state converged.
+  SqpReport converge(Dofs& x, int max_steps);
+  /// The last iteration's polish of x (step 3 above), its work added to `report`, whose
+  /// constraint_max is x's on entry and is updated. At most polish_factorizations
+  /// factorisations (0: no limit).
+  void polish(Dofs& x, SqpReport& report);
 
   /// Only restoration steps (no objective step): moves x onto the constraints until |c| is within
   /// the constraint tolerance or max_restoration_steps are taken. For a state this solver did not
@@ -134,6 +147,7 @@ class SqpSolver {
     bool curvature;              ///< the constraints' curvature -sum lambda_i Hess c_i in H
     double restoration_epsilon;  ///< metric of the restoration steps
     double rho_cap;              ///< rho may grow to this to make K positive definite
+    bool first_step_always;      ///< the first KKT error counts 1e4 times (iterate())
   };
   Pass ordinary_pass() const;
   Pass polish_pass(double rho_cap) const;
@@ -150,8 +164,6 @@ class SqpSolver {
 
   // sqp_solver.cpp: the iteration and its polish.
   SqpReport run_pass(Dofs& x, const Pass& pass);
-  /// At most polish_factorizations factorisations (0: no limit).
-  void polish(Dofs& x, SqpReport& report);
   /// False once the polish has used its factorisations.
   bool within_budget() const { return factorizations_ < factorization_stop_; }
   // sqp_step.cpp: one optimality step (KKT solve and line search).

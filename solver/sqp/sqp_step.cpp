@@ -1,6 +1,8 @@
 // One optimality step of the SQP solver: the regularised KKT system solved through K, then a
 // backtracking line search on the augmented Lagrangian (sqp_solver.h, step 1).
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "base/text_format.h"
 #include "solver/sqp/sqp_solver.h"
@@ -44,6 +46,7 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
                      format_number(search.slope) + ")";
     return StepOutcome::kFailed;
   }
+  report.full_step_decrease = -lin.g.dot(d);
   x = search.x;
   lambda_ += search.alpha * (lambda_plus - lambda_);
   report.step_length = search.alpha;
