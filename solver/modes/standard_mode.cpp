@@ -1,6 +1,7 @@
 #include "solver/modes/standard_mode.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "solver/sqp/blas_threads.h"
 #include "solver/sqp/sqp_solver.h"
@@ -118,7 +119,9 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     Work work = report.work;
     report = attempt(x, false, max_steps);
     report.work += work;
-    const bool kept = !report.failed && (!moving || constraint_max_ <= options_.sqp.constraint_tolerance);
+    static const double min_alpha = getenv("SDOG_MINALPHA") ? atof(getenv("SDOG_MINALPHA")) : 0;
+    const bool kept = !report.failed && (!moving || (constraint_max_ <= options_.sqp.constraint_tolerance &&
+                                                     (report.step_length >= min_alpha || substep_ <= kSmallestSubstep)));
     if (kept) {
       reached_ = at;
       report.target_fraction = s;

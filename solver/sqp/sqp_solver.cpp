@@ -96,6 +96,7 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = lambda_;
   double f = objective(x);
+  if (getenv("SDOG_CURV")) pass.curvature = true;
   while (true) {
     const SqpReport r = run_pass(x, pass);
     report.work += r.work;
