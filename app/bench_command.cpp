@@ -13,6 +13,7 @@
 #include "base/errors.h"
 #include "base/csv.h"
 #include "solver/experiments/case_rounds.h"
+#include "solver/experiments/pace.h"
 #include "solver/experiments/tables.h"
 
 namespace sdog::cli {
@@ -44,6 +45,9 @@ struct BenchArgs {
   int threads = 0;
   std::string csv;
   std::string preset;
+  bool pace = false;
+  std::vector<int> ks{250, 50, 10, 1};
+  int max_hold = 200;
 };
 
 void print_row(const CaseResult& r) {
@@ -75,6 +79,61 @@ std::vector<std::vector<Case>> bench_places(const BenchArgs& a, const std::vecto
   return cases;
 }
 
+std::string fixed(double v, int digits) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+std::string general(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// Per pattern and resolution, the corners drag over each K, then held until converged.
+void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::string& csv_name) {
+  if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("--pace: give --pattern and --res");
+  RunConfig config;
+  apply_preset_option(a.preset, false, config);
+  const std::vector<std::string> header{"pattern",    "res",      "K",     "objective", "ratio",   "dog_max",
+                                        "stitch_gap", "folded",   "handle_distance", "facts", "shape_s",
+                                        "total_s",    "iterations", "failure"};
+  std::printf("%-18s %-6s %4s %10s %6s %8s %8s %6s %9s %6s %8s %8s\n", "pattern", "res", "K", "objective", "ratio",
+              "dog_max", "gap", "folded", "handle_d", "facts", "shape_s", "total_s");
+  std::string csv = csv_line(header);
+  const bool tty = isatty(fileno(stderr));
+  for (const auto& pattern : a.patterns)
+    for (const auto& res : a.resolutions) {
+      const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
+      std::vector<PaceResult> results;
+      for (int k : a.ks) {
+        if (tty) std::fprintf(stderr, "\r  %s %s: K = %d ...   ", pattern.c_str(), res.c_str(), k);
+        results.push_back(run_pace(model, config, k, a.max_hold));
+      }
+      if (tty) std::fprintf(stderr, "\r%70s\r", "");
+      const std::vector<double> ratios = objective_ratios(results);
+      const std::string name = std::filesystem::path(pattern).stem().string();
+      for (size_t i = 0; i < results.size(); ++i) {
+        const PaceResult& r = results[i];
+        const std::string shape = r.time_to_shape_s ? fixed(*r.time_to_shape_s, 2) : "-";
+        std::printf("%-18s %-6s %4d %10.5f %6.3f %8.1e %8.1e %6s %9.2e %6ld %8s %8.2f%s\n", name.c_str(), res.c_str(),
+                    r.k, r.objective, ratios[i], r.dog_max, r.stitch_gap_max, r.folded ? "yes" : "no",
+                    r.handle_distance, r.factorizations, shape.c_str(), r.total_s,
+                    r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
+        csv += csv_line({name, res, std::to_string(r.k), general(r.objective), general(ratios[i]), general(r.dog_max),
+                         general(r.stitch_gap_max), r.folded ? "1" : "0", general(r.handle_distance),
+                         std::to_string(r.factorizations), r.time_to_shape_s ? general(*r.time_to_shape_s) : "",
+                         general(r.total_s), std::to_string(r.iterations), r.failure});
+        std::fflush(stdout);
+      }
+    }
+  if (out) {
+    out->write_text(csv_name, csv);
+    for (const auto& f : out->commit()) std::cout << "wrote " << f << "\n";
+  }
+}
+
 void bench(const BenchArgs& a) {
   set_thread_count(a.threads);
   std::vector<ModeKind> modes;
@@ -87,6 +146,7 @@ void bench(const BenchArgs& a) {
     out = std::make_unique<OutputSet>(path.has_parent_path() ? path.parent_path().string() : ".");
     csv_name = path.filename().string();
   }
+  if (a.pace) return bench_pace(a, out, csv_name);
   RunConfig config;
   apply_preset_option(a.preset, a.thesis_grid, config);
   config.iterations = a.iterations;
@@ -141,6 +201,17 @@ void register_bench_command(CLI::App& app, Runner& runner) {
       ->capture_default_str();
   cmd->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
   cmd->add_option("--csv", a->csv, "also write the table as CSV to this file");
+  cmd->add_flag("--pace", a->pace,
+                "the pace benchmark: the standard mode's corners drag over each of --ks iterations, then held "
+                "until converged (at most --max-hold); per K the final objective and its ratio to the best K, "
+                "the residuals, the handles' distance to their targets, factorisations and the time to shape");
+  cmd->add_option("--ks", a->ks, "--pace: iterations over which the targets move")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--max-hold", a->max_hold, "--pace: held iterations at most")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
   cmd->callback([a, &runner]() { runner = [a]() { bench(*a); }; });
 }
 

@@ -60,6 +60,9 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
   // must not depend on whether it did (OpenBLAS rounds differently with another thread count).
   StandardOptions options = standard;
   options.blas_threads = 1;
+  // The coarse step follows the fine targets one step per iteration, as in the thesis: the fine
+  // mesh, not the coarse one, is what converges.
+  options.converge = false;
   mode_ = std::make_unique<StandardMode>(*problem_, coarse_scenario, options);
   set_time(0);
   if (scenario.initial.size() > 0)

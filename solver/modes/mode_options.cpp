@@ -18,11 +18,15 @@ const OptionTable<StandardOptions>& standard_option_table() {
           real_option("max_fold_bias", &O::max_fold_bias, Bounds::positive(),
                       "the fold-bias weight is raised at most to this"),
           boolean_option("converge", &O::converge,
-                         "converging iterations: targets that moved far are approached in sub-steps, and "
-                         "once they hold an iteration takes steps until the objective settles (off: max_steps "
-                         "steps per iteration, the thesis)"),
+                         "converging iterations: moving targets are followed in sub-steps, held ones are solved "
+                         "until converged, then cost nothing (off: max_steps steps per iteration, the thesis)"),
           integer_option("max_iteration_steps", &O::max_iteration_steps, Bounds::at_least(1),
                          "SQP steps of a converging iteration whose targets hold, at most"),
+          real_option("max_target_step", &O::max_target_step, Bounds::positive(),
+                      "a converging iteration moves each target at most this fraction of the sheet's size"),
+          real_option("substep_step_length", &O::substep_step_length, Bounds::between(0, 1),
+                      "a sub-step towards moved targets is kept when its line search kept at least this "
+                      "fraction of the full step; else it is halved"),
           choice_option("stitching", &O::stitching, stitching_names(),
                         "exact: the copies of a crease point coincide as hard constraints; soft: only the "
                         "stitching term pulls them together (the thesis)"),

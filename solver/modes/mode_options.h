@@ -21,6 +21,11 @@ struct StandardOptions {
   /// Converging iterations (standard_mode.h); off: sqp.max_steps steps per iteration (the thesis).
   bool converge = true;
   int max_iteration_steps = 10;  ///< SQP steps of a converging iteration whose targets hold, at most
+  /// A continuation sub-step moves a target at most this fraction of the sheet's size.
+  double max_target_step = 0.02;
+  /// A continuation sub-step is kept when its first step's line search kept at least this
+  /// fraction of the full step (and the constraints are met).
+  double substep_step_length = 0.25;
   Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
   /// step of the two-resolution modes, which may run beside the patch solves, uses 1

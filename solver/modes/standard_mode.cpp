@@ -1,7 +1,6 @@
 #include "solver/modes/standard_mode.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 #include "solver/sqp/blas_threads.h"
 #include "solver/sqp/sqp_solver.h"
@@ -11,9 +10,15 @@ namespace {
 
 // Each retry multiplies the fold-bias weight by this.
 constexpr double kFoldBiasGrowth = 10;
-// The smallest continuation sub-step (fraction of the remaining target motion); a sub-step this
-// small that fails fails the iteration.
+// The smallest continuation sub-step (fraction of the remaining target motion); when even it is
+// not kept the iteration leaves x where it was.
 constexpr double kSmallestSubstep = 1.0 / 1024;
+
+// The largest side of the bounding box of the rest state.
+double sheet_size(const Dofs& rest) {
+  const auto p = rest.reshaped(3, rest.size() / 3);
+  return (p.rowwise().maxCoeff() - p.rowwise().minCoeff()).maxCoeff();
+}
 
 }  // namespace
 
@@ -22,16 +27,13 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
       scenario_(scenario),
       options_(options),
       constraints_(problem, options.stitching),
-      base_fold_bias_(problem.weights.fold_bias) {
+      base_fold_bias_(problem.weights.fold_bias),
+      sheet_size_(sheet_size(problem.rest())) {
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;
-  SqpOptions sqp = options_.sqp;
-  // With exact stitching the violated rows after a step lie all along the creases, where local
-  // restoration steps cost more than the global ones they replace.
-  if (sqp.local_fraction < 0 && options_.stitching == Stitching::kExact) sqp.local_fraction = 0;
   sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(),
-                                     constraints_.term(), sqp);
+                                     constraints_.term(), options_.sqp);
 }
 
 StandardMode::~StandardMode() = default;
@@ -100,28 +102,29 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     reached_ = Targets::met_by(problem_, x);
     converged_ = false;
   }
-  const bool moving = reached_->distance(goal) > 0;
+  const double remaining = reached_->distance(goal);
+  const bool moving = remaining > 0;
   if (moving) converged_ = false;
   StepReport report;
   if (converged_ && !last) {  // nothing left to do: no factorisation
     report.converged = true;
     return report;
   }
-  // Moving targets: sqp.max_steps steps (the next iteration moves them again); held ones: up to
-  // max_iteration_steps steps, until converged.
+  // Moving targets: one sub-step of sqp.max_steps steps (the next iteration goes on); held ones:
+  // up to max_iteration_steps steps, until converged.
   const int max_steps = moving ? options_.sqp.max_steps : options_.max_iteration_steps;
+  const double cap = moving ? std::min(1.0, options_.max_target_step * sheet_size_ / remaining) : 1.0;
   while (true) {
-    const double s = moving ? std::min(1.0, substep_) : 1.0;
+    const double s = std::min(cap, substep_);
     const Targets at = reached_->towards(goal, s);
     at.install(problem_);
     const Dofs x0 = x;
     const Eigen::VectorXd lambda0 = sqp_->multipliers();
-    Work work = report.work;
+    const Work before = report.work;
     report = attempt(x, false, max_steps);
-    report.work += work;
-    static const double min_alpha = getenv("SDOG_MINALPHA") ? atof(getenv("SDOG_MINALPHA")) : 0;
-    const bool kept = !report.failed && (!moving || (constraint_max_ <= options_.sqp.constraint_tolerance &&
-                                                     (report.step_length >= min_alpha || substep_ <= kSmallestSubstep)));
+    report.work += before;
+    const bool smallest = s <= kSmallestSubstep;
+    const bool kept = !report.failed && (!moving || report.step_length >= options_.substep_step_length || smallest);
     if (kept) {
       reached_ = at;
       report.target_fraction = s;
@@ -132,24 +135,28 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     }
     x = x0;
     sqp_->set_multipliers(lambda0);
-    if (!moving || substep_ <= kSmallestSubstep) {  // even the smallest sub-step fails
+    if (!moving || smallest) {  // x stays where it was, at the targets it met
       reached_->install(problem_);
       report.target_fraction = 0;
       report.converged = false;
-      if (!report.failed) {
-        report.failed = true;
-        report.failure = "the constraints cannot be met even for a small move of the targets";
-      }
       break;
     }
-    substep_ /= 2;
+    substep_ = std::min(substep_, s) / 2;
   }
-  if (last && !report.failed && constraint_max_ > options_.sqp.final_constraint_tolerance) {
-    const SqpReport projected = sqp_->project(x);
-    report.work += projected.work;
-    if (!projected.failed) constraint_max_ = projected.constraint_max;
-  }
+  if (last && !report.failed) finish(x, report);
   return report;
+}
+
+void StandardMode::finish(Dofs& x, StepReport& report) {
+  const double tolerance = options_.sqp.final_constraint_tolerance;
+  if (constraint_max_ <= tolerance) return;
+  // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
+  // gets there.
+  SqpReport finished = sqp_->project(x);
+  if (finished.failed) finished.constraint_max = constraint_max_;
+  if (finished.constraint_max > tolerance) sqp_->polish(x, finished);
+  report.work += finished.work;
+  constraint_max_ = finished.constraint_max;
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,

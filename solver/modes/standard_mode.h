@@ -10,19 +10,20 @@
 // Exact stitching (the default): the stitching of the crease points is a hard constraint beside
 // the DOG constraints (hard_constraints.h), so the two copies of every crease point coincide to
 // the constraint tolerance after every iteration.
-// Converging iterations (StandardOptions::converge, the default): an iteration takes SQP steps
-// until the KKT error is below the tolerance (none when the state already meets it, so a held,
-// converged state costs no factorisation). Targets that moved further than that can follow are
-// approached by continuation: the targets are moved from those the state has reached towards the
-// requested ones in sub-steps, a sub-step that converges doubles the next one, one that fails or
-// does not converge within kSubstepSteps steps is rolled back and halved. An iteration ends when
-// the requested targets are met or its step budget (max_iteration_steps) is spent; it reports the
-// targets it got to (target_fraction) and the next iteration goes on from there. A target the
-// sheet cannot reach (off the sheet, or asking for stretching) leaves the sheet as close as its
-// constraints allow: the soft targets are met in the least-squares sense, which converges.
 //
-// Exact stitching (the default): the stitching of the crease points is a hard constraint beside
-// the DOG constraints (hard_constraints.h).
+// Converging iterations (StandardOptions::converge, the default). An iteration whose targets hold
+// takes steps until a full step would no longer lower the objective noticeably (SqpSolver::
+// converge), at most max_iteration_steps; once converged, held iterations cost nothing (no
+// factorisation) until a target moves. Targets that move are followed by continuation: from the
+// targets the state meets towards the requested ones, in sub-steps of at most max_target_step of
+// the sheet's size. A sub-step is kept when the constraints are met after it and its line search
+// kept at least substep_step_length of the full step; the next one is then twice as long. Else it
+// is rolled back and halved, down to 1/1024 of the remaining motion. An iteration with moving
+// targets takes one sub-step and reports how far it got (StepReport::target_fraction); the next
+// iteration goes on from there, so a target set at once is reached over several iterations. A
+// target the sheet cannot reach (off the sheet, or asking for stretching) leaves the sheet as
+// close as its constraints allow: the targets are soft, and the iteration converges there. The
+// last iteration of a run projects x to the final constraint tolerance (finish()).
 #include <memory>
 #include <optional>
 
@@ -45,8 +46,6 @@ class StandardMode : public Mode {
   StepReport iterate(const IterationContext& ctx, Dofs& x) override;
   /// Zero multipliers and the base fold bias: a fresh start from x. With exact stitching the next
   /// iteration first restores the constraints (a state from a patch mode has gaps at the creases).
-  /// Zero multipliers and the base fold bias: a fresh start from x (whose targets are those it
-  /// meets).
   void start_from(const Dofs& x) override;
 
   /// Sets the targets of scenario time t.
@@ -64,6 +63,8 @@ class StandardMode : public Mode {
   StepReport attempt(Dofs& x, bool last, int max_steps);
   /// A converging iteration (continuation towards the installed targets).
   StepReport converge(Dofs& x, bool last);
+  /// The last converging iteration's end: x projected to the final constraint tolerance.
+  void finish(Dofs& x, StepReport& report);
   /// One SQP solve, its work added to `report`; false when it failed.
   bool solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max);
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
@@ -81,6 +82,7 @@ class StandardMode : public Mode {
   double substep_ = 1;              ///< of the next continuation sub-step
   bool converged_ = false;          ///< x is converged for reached_
   double constraint_max_ = 0;       ///< after the last solve
+  double sheet_size_;               ///< largest side of the rest state's bounding box
 };
 
 }  // namespace sdog

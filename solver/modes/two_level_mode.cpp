@@ -51,6 +51,7 @@ void TwoLevelMode::begin_finish_if_due(int left) {
   // (docs/design/rejected.md).
   StandardOptions options = standard_;
   options.max_fold_bias = problem_.weights.fold_bias * options_.finish_fold_bias_cap;
+  options.converge = false;  // the finish's steps per iteration are the thesis's
   finish_ = std::make_unique<StandardMode>(problem_, scenario_, options);
 }
 

@@ -39,6 +39,7 @@ bool Targets::matches(const Targets& other) const {
 }
 
 Targets Targets::towards(const Targets& other, double s) const {
+  if (s >= 1) return other;  // exactly: a reached target is not "moved" by a rounding error
   Targets t = *this;
   for (size_t b = 0; b < positions.size(); ++b) t.positions[b] += s * (other.positions[b] - positions[b]);
   for (size_t b = 0; b < cosines.size(); ++b) t.cosines[b] += s * (other.cosines[b] - cosines[b]);

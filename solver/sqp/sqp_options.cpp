@@ -8,9 +8,9 @@ const OptionTable<SqpOptions>& sqp_option_table() {
       real_option("kkt_tolerance", &S::kkt_tolerance, Bounds::positive(),
                   "an iteration takes optimality steps until max(|grad f - J^T lambda|_inf, |c|_inf) is below this"),
       integer_option("max_steps", &S::max_steps, Bounds::at_least(1), "optimality (SQP) steps per iteration at most"),
-      real_option("converged_change", &S::converged_change, Bounds::positive(),
-                  "a converging iteration stops once a step changes the objective by at most this fraction of "
-                  "max(objective, 1)"),
+      real_option("converged_decrease", &S::converged_decrease, Bounds::positive(),
+                  "a converging iteration has converged once a full step would lower the objective by at most "
+                  "this fraction of max(objective, 1), to first order"),
       real_option("epsilon", &S::epsilon, Bounds::positive(),
                   "regularisation of the KKT system's constraint block (rho = 1/epsilon)"),
       real_option("restoration_epsilon", &S::restoration_epsilon, Bounds::positive(),

@@ -11,8 +11,9 @@ struct SqpOptions {
   static constexpr double kDefaultLocalFraction = 0.1;
   double kkt_tolerance = 1e-3;               ///< on max(|grad f - J^T lambda|_inf, |c|_inf)
   int max_steps = 1;                         ///< optimality steps per iteration (reference: 5)
-  /// A converging iteration stops once a step changes f by at most this fraction (of max(f, 1)).
-  double converged_change = 1e-4;
+  /// A converging iteration stops once a full step would lower f by at most this fraction of
+  /// max(f, 1), to first order (-grad f . d).
+  double converged_decrease = 1e-4;
   double epsilon = 1e-6;                     ///< constraint-block regularisation (rho = 1/epsilon)
   double restoration_epsilon = 1e-6;         ///< of global and local restoration steps
   double polish_epsilon = 1e-8;              ///< of restoration steps when polishing

@@ -71,7 +71,8 @@ struct SqpReport {
   /// -grad f . d of the last optimality step d: the objective's decrease a full step would give to
   /// first order.
   double full_step_decrease = 0;
-  bool converged = false;     ///< stationary or f changed by at most converged_change, and feasible (converge() only)
+  /// converge() only: a full step would lower f by at most converged_decrease, and x is feasible.
+  bool converged = false;
   bool failed = false;
   std::string failure;  ///< why, when failed (x and the multipliers were rolled back)
 };
@@ -89,13 +90,12 @@ class SqpSolver {
   /// of a run (tighter constraint tolerance, polish).
   SqpReport iterate(Dofs& x, bool last = false);
 
-  /// Optimality steps from x until the KKT error is below kkt_tolerance (none when it already is:
-  /// a converged state costs no factorisation), at most `max_steps`, then restoration to the
-  /// constraint tolerance. Reports whether the state converged.
+  /// Steps from x, each an optimality step and its restoration to the constraint tolerance, until
+  /// a full step would lower the objective by at most converged_decrease (relative, first order)
+  /// with the constraints met, at most `max_steps`. Reports whether x converged.
   SqpReport converge(Dofs& x, int max_steps);
-  /// The last iteration's polish of x (step 3 above), its work added to `report`, whose
-  /// constraint_max is x's on entry and is updated. At most polish_factorizations
-  /// factorisations (0: no limit).
+  /// The last iteration's polish of x (above), its work added to `report`, whose constraint_max
+  /// is x's on entry and is updated. At most polish_factorizations factorisations (0: no limit).
   void polish(Dofs& x, SqpReport& report);
 
   /// Only restoration steps (no objective step): moves x onto the constraints until |c| is within

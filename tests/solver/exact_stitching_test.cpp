@@ -80,6 +80,7 @@ TEST(PolishBudget, BoundsTheLastIterationsFactorisations) {
   auto last_factorizations = [&](int budget) {
     RunConfig config = test::short_run(20, 0);
     config.standard.sqp.polish_factorizations = budget;
+    config.standard.converge = false;  // the thesis's iterations: the last one always polishes
     const test::RunResult r = test::run_mode("standard", model, config);
     EXPECT_FALSE(r.summary.failed()) << r.summary.failure;
     return r.reports.back().step.work.factorizations;

@@ -47,6 +47,8 @@ SwitchedRun run_with_switches(const RunConfig& config, ModeKind first) {
 // Every mode takes over from another and hands over to the next; the standard mode finishes.
 TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   RunConfig config = test::short_run(100, 30);
+  // The step sizes are compared with the standard mode's one step per iteration of the drag.
+  config.standard.converge = false;
   config.switches = {{16, ModeKind::kTwoLevel}, {31, ModeKind::kCoarse},    {46, ModeKind::kSubsolvers},
                      {61, ModeKind::kVsAdmm},   {71, ModeKind::kJAdmm},     {76, ModeKind::kProxJAdmm},
                      {81, ModeKind::kStandard}};
@@ -111,6 +113,7 @@ TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
 // deformed state continues smoothly, and a coarse run can start from a given state (flatten).
 TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
   RunConfig config = test::short_run(60, 10);
+  config.standard.converge = false;  // as above
   config.switches = {{41, ModeKind::kTwoLevel}};
   const SwitchedRun s = run_with_switches(config, ModeKind::kStandard);
   ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;

@@ -1,0 +1,104 @@
+// Converging iterations of the standard mode (standard_mode.h): far targets are followed by
+// continuation, an unreachable target leaves the sheet as close as it can get, and a converged,
+// held state costs nothing.
+#include <gtest/gtest.h>
+
+#include "geometry/dog_model.h"
+#include "solver/session/session.h"
+#include "tests/solver/session_fixture.h"
+#include "tests/test_support.h"
+
+namespace sdog {
+namespace {
+
+const DogModel& model() { return test::session_model(); }
+
+Eigen::Vector3d vertex_of(const Dofs& x, int v) { return x.segment<3>(3 * v); }
+
+struct Followed {
+  bool failed = false;
+  bool converged = false;
+  int iterations = 0;
+  double distance = 0;  ///< of the dragged corner to its target at the end
+  double dog_max = 0;
+  double stitch_gap_max = 0;
+};
+
+// The first grid corner held, the last one's target moved by `move` at once; steps until an
+// iteration reports convergence (at most max_iterations).
+Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) {
+  RunConfig config = test::interactive();
+  config.standard.converge = converge;
+  Session s(model(), config, ModeKind::kStandard);
+  const int last = model().fine.vertex_count() - 1;
+  s.add_handle(0);
+  s.add_handle(last);
+  const Eigen::Vector3d target = vertex_of(s.positions(), last) + move;
+  s.move_handle(1, target);
+  Followed f;
+  while (f.iterations < max_iterations && !f.converged) {
+    const IterationReport r = s.step();
+    ++f.iterations;
+    if (r.step.failed) {
+      f.failed = true;
+      break;
+    }
+    f.converged = r.step.converged.value_or(false);
+    f.dog_max = r.diagnostics.dog_max;
+    f.stitch_gap_max = r.diagnostics.stitch_gap_max;
+  }
+  f.distance = (vertex_of(s.positions(), last) - target).norm();
+  return f;
+}
+
+// The sheet of the session model is 20 mesh units wide: the dragged corner is set at once onto
+// the far side of the sheet, folding it over along the other diagonal.
+TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
+  const Eigen::MatrixX3d& rest = model().fine.V;
+  const Eigen::Vector3d move = 0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
+  const Followed f = follow(move, true, 400);
+  ASSERT_FALSE(f.failed);
+  EXPECT_TRUE(f.converged) << "after " << f.iterations << " iterations";
+  EXPECT_GT(f.iterations, 10) << "no continuation: the target was reached in few iterations";
+  EXPECT_LT(f.distance, 0.5);
+  EXPECT_LT(f.dog_max, 1e-4);
+  EXPECT_LT(f.stitch_gap_max, 1e-4);
+}
+
+// A target 50 units off the sheet, in its plane and away from the held corner: the sheet cannot
+// stretch, so the best it can do is lie flat with the corner as near as the other corner allows.
+TEST(Continuation, AnUnreachableTargetConvergesAsCloseAsTheSheetAllows) {
+  const Eigen::MatrixX3d& rest = model().fine.V;
+  const Eigen::Vector3d away = (rest.row(rest.rows() - 1) - rest.row(0)).transpose().normalized();
+  const Followed f = follow(50 * away, true, 300);
+  ASSERT_FALSE(f.failed);
+  EXPECT_TRUE(f.converged) << "after " << f.iterations << " iterations";
+  // The handle is soft: it may be pulled a little past the rest diagonal, never much.
+  EXPECT_GT(f.distance, 49);
+  EXPECT_LT(f.distance, 50.5);
+  EXPECT_LT(f.dog_max, 1e-4);
+}
+
+// Once converged, a held state costs no factorisation, and says it is converged.
+TEST(Continuation, HeldConvergedIterationsCostNothing) {
+  RunConfig config = test::interactive();
+  Session s(model(), config, ModeKind::kStandard);
+  const int last = model().fine.vertex_count() - 1;
+  s.add_handle(0);
+  s.add_handle(last);
+  s.move_handle(1, vertex_of(s.positions(), last) + Eigen::Vector3d(0, 0, 2));
+  bool converged = false;
+  for (int k = 0; k < 200 && !converged; ++k) converged = s.step().step.converged.value_or(false);
+  ASSERT_TRUE(converged);
+  const Dofs x = s.positions();
+  for (int k = 0; k < 3; ++k) {
+    const IterationReport r = s.step();
+    EXPECT_EQ(r.step.work.factorizations, 0);
+    EXPECT_EQ(r.step.converged, std::optional<bool>(true));
+    EXPECT_EQ(r.step.target_fraction, 1);
+  }
+  EXPECT_EQ(s.positions(), x);
+}
+
+}  // namespace
+}  // namespace sdog
