@@ -52,6 +52,11 @@ class Session {
   const Dofs* coarse_positions() const { return mode_->coarse_positions(); }
   /// Scenario time of the last iteration (0 before the first).
   double time() const { return iteration_ > 0 ? base_.time_of(iteration_) : 0.0; }
+  /// The base scenario's targets no longer move: its time has reached 1, or it has none that move
+  /// (none, flatten).
+  bool scenario_done() const {
+    return time() >= 1 || config_.scenario == ScenarioKind::kNone || config_.scenario == ScenarioKind::kFlatten;
+  }
   /// Iterations taken since the start or the last reset.
   int iteration() const { return iteration_; }
   /// Base scenario plus the user's constraints, as the solver sees them.

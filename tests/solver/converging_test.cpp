@@ -19,7 +19,8 @@ struct Followed {
   bool failed = false;
   bool converged = false;
   int iterations = 0;
-  double distance = 0;  ///< of the dragged corner to its target at the end
+  double distance = 0;       ///< of the dragged corner to its target at the end
+  double held_distance = 0;  ///< of the held corner to its target at the end
   double dog_max = 0;
   double stitch_gap_max = 0;
 };
@@ -35,6 +36,7 @@ Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) 
   s.add_handle(last);
   const Eigen::Vector3d target = vertex_of(s.positions(), last) + move;
   s.move_handle(1, target);
+  const Eigen::Vector3d held = vertex_of(s.positions(), 0);
   Followed f;
   while (f.iterations < max_iterations && !f.converged) {
     const IterationReport r = s.step();
@@ -48,6 +50,7 @@ Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) 
     f.stitch_gap_max = r.diagnostics.stitch_gap_max;
   }
   f.distance = (vertex_of(s.positions(), last) - target).norm();
+  f.held_distance = (vertex_of(s.positions(), 0) - held).norm();
   return f;
 }
 
@@ -65,17 +68,18 @@ TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
   EXPECT_LT(f.stitch_gap_max, 1e-4);
 }
 
-// A target 50 units off the sheet, in its plane and away from the held corner: the sheet cannot
-// stretch, so the best it can do is lie flat with the corner as near as the other corner allows.
+// A target 50 units off the sheet, in its plane and away from the held corner. Were the sheet
+// rigid, the two corners' distances to their targets would add up to 50 at best (the sheet flat
+// along the line between the targets); the isometry is a soft term, so the pull stretches it a
+// little and the sum ends below 50. The iteration converges there, without a failure.
 TEST(Continuation, AnUnreachableTargetConvergesAsCloseAsTheSheetAllows) {
   const Eigen::MatrixX3d& rest = model().fine.V;
   const Eigen::Vector3d away = (rest.row(rest.rows() - 1) - rest.row(0)).transpose().normalized();
-  const Followed f = follow(50 * away, true, 300);
+  const Followed f = follow(50 * away, true, 600);
   ASSERT_FALSE(f.failed);
   EXPECT_TRUE(f.converged) << "after " << f.iterations << " iterations";
-  // The handle is soft: it may be pulled a little past the rest diagonal, never much.
-  EXPECT_GT(f.distance, 49);
-  EXPECT_LT(f.distance, 50.5);
+  EXPECT_LT(f.distance + f.held_distance, 50);
+  EXPECT_GT(f.held_distance, 1);  // the whole sheet is pulled along
   EXPECT_LT(f.dog_max, 1e-4);
 }
 

@@ -156,8 +156,11 @@ class StudioTest : public QObject {
     window_->move_handle(1, lifted);
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[1].target == lifted, kWait);
     QVERIFY(window_->snapshot()->can_undo);
-    window_->step(30);
-    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 30, kWait);
+    // Played, the solver follows the target and stops by itself once the shape has converged.
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->status_text().contains("stopped"), kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->playing(), kWait);
+    QVERIFY2(window_->status_text().contains("converged"), qPrintable(window_->status_text()));
     const Eigen::Vector3d moved = window_->snapshot()->state.fine.row(last).transpose();
     QVERIFY2((moved - lifted).norm() < 0.5, qPrintable(QString::number((moved - lifted).norm())));
     window_->undo();
@@ -170,6 +173,36 @@ class StudioTest : public QObject {
     // A vertex that does not exist is an error message, not a crash.
     window_->add_handle(last + 1);
     QTRY_COMPARE_WITH_TIMEOUT(errors_.size(), 1, kWait);
+  }
+
+  // Played with nothing to do, the solver stops at once; three quick moves of a handle play on,
+  // the shape converges where the last move left the target, and the solver stops by itself.
+  void follows_three_quick_moves_and_stops_when_converged() {
+    QVERIFY(window_->set_scenario("none"));
+    open();
+    const int last = window_->model()->fine.vertex_count() - 1;
+    window_->add_handle(0);
+    window_->add_handle(last);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(2), kWait);
+    const Eigen::Vector3d rest = window_->snapshot()->state.fine.row(last).transpose();
+    window_->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->status_text().contains("stopped"), kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->playing(), kWait);
+    const int before = window_->reports_received();
+    Eigen::Vector3d target = rest;
+    for (int move = 1; move <= 3; ++move) {
+      target = rest + Eigen::Vector3d(-2.0 * move, 0, 2.5 * move);
+      window_->drag_handle(1, target, move == 1);
+      QTest::qWait(50);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(window_->reports_received() > before + 3 && !window_->playing() &&
+                                 window_->status_text().contains("stopped"),
+                             kWait);
+    QVERIFY2(window_->status_text().contains("converged"), qPrintable(window_->status_text()));
+    QCOMPARE(window_->snapshot()->constraints.handles[1].target, target);
+    const Eigen::Vector3d at = window_->snapshot()->state.fine.row(last).transpose();
+    QVERIFY2((at - target).norm() < 0.5, qPrintable(QString::number((at - target).norm())));
+    QVERIFY(errors_.isEmpty());
   }
 
   void picks_and_drags_with_the_mouse() {

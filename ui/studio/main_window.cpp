@@ -141,6 +141,10 @@ void MainWindow::start_worker() {
     playing_ = on;
     update_actions();
   });
+  connect(worker_, &SolverWorker::stopped_converged, this, [this, generation] {
+    if (generation == generation_)
+      status_->setText(status_->text() + " - stopped: nothing left to do (edit a constraint or press Play to go on)");
+  });
   connect(worker_, &SolverWorker::workspace_saved, this, &MainWindow::workspace_saved);
   connect(worker_, &SolverWorker::frames_written, this, &MainWindow::frames_written);
   solver_thread_.start();
@@ -226,8 +230,13 @@ void MainWindow::show_snapshot(const Snapshot& s) {
 void MainWindow::show_report(const IterationReport& r) {
   ++reports_received_;
   chart_->add(r);
+  QString progress;
+  if (r.step.converged) {
+    progress = *r.step.converged ? ", converged"
+                                 : QString(", converging (%1% of the targets' move)").arg(100 * r.step.target_fraction, 0, 'f', 0);
+  }
   status_->setText(QString("iteration %1 (%2, t = %3): objective %4, DOG residual max %5, stitch gap max %6, "
-                           "%7 ms%8")
+                           "%7 ms%8%9")
                        .arg(r.iteration)
                        .arg(QString::fromStdString(r.mode))
                        .arg(r.t, 0, 'f', 3)
@@ -235,6 +244,7 @@ void MainWindow::show_report(const IterationReport& r) {
                        .arg(r.diagnostics.dog_max, 0, 'g', 3)
                        .arg(r.diagnostics.stitch_gap_max, 0, 'g', 3)
                        .arg(r.iteration_ms, 0, 'f', 1)
+                       .arg(progress)
                        .arg(r.step.failed ? ", FAILED: " + QString::fromStdString(r.step.failure) : QString()));
 }
 
@@ -287,6 +297,7 @@ void MainWindow::show_in_inspector(int hovered) {
 }
 
 QString MainWindow::inspector_text() const { return inspector_->text(); }
+QString MainWindow::status_text() const { return status_->text(); }
 
 void MainWindow::set_layer(vis::Layer layer, bool on) {
   QAction* action = layer_actions_.at(layer);
@@ -403,6 +414,9 @@ void MainWindow::add_handles(const std::vector<int>& vertices) {
 }
 void MainWindow::move_handle(int handle, const Eigen::Vector3d& target) {
   post([handle, target](SolverWorker& w) { w.move_handle(handle, target); });
+}
+void MainWindow::drag_handle(int handle, const Eigen::Vector3d& target, bool first) {
+  if (worker_) worker_->drag_handle(handle, target, first);
 }
 void MainWindow::remove_handle(int handle) { post([handle](SolverWorker& w) { w.remove_handle(handle); }); }
 void MainWindow::add_angle(int point, double degrees) {

@@ -96,6 +96,8 @@ class MainWindow : public QMainWindow {
   /// Every vertex of the list a handle, as one edit (Edit > Make handle on a selection).
   void add_handles(const std::vector<int>& vertices);
   void move_handle(int handle, const Eigen::Vector3d& target);
+  /// A move of a handle during a mouse drag (`first`: the drag's first; a drag is one edit).
+  void drag_handle(int handle, const Eigen::Vector3d& target, bool first);
   void remove_handle(int handle);
   void add_angle(int crease_point, double degrees);
   void remove_angle(int angle);
@@ -119,6 +121,7 @@ class MainWindow : public QMainWindow {
   bool playing() const { return playing_; }
   int selected_vertex() const { return selected_vertex_; }
   QString inspector_text() const;
+  QString status_text() const;
   vis::Scene* scene() const { return scene_.get(); }
   vtkRenderer* renderer() const { return renderer_; }
   /// The 3D view's interactor (its style picks on click and drags handles with Shift).

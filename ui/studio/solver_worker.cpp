@@ -69,7 +69,15 @@ void SolverWorker::step() {
   if (report.step.failed) {
     pause();
     send_snapshot();
-    throw SolverError("iteration " + std::to_string(report.iteration) + " failed: " + report.step.failure);
+    throw SolverError("iteration " + std::to_string(report.iteration) + " failed: " + report.step.failure +
+                      ". The sheet stays at the last good state: undo the last edit (Ctrl+Z), move the handle a "
+                      "shorter way, or reset the solver (Ctrl+Backspace).");
+  }
+  if (play_timer_->isActive() && session_->scenario_done() && report.step.converged.value_or(false)) {
+    pause();  // sends the snapshot
+    stopped_converged_ = true;
+    Q_EMIT stopped_converged();
+    return;
   }
   // While playing, a state the window has not taken yet is replaced by the next one.
   if (!play_timer_->isActive() || snapshot_taken_) send_snapshot();
@@ -77,12 +85,18 @@ void SolverWorker::step() {
 
 void SolverWorker::play() {
   session();
+  stopped_converged_ = false;
   if (play_timer_->isActive()) return;
   play_timer_->start();
   Q_EMIT playing_changed(true);
 }
 
+void SolverWorker::play_on() {
+  if (stopped_converged_) play();
+}
+
 void SolverWorker::pause() {
+  stopped_converged_ = false;
   if (!play_timer_->isActive()) return;
   play_timer_->stop();
   Q_EMIT playing_changed(false);
@@ -101,6 +115,7 @@ void SolverWorker::set_mode(const std::string& mode) {
 
 void SolverWorker::add_handles(const std::vector<int>& vertices) {
   session().add_handles(vertices);
+  play_on();
   send_snapshot();
 }
 
@@ -125,36 +140,43 @@ void SolverWorker::apply_drag() {
     drag_.reset();
   }
   session().move_handle(d.handle, d.target, /*merge=*/!d.first);
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::move_handle(int handle, const Eigen::Vector3d& target) {
   session().move_handle(handle, target);
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::remove_handle(int handle) {
   session().remove_handle(handle);
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::add_angle(int crease_point, double degrees) {
   session().add_angle(crease_point, degrees);
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::remove_angle(int angle) {
   session().remove_angle(angle);
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::undo() {
   session().undo();
+  play_on();
   send_snapshot();
 }
 
 void SolverWorker::redo() {
   session().redo();
+  play_on();
   send_snapshot();
 }
 

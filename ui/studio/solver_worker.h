@@ -46,6 +46,9 @@ class SolverWorker : public QObject {
 
   // Commands (call them through post()). Each sends a snapshot afterwards.
   void open(const RunConfig& config, const std::string& mode);
+  /// One iteration. While playing, an iteration that reports the shape converged after the
+  /// scenario's end stops the play (stopped_converged()); the next edit of the constraints plays
+  /// on. A failed iteration pauses and throws SolverError with what the user can do.
   void step();
   void play();
   void pause();
@@ -74,11 +77,15 @@ class SolverWorker : public QObject {
   void playing_changed(bool playing);
   void workspace_saved(const QString& path);
   void frames_written(const QString& dir, int count);
+  /// Playing stopped by itself: the shape has converged and nothing moves.
+  void stopped_converged();
 
  private:
   Session& session();
   void send_snapshot();
   void apply_drag();
+  /// After an edit: plays on when the play stopped because the shape had converged.
+  void play_on();
   struct Drag {
     int handle;
     Eigen::Vector3d target;
@@ -89,6 +96,7 @@ class SolverWorker : public QObject {
   std::shared_ptr<const DogModel> model_;
   std::unique_ptr<Session> session_;
   QTimer* play_timer_;
+  bool stopped_converged_ = false;  ///< the play stopped by itself; an edit resumes it
   std::atomic<bool> snapshot_taken_{true};
   std::unique_ptr<OutputSet> frame_files_;
   std::unique_ptr<vis::FrameWriter> frame_writer_;
