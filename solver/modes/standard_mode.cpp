@@ -13,6 +13,8 @@ constexpr double kFoldBiasGrowth = 10;
 // The smallest continuation sub-step (fraction of the remaining target motion); when even it is
 // not kept the iteration leaves x where it was.
 constexpr double kSmallestSubstep = 1.0 / 1024;
+// A sub-step that moves the targets at most this fraction of max_target_step is short.
+constexpr double kShortSubstep = 1.0 / 4;
 
 // The largest side of the bounding box of the rest state.
 double sheet_size(const Dofs& rest) {
@@ -114,6 +116,7 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   // up to max_iteration_steps steps, until converged.
   const int max_steps = moving ? options_.sqp.max_steps : options_.max_iteration_steps;
   const double cap = moving ? std::min(1.0, options_.max_target_step * sheet_size_ / remaining) : 1.0;
+  const double short_move_length = kShortSubstep * options_.max_target_step * sheet_size_;
   while (true) {
     const double s = std::min(cap, substep_);
     const Targets at = reached_->towards(goal, s);
@@ -121,10 +124,15 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     const Dofs x0 = x;
     const Eigen::VectorXd lambda0 = sqp_->multipliers();
     const Work before = report.work;
-    report = attempt(x, false, max_steps);
+    // A short sub-step is kept whatever its step length: it stays on the targets' path anyway.
+    // When it is all the motion left (targets that move little per iteration, as in the thesis
+    // protocol), the iteration is the thesis's.
+    const bool short_move = s * remaining <= short_move_length;
+    report = attempt(x, false, moving && short_move && s == 1 ? 0 : max_steps);
     report.work += before;
     const bool smallest = s <= kSmallestSubstep;
-    const bool kept = !report.failed && (!moving || report.step_length >= options_.substep_step_length || smallest);
+    const bool kept = !report.failed &&
+                      (!moving || report.step_length >= options_.substep_step_length || short_move || smallest);
     if (kept) {
       reached_ = at;
       report.target_fraction = s;

@@ -16,9 +16,9 @@
 // converge), at most max_iteration_steps; once converged, held iterations cost nothing (no
 // factorisation) until a target moves. Targets that move are followed by continuation: from the
 // targets the state meets towards the requested ones, in sub-steps of at most max_target_step of
-// the sheet's size. A sub-step is kept when the constraints are met after it and its line search
-// kept at least substep_step_length of the full step; the next one is then twice as long. Else it
-// is rolled back and halved, down to 1/1024 of the remaining motion. An iteration with moving
+// the sheet's size. A sub-step is kept when its line search kept at least substep_step_length of
+// the full step, or when it is short (at most 1/4 of that cap); the next one is then twice as
+// long. Else it is rolled back and halved, down to 1/1024 of the remaining motion. An iteration with moving
 // targets takes one sub-step and reports how far it got (StepReport::target_fraction); the next
 // iteration goes on from there, so a target set at once is reached over several iterations. A
 // target the sheet cannot reach (off the sheet, or asking for stretching) leaves the sheet as
