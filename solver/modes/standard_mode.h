@@ -18,9 +18,10 @@
 // targets the state meets towards the requested ones, in sub-steps of at most max_target_step of
 // the sheet's size. A sub-step is kept when its line search kept at least substep_step_length of
 // the full step, or when it is short (at most 1/4 of that cap); the next one is then twice as
-// long. Else it is rolled back and halved, down to 1/1024 of the remaining motion. An iteration with moving
-// targets takes one sub-step and reports how far it got (StepReport::target_fraction); the next
-// iteration goes on from there, so a target set at once is reached over several iterations. A
+// long. Else it is rolled back and halved, down to 1/1024 of the remaining motion. A short
+// sub-step that is all the motion left is the thesis's iteration. An iteration with moving targets
+// takes one sub-step and reports how far it got (StepReport::target_fraction); the next iteration
+// goes on from there, so a target set at once is reached over several iterations. A
 // target the sheet cannot reach (off the sheet, or asking for stretching) leaves the sheet as
 // close as its constraints allow: the targets are soft, and the iteration converges there. The
 // last iteration of a run projects x to the final constraint tolerance (finish()).

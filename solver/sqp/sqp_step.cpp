@@ -1,8 +1,6 @@
 // One optimality step of the SQP solver: the regularised KKT system solved through K, then a
 // backtracking line search on the augmented Lagrangian (sqp_solver.h, step 1).
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "base/text_format.h"
 #include "solver/sqp/sqp_solver.h"
