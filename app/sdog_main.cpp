@@ -3,11 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "app/blas_kernels.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "base/errors.h"
 
 int main(int argc, char** argv) {
+  sdog::use_avx2_blas_kernels(argv);
   CLI::App app;
   sdog::cli::Runner run;
   sdog::cli::register_sdog_commands(app, run, sdog::cli::command_line_text(argc, argv));

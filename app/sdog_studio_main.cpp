@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 
+#include "app/blas_kernels.h"
 #include "app/studio_options.h"
 #include "app/versions.h"
 #include "base/errors.h"
@@ -102,6 +103,7 @@ void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a
 }  // namespace
 
 int main(int argc, char** argv) {
+  sdog::use_avx2_blas_kernels(argv);
   StudioArgs a;
   CLI::App cli;
   sdog::cli::add_studio_options(cli, a);

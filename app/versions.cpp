@@ -8,6 +8,7 @@
 #include <string>
 
 #include "solver/patches/ceres/ceres_patch.h"
+#include "solver/sqp/blas_threads.h"
 #include "solver/sqp/cholmod_factor.h"
 
 namespace sdog::cli {
@@ -23,6 +24,7 @@ nlohmann::json software_versions() {
           {"cgal", CGAL_VERSION_STR},
           {"ceres", ceres_version()},
           {"cholmod", cholmod_version()},
+          {"blas", blas_description()},
           {"tbb", TBB_VERSION_STRING},
           {"vtk", vtkVersion::GetVTKVersion()},
           {"nlohmann_json",

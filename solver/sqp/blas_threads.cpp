@@ -26,6 +26,12 @@ void serial_openmp_regions() {
   if (levels) levels(0);
 }
 
+std::string blas_description() {
+  using GetText = char* (*)();
+  const auto config = reinterpret_cast<GetText>(dlsym(RTLD_DEFAULT, "openblas_get_config"));
+  return config ? config() : "unknown (not OpenBLAS)";
+}
+
 bool set_blas_threads(int n) {
   static const auto threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   serial_openmp_regions();

@@ -17,6 +17,8 @@
 // on their own, such as the TBB workers of the patch modes, call serial_openmp_regions() too:
 // without it every worker's first factorisation starts a team of 4 OpenMP threads that then spin
 // beside the patch solves.
+#include <string>
+
 namespace sdog {
 
 /// The count from SDOG_BLAS_THREADS (1..64), else 2.
@@ -24,6 +26,9 @@ int default_blas_threads();
 /// Sets the BLAS (OpenBLAS) thread count if that BLAS is loaded and turns CHOLMOD's OpenMP
 /// regions serial if OpenMP is loaded; returns false if OpenBLAS is not loaded.
 bool set_blas_threads(int n);
+/// The BLAS in use: OpenBLAS's configuration, which names the kernels it runs
+/// (app/blas_kernels.h), or "unknown (not OpenBLAS)".
+std::string blas_description();
 /// Makes every OpenMP region entered from the calling thread run on that thread (nothing if no
 /// OpenMP runtime is loaded).
 void serial_openmp_regions();

@@ -114,6 +114,22 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
 }
 
 // patches.csv of a patch mode: one row per patch and iteration, a timeline of the TBB workers.
+std::string blas_of_run(const std::string& prefix, const std::string& name) {
+  const std::string dir = test::temp_dir(name) + "/out";
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 11x11 --iters 1 --hold 0 -q --frames-every 0 --out " + dir,
+                                prefix);
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto json = nlohmann::json::parse(test::slurp(dir + "/run.json"));
+  return json["software"]["blas"].get<std::string>();
+}
+
+TEST(RunCommand, RunsOpenBlasAvx2KernelsWhereTheCpuHasThemUnlessToldOtherwise) {
+  __builtin_cpu_init();
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 and FMA";
+  EXPECT_NE(blas_of_run("env -u OPENBLAS_CORETYPE", "blas_default").find("Haswell"), std::string::npos);
+  EXPECT_NE(blas_of_run("env OPENBLAS_CORETYPE=Prescott", "blas_prescott").find("Prescott"), std::string::npos);
+}
+
 TEST(RunCommand, PatchModesWriteThePerPatchTimeline) {
   if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one core: no parallel patch solves to see";
   const std::string dir = test::temp_dir("run_patches") + "/out";

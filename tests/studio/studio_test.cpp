@@ -25,6 +25,7 @@
 #include <vtkCommand.h>
 #include <vtkRenderWindowInteractor.h>
 
+#include "app/blas_kernels.h"
 #include "solver/terms/term.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
@@ -574,6 +575,7 @@ class StudioTest : public QObject {
 };
 
 int main(int argc, char** argv) {
+  sdog::use_avx2_blas_kernels(argv);
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   StudioTest test;
