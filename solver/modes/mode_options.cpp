@@ -21,7 +21,8 @@ const OptionTable<StandardOptions>& standard_option_table() {
                          "converging iterations: moving targets are followed in sub-steps, held ones are solved "
                          "until converged, then cost nothing (off: max_steps steps per iteration, the thesis)"),
           integer_option("max_iteration_steps", &O::max_iteration_steps, Bounds::at_least(1),
-                         "SQP steps of a converging iteration whose targets hold, at most"),
+                         "SQP steps of a converging iteration at most (towards convergence when the targets "
+                         "hold, continuation sub-steps when they moved)"),
           real_option("max_target_step", &O::max_target_step, Bounds::positive(),
                       "a converging iteration moves each target at most this fraction of the sheet's size"),
           real_option("substep_step_length", &O::substep_step_length, Bounds::between(0, 1),

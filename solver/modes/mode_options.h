@@ -17,14 +17,16 @@ enum class Stitching { kExact, kSoft };
 struct StandardOptions {
   SqpOptions sqp;
   bool folding = true;          ///< fold check and fold-bias escalation (standard_mode.h)
-  double max_fold_bias = 1e14;  ///< the escalation stops at this weight
+  double max_fold_bias = 1e6;  ///< the escalation stops at this weight (the thesis: 1e14)
   /// Converging iterations (standard_mode.h); off: sqp.max_steps steps per iteration (the thesis).
   bool converge = true;
-  int max_iteration_steps = 10;  ///< SQP steps of a converging iteration whose targets hold, at most
+  /// SQP steps of a converging iteration at most: steps towards convergence when the targets
+  /// hold, continuation sub-steps (kept or not) when they moved.
+  int max_iteration_steps = 10;
   /// A continuation sub-step moves a target at most this fraction of the sheet's size.
   double max_target_step = 0.02;
-  /// A continuation sub-step is kept when its first step's line search kept at least this
-  /// fraction of the full step (and the constraints are met).
+  /// A continuation sub-step is kept when its line search kept at least this fraction of the
+  /// full step.
   double substep_step_length = 0.25;
   Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse

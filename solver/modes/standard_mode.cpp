@@ -4,6 +4,7 @@
 
 #include "solver/sqp/blas_threads.h"
 #include "solver/sqp/sqp_solver.h"
+#include "solver/terms/crease_geometry.h"
 
 namespace sdog {
 namespace {
@@ -47,14 +48,15 @@ StepReport StandardMode::iterate(const IterationContext& ctx, Dofs& x) {
   return step(x, ctx.last());
 }
 
-bool StandardMode::solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max) {
-  const SqpReport r = max_steps > 0 ? sqp_->converge(x, max_steps) : sqp_->iterate(x, last);
+bool StandardMode::solve(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging, StepReport& report,
+                         double& constraint_max) {
+  const SqpReport r = converging ? sqp_->converge(x, *converging) : sqp_->iterate(x, last);
   report.work += r.work;
   report.step_length = r.step_length;
   constraint_max = r.constraint_max;
   report.failed = r.failed;
   report.failure = r.failure;
-  if (max_steps > 0) report.converged = r.converged;
+  if (converging) report.converged = r.converged;
   return !r.failed;
 }
 
@@ -71,30 +73,34 @@ StepReport StandardMode::step(Dofs& x, bool last) {
       report.failure = restored.failure;
       return report;
     }
-    StepReport report = options_.converge ? converge(x, last) : attempt(x, last, 0);
+    StepReport report = options_.converge ? converge(x, last) : attempt(x, last, std::nullopt);
     report.work += restored.work;
     return report;
   }
-  return options_.converge ? converge(x, last) : attempt(x, last, 0);
+  return options_.converge ? converge(x, last) : attempt(x, last, std::nullopt);
 }
 
-StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
+int StandardMode::unfolded_sites(const Dofs& x) const {
+  return options_.folding ? check_folded(problem_.mesh(), problem_.sites, x).violations : 0;
+}
+
+StepReport StandardMode::attempt(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging) {
   StepReport report;
   double& constraint_max = constraint_max_;  // of the last attempt
   if (!options_.folding) {
-    solve(x, last, max_steps, report, constraint_max);
+    solve(x, last, converging, report, constraint_max);
     return report;
   }
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = sqp_->multipliers();
-  if (!solve(x, last, max_steps, report, constraint_max)) return report;
+  if (!solve(x, last, converging, report, constraint_max)) return report;
   const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
   report.folded = check.folded;
   if (report.folded) {
     set_fold_bias(base_fold_bias_);
     return report;
   }
-  escalate_fold_bias(x, x0, lambda0, last, max_steps, check.violations, constraint_max, report);
+  escalate_fold_bias(x, x0, lambda0, last, converging, check.violations, constraint_max, report);
   return report;
 }
 
@@ -104,59 +110,78 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     reached_ = Targets::met_by(problem_, x);
     converged_ = false;
   }
-  const double remaining = reached_->distance(goal);
-  const bool moving = remaining > 0;
-  if (moving) converged_ = false;
+  const double distance = reached_->distance(goal);
+  if (distance > 0) converged_ = false;
   StepReport report;
   if (converged_ && !last) {  // nothing left to do: no factorisation
     report.converged = true;
     return report;
   }
-  // Moving targets: one sub-step of sqp.max_steps steps (the next iteration goes on); held ones:
-  // up to max_iteration_steps steps, until converged.
-  const int max_steps = moving ? options_.sqp.max_steps : options_.max_iteration_steps;
-  const double cap = moving ? std::min(1.0, options_.max_target_step * sheet_size_ / remaining) : 1.0;
-  const double short_move_length = kShortSubstep * options_.max_target_step * sheet_size_;
-  while (true) {
-    const double s = std::min(cap, substep_);
+  if (distance > 0) {
+    report = follow(x, goal, distance);
+  } else {  // held targets: steps until converged
+    report = attempt(x, false, ConvergeSettings{options_.max_iteration_steps, true});
+    converged_ = !report.failed && report.converged.value_or(false);
+    report.converged = converged_;
+    report.target_fraction = report.failed ? 0 : 1;
+  }
+  // A raised fold bias serves the iteration that raised it only.
+  if (options_.folding) set_fold_bias(base_fold_bias_);
+  if (last && !report.failed) finish(x, report);
+  return report;
+}
+
+StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
+  const double cap_length = options_.max_target_step * sheet_size_;
+  const double short_length = kShortSubstep * cap_length;
+  if (distance <= short_length) {  // targets that move little, as in the thesis protocol
+    goal.install(problem_);
+    StepReport report = attempt(x, false, std::nullopt);
+    if (!report.failed) reached_ = goal;
+    report.target_fraction = report.failed ? 0 : 1;
+    report.converged = false;
+    return report;
+  }
+  StepReport report;
+  report.converged = false;
+  std::optional<StepReport> rejected;  // the last sub-step not kept, when no later one was
+  for (int attempts = 0; attempts < options_.max_iteration_steps; ++attempts) {
+    const double remaining = reached_->distance(goal);
+    if (remaining == 0) break;
+    const double s = std::min({1.0, cap_length / remaining, substep_});
     const Targets at = reached_->towards(goal, s);
     at.install(problem_);
     const Dofs x0 = x;
     const Eigen::VectorXd lambda0 = sqp_->multipliers();
-    const Work before = report.work;
-    // A short sub-step is kept whatever its step length: it stays on the targets' path anyway.
-    // When it is all the motion left (targets that move little per iteration, as in the thesis
-    // protocol), the iteration is the thesis's.
-    const bool short_move = s * remaining <= short_move_length;
-    report = attempt(x, false, moving && short_move && s == 1 ? 0 : max_steps);
-    report.work += before;
+    StepReport r = attempt(x, false, ConvergeSettings{1, true});
+    report.work += r.work;
     const bool smallest = s <= kSmallestSubstep;
-    const bool kept = !report.failed &&
-                      (!moving || report.step_length >= options_.substep_step_length || short_move || smallest);
-    if (kept) {
+    if (!r.failed && (r.step_length >= options_.substep_step_length || s * remaining <= short_length || smallest)) {
       reached_ = at;
-      report.target_fraction = s;
-      converged_ = s == 1 && report.converged.value_or(false);
-      report.converged = converged_;
       substep_ = std::min(1.0, 2 * substep_);
-      break;
+      report.step_length = r.step_length;
+      rejected.reset();
+      continue;
     }
     x = x0;
     sqp_->set_multipliers(lambda0);
-    if (!moving || smallest) {  // x stays where it was, at the targets it met
-      reached_->install(problem_);
-      report.target_fraction = 0;
-      report.converged = false;
-      break;
-    }
+    rejected = std::move(r);
+    if (smallest) break;  // x stays where it was, at the targets it met
     substep_ = std::min(substep_, s) / 2;
   }
-  if (last && !report.failed) finish(x, report);
+  reached_->install(problem_);
+  report.target_fraction = 1 - reached_->distance(goal) / distance;
+  if (report.target_fraction == 0 && rejected && rejected->failed) {  // not even the smallest sub-step
+    report.failed = true;
+    report.failure = rejected->failure;
+  }
+  report.folded = unfolded_sites(x) == 0;
   return report;
 }
 
 void StandardMode::finish(Dofs& x, StepReport& report) {
   const double tolerance = options_.sqp.final_constraint_tolerance;
+  constraint_max_ = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
   if (constraint_max_ <= tolerance) return;
   // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
   // gets there.
@@ -168,7 +193,8 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
-                                      int max_steps, int violations, double constraint_max, StepReport& report) {
+                                      const std::optional<ConvergeSettings>& converging, int violations,
+                                      double constraint_max, StepReport& report) {
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -188,7 +214,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     sqp_->set_multipliers(lambda0);
     set_fold_bias(weight *= kFoldBiasGrowth);
     ++report.work.fold_retries;
-    if (!solve(x, last, max_steps, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
+    if (!solve(x, last, converging, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
       break;

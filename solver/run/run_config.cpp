@@ -44,6 +44,7 @@ void apply_preset(Preset preset, ModeOptions& o) {
   o.standard.stitching = thesis ? Stitching::kSoft : defaults.stitching;
   o.standard.sqp.polish_factorizations = thesis ? 0 : defaults.sqp.polish_factorizations;
   o.standard.converge = thesis ? false : defaults.converge;
+  o.standard.max_fold_bias = thesis ? 1e14 : defaults.max_fold_bias;
 }
 
 const OptionTable<RunConfig>& run_option_table() {

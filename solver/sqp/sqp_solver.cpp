@@ -64,7 +64,8 @@ SqpSolver::~SqpSolver() = default;
 
 SqpSolver::Pass SqpSolver::ordinary_pass() const {
   return {options_.constraint_tolerance, options_.max_steps, options_.max_restoration_steps, false,
-          options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max, true};
+          options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max, true,
+          options_.trusted_backtracks};
 }
 
 SqpSolver::Pass SqpSolver::polish_pass(double rho_cap) const {
@@ -75,7 +76,8 @@ SqpSolver::Pass SqpSolver::polish_pass(double rho_cap) const {
           true,
           options_.polish_epsilon,
           std::max(rho_cap, 1 / options_.epsilon),
-          true};
+          true,
+          options_.trusted_backtracks};
 }
 
 SqpReport SqpSolver::iterate(Dofs& x, bool last) {
@@ -84,16 +86,19 @@ SqpReport SqpSolver::iterate(Dofs& x, bool last) {
   return report;
 }
 
-SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
+SqpReport SqpSolver::converge(Dofs& x, const ConvergeSettings& settings) {
   // Passes of one optimality step and its restoration, as in iterate() but without the forced
   // first step, until a full step would lower f by at most converged_decrease (to first order).
   // The objective's change of a step does not serve: the line search shortens steps near a fold.
   Pass pass = ordinary_pass();
   pass.max_steps = 1;
   pass.first_step_always = false;
+  if (settings.fallback_merit) pass.trusted_backtracks = 0;
   SqpReport report;
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = lambda_;
+  double f_before = objective(x);
+  int still_passes = 0;
   while (true) {
     const SqpReport r = run_pass(x, pass);
     report.work += r.work;
@@ -106,10 +111,16 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
       return report;
     }
     if (r.work.steps > 0) report.step_length = r.step_length;
-    const bool stationary =
-        r.work.steps == 0 || std::abs(r.full_step_decrease) <= options_.converged_decrease * std::max(1.0, objective(x));
+    // Stationary: a full step would gain next to nothing, or the steps no longer change f (two
+    // passes in a row: the line search and the restoration undo each other, a cycle the first
+    // test does not see, which rounding alone can start or avoid).
+    const double f = objective(x), resolution = options_.converged_decrease * std::max(1.0, f);
+    still_passes = std::abs(f - f_before) <= resolution ? still_passes + 1 : 0;
+    f_before = f;
+    const bool stationary = r.work.steps == 0 || std::abs(r.full_step_decrease) <= resolution || still_passes >= 2;
     report.converged = stationary && r.constraint_max <= options_.constraint_tolerance;
-    if (report.converged || report.work.steps >= max_steps) break;
+    // A pass without a step (stationary) would repeat itself.
+    if (report.converged || r.work.steps == 0 || report.work.steps >= settings.max_steps) break;
   }
   return report;
 }

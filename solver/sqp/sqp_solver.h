@@ -71,7 +71,8 @@ struct SqpReport {
   /// -grad f . d of the last optimality step d: the objective's decrease a full step would give to
   /// first order.
   double full_step_decrease = 0;
-  /// converge() only: a full step would lower f by at most converged_decrease, and x is feasible.
+  /// converge() only: a full step would lower f by at most converged_decrease (or two steps in a
+  /// row changed it by at most that), and x is feasible.
   bool converged = false;
   bool failed = false;
   std::string failure;  ///< why, when failed (x and the multipliers were rolled back)
@@ -90,10 +91,12 @@ class SqpSolver {
   /// of a run (tighter constraint tolerance, polish).
   SqpReport iterate(Dofs& x, bool last = false);
 
-  /// Steps from x, each an optimality step and its restoration to the constraint tolerance, until
-  /// a full step would lower the objective by at most converged_decrease (relative, first order)
-  /// with the constraints met, at most `max_steps`. Reports whether x converged.
-  SqpReport converge(Dofs& x, int max_steps);
+  /// Steps from x, each an optimality step and its restoration, until a full step would lower the
+  /// objective by at most converged_decrease (relative, first order), or two steps in a row changed
+  /// it by at most that, with the constraints within constraint_tolerance; at most
+  /// settings.max_steps. Reports whether x converged.
+  SqpReport converge(Dofs& x, const ConvergeSettings& settings);
+
   /// The last iteration's polish of x (above), its work added to `report`, whose constraint_max
   /// is x's on entry and is updated. At most polish_factorizations factorisations (0: no limit).
   void polish(Dofs& x, SqpReport& report);
@@ -148,6 +151,7 @@ class SqpSolver {
     double restoration_epsilon;  ///< metric of the restoration steps
     double rho_cap;              ///< rho may grow to this to make K positive definite
     bool first_step_always;      ///< the first KKT error counts 1e4 times (iterate())
+    int trusted_backtracks;      ///< halvings with mu = rho before the fallback merit penalty
   };
   Pass ordinary_pass() const;
   Pass polish_pass(double rho_cap) const;

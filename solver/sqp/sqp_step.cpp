@@ -35,8 +35,7 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
   // trusted_backtracks halvings, again with the smaller merit_penalty (sqp_solver.h).
   const double mu = std::min(options_.merit_penalty, rho_);
   LineSearch search =
-      line_search(x, lin, d, grad_phi, Jtc, rho_, mu < rho_ ? options_.trusted_backtracks : options_.max_backtracks,
-                  report);
+      line_search(x, lin, d, grad_phi, Jtc, rho_, mu < rho_ ? pass.trusted_backtracks : options_.max_backtracks, report);
   if (!search.accepted && mu < rho_) search = line_search(x, lin, d, grad_phi, Jtc, mu, options_.max_backtracks, report);
   if (!search.accepted) {
     if (-search.slope <= kStationarySlope * (1 + std::abs(search.phi0))) return StepOutcome::kStationary;

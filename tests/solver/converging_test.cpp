@@ -19,6 +19,7 @@ struct Followed {
   bool failed = false;
   bool converged = false;
   int iterations = 0;
+  int partial_iterations = 0;  ///< that got only part of the way to the targets (continuation)
   double distance = 0;       ///< of the dragged corner to its target at the end
   double held_distance = 0;  ///< of the held corner to its target at the end
   double dog_max = 0;
@@ -46,6 +47,7 @@ Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) 
       break;
     }
     f.converged = r.step.converged.value_or(false);
+    if (r.step.target_fraction < 1) ++f.partial_iterations;
     f.dog_max = r.diagnostics.dog_max;
     f.stitch_gap_max = r.diagnostics.stitch_gap_max;
   }
@@ -62,7 +64,7 @@ TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
   const Followed f = follow(move, true, 400);
   ASSERT_FALSE(f.failed);
   EXPECT_TRUE(f.converged) << "after " << f.iterations << " iterations";
-  EXPECT_GT(f.iterations, 10) << "no continuation: the target was reached in few iterations";
+  EXPECT_GE(f.partial_iterations, 3) << "no continuation: the target was reached in few iterations";
   EXPECT_LT(f.distance, 0.5);
   EXPECT_LT(f.dog_max, 1e-4);
   EXPECT_LT(f.stitch_gap_max, 1e-4);
