@@ -14,6 +14,8 @@ class HardConstraints {
   /// The problem must outlive this.
   HardConstraints(const DogProblem& problem, Stitching stitching);
   const Term& term() const { return stacked_ ? *stacked_ : *dog_; }
+  /// The stitching rows' scale of the last iteration's projection (true) or of the iterations.
+  void use_final_scale(bool final);
 
  private:
   const Term* dog_;

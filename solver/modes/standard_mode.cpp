@@ -181,15 +181,18 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
 
 void StandardMode::finish(Dofs& x, StepReport& report) {
   const double tolerance = options_.sqp.final_constraint_tolerance;
+  constraints_.use_final_scale(true);
   constraint_max_ = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
-  if (constraint_max_ <= tolerance) return;
-  // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
-  // gets there.
-  SqpReport finished = sqp_->project(x);
-  if (finished.failed) finished.constraint_max = constraint_max_;
-  if (finished.constraint_max > tolerance) sqp_->polish(x, finished);
-  report.work += finished.work;
-  constraint_max_ = finished.constraint_max;
+  if (constraint_max_ > tolerance) {
+    // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
+    // gets there.
+    SqpReport finished = sqp_->project(x);
+    if (finished.failed) finished.constraint_max = constraint_max_;
+    if (finished.constraint_max > tolerance) sqp_->polish(x, finished);
+    report.work += finished.work;
+    constraint_max_ = finished.constraint_max;
+  }
+  constraints_.use_final_scale(false);
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,

@@ -15,6 +15,8 @@ class StackedTerm : public Term {
     double scale;
   };
   explicit StackedTerm(std::vector<Part> parts);
+  /// Changes the scale of part `part` (its blocks stay).
+  void set_scale(int part, double scale) { parts_[part].scale = scale; }
   const char* name() const override { return "constraints"; }
 
   void evaluate(int b, const Eigen::Vector3d* p, double* r, double* J) const override;

@@ -1,6 +1,8 @@
-// sdog bench as a user runs it: the table as CSV, and an unwritable CSV refused before the work.
+// sdog bench as a user runs it: the table as CSV, an unwritable CSV refused before the work, and
+// the pace benchmark.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "tests/app/csv.h"
@@ -60,6 +62,35 @@ TEST(BenchCommand, WritesTheTableAsCsv) {
   EXPECT_NEAR(std::stod(row[csv.column("ms_per_dof")]), std::stod(row[csv.column("median_ms")]) / (3 * vertices),
               1e-6 * std::stod(row[csv.column("median_ms")]));
   EXPECT_LT(std::stod(row[csv.column("dog_max")]), 1e-4);
+}
+
+// The pace benchmark on a bundled pattern: the slow drag and the target set at once both end
+// converged, folded, on the constraints, and in the same fold (objectives within 2%).
+TEST(BenchCommand, PaceRunsEveryKToAConvergedShape) {
+  const std::string dir = test::temp_dir("bench_pace");
+  const auto r = test::run_sdog("bench --pace --pattern '" + test::dataset("four_corner_arcs.svg") +
+                                "' --res 21x21 --ks 250,1 --csv " + dir + "/pace.csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("shape_s"), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir + "/pace.csv");
+  ASSERT_EQ(csv.rows.size(), 2u);
+  for (const char* name : {"K", "objective", "folded", "dog_max", "stitch_gap", "handle_distance", "shape_s", "iterations", "failure"})
+    ASSERT_GE(csv.column(name), 0) << name;
+  double best = 1e300;
+  for (const auto& row : csv.rows) best = std::min(best, std::stod(row[csv.column("objective")]));
+  for (const auto& row : csv.rows) {
+    const std::string k = row[csv.column("K")];
+    const size_t failure = static_cast<size_t>(csv.column("failure"));
+    EXPECT_TRUE(failure >= row.size() || row[failure].empty()) << "K = " << k;
+    EXPECT_EQ(row[csv.column("folded")], "1") << "K = " << k;
+    EXPECT_LE(std::stod(row[csv.column("dog_max")]), 1e-6) << "K = " << k;
+    EXPECT_LE(std::stod(row[csv.column("stitch_gap")]), 1e-6) << "K = " << k;
+    EXPECT_LT(std::stod(row[csv.column("handle_distance")]), 0.02) << "K = " << k;
+    EXPECT_GT(std::stod(row[csv.column("shape_s")]), 0) << "K = " << k << ": no converged iteration";
+    EXPECT_LE(std::stod(row[csv.column("objective")]), 1.02 * best) << "K = " << k;
+  }
+  // The held iterations stop at convergence: far fewer than the 200 allowed.
+  EXPECT_LT(std::stoi(csv.rows[1][csv.column("iterations")]), 100);
 }
 
 }  // namespace
