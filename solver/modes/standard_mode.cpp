@@ -100,7 +100,9 @@ StepReport StandardMode::attempt(Dofs& x, bool last, const std::optional<Converg
     set_fold_bias(base_fold_bias_);
     return report;
   }
+  if (converging && ladder_failed_) return report;
   escalate_fold_bias(x, x0, lambda0, last, converging, check.violations, constraint_max, report);
+  if (converging && !report.folded) ladder_failed_ = true;
   return report;
 }
 
@@ -117,6 +119,7 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     report.converged = true;
     return report;
   }
+  ladder_failed_ = false;
   if (distance > 0) {
     report = follow(x, goal, distance);
   } else {  // held targets: steps until converged

@@ -26,7 +26,8 @@
 // (ConvergeSettings::fallback_merit). A target the sheet cannot reach (off the sheet, or asking
 // for stretching) leaves the sheet as close as its constraints allow: the targets are soft, and
 // the iteration converges there. In a converging iteration a raised fold bias returns to its base
-// weight at the iteration's end. The last iteration of a run projects x to the final constraint
+// weight at the iteration's end, and once an escalation has ended unfolded the iteration's later
+// sub-steps take none. The last iteration of a run projects x to the final constraint
 // tolerance (finish()).
 #include <memory>
 #include <optional>
@@ -91,6 +92,9 @@ class StandardMode : public Mode {
   std::optional<Targets> reached_;  ///< the targets the state was last solved for
   double substep_ = 1;              ///< of the next continuation sub-step
   bool converged_ = false;          ///< x is converged for reached_
+  /// A fold-bias escalation of this converging iteration ended unfolded: its later sub-steps
+  /// take none (each would climb the whole ladder again, a solve per rung).
+  bool ladder_failed_ = false;
   double constraint_max_ = 0;       ///< after the last solve
   double sheet_size_;               ///< largest side of the rest state's bounding box
 };
