@@ -48,15 +48,14 @@ StepReport StandardMode::iterate(const IterationContext& ctx, Dofs& x) {
   return step(x, ctx.last());
 }
 
-bool StandardMode::solve(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging, StepReport& report,
-                         double& constraint_max) {
-  const SqpReport r = converging ? sqp_->converge(x, *converging) : sqp_->iterate(x, last);
+bool StandardMode::solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max) {
+  const SqpReport r = max_steps > 0 ? sqp_->converge(x, max_steps) : sqp_->iterate(x, last);
   report.work += r.work;
   report.step_length = r.step_length;
   constraint_max = r.constraint_max;
   report.failed = r.failed;
   report.failure = r.failure;
-  if (converging) report.converged = r.converged;
+  if (max_steps > 0) report.converged = r.converged;
   return !r.failed;
 }
 
@@ -73,35 +72,36 @@ StepReport StandardMode::step(Dofs& x, bool last) {
       report.failure = restored.failure;
       return report;
     }
-    StepReport report = options_.converge ? converge(x, last) : attempt(x, last, std::nullopt);
+    StepReport report = options_.converge ? converge(x, last) : attempt(x, last, 0);
     report.work += restored.work;
     return report;
   }
-  return options_.converge ? converge(x, last) : attempt(x, last, std::nullopt);
+  return options_.converge ? converge(x, last) : attempt(x, last, 0);
 }
 
-int StandardMode::unfolded_sites(const Dofs& x) const {
-  return options_.folding ? check_folded(problem_.mesh(), problem_.sites, x).violations : 0;
+bool StandardMode::folded(const Dofs& x) const {
+  return !options_.folding || check_folded(problem_.mesh(), problem_.sites, x).folded;
 }
 
-StepReport StandardMode::attempt(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging) {
+StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
   StepReport report;
   double& constraint_max = constraint_max_;  // of the last attempt
   if (!options_.folding) {
-    solve(x, last, converging, report, constraint_max);
+    solve(x, last, max_steps, report, constraint_max);
     return report;
   }
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = sqp_->multipliers();
-  if (!solve(x, last, converging, report, constraint_max)) return report;
+  if (!solve(x, last, max_steps, report, constraint_max)) return report;
   const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
   report.folded = check.folded;
   if (report.folded) {
     set_fold_bias(base_fold_bias_);
     return report;
   }
+  const bool converging = max_steps > 0;
   if (converging && ladder_failed_) return report;
-  escalate_fold_bias(x, x0, lambda0, last, converging, check.violations, constraint_max, report);
+  escalate_fold_bias(x, x0, lambda0, last, max_steps, check.violations, constraint_max, report);
   if (converging && !report.folded) ladder_failed_ = true;
   return report;
 }
@@ -123,7 +123,7 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   if (distance > 0) {
     report = follow(x, goal, distance);
   } else {  // held targets: steps until converged
-    report = attempt(x, false, ConvergeSettings{options_.max_iteration_steps, true});
+    report = attempt(x, false, options_.max_iteration_steps);
     converged_ = !report.failed && report.converged.value_or(false);
     report.converged = converged_;
     report.target_fraction = report.failed ? 0 : 1;
@@ -139,7 +139,7 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   const double short_length = kShortSubstep * cap_length;
   if (distance <= short_length) {  // targets that move little, as in the thesis protocol
     goal.install(problem_);
-    StepReport report = attempt(x, false, std::nullopt);
+    StepReport report = attempt(x, false, 0);
     if (!report.failed) reached_ = goal;
     report.target_fraction = report.failed ? 0 : 1;
     report.converged = false;
@@ -156,7 +156,7 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     at.install(problem_);
     const Dofs x0 = x;
     const Eigen::VectorXd lambda0 = sqp_->multipliers();
-    StepReport r = attempt(x, false, ConvergeSettings{1, true});
+    StepReport r = attempt(x, false, 1);
     report.work += r.work;
     const bool smallest = s <= kSmallestSubstep;
     if (!r.failed && (r.step_length >= options_.substep_step_length || s * remaining <= short_length || smallest)) {
@@ -178,7 +178,7 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     report.failed = true;
     report.failure = rejected->failure;
   }
-  report.folded = unfolded_sites(x) == 0;
+  report.folded = folded(x);
   return report;
 }
 
@@ -199,8 +199,7 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
-                                      const std::optional<ConvergeSettings>& converging, int violations,
-                                      double constraint_max, StepReport& report) {
+                                      int max_steps, int violations, double constraint_max, StepReport& report) {
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -220,7 +219,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     sqp_->set_multipliers(lambda0);
     set_fold_bias(weight *= kFoldBiasGrowth);
     ++report.work.fold_retries;
-    if (!solve(x, last, converging, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
+    if (!solve(x, last, max_steps, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
       break;

@@ -22,8 +22,8 @@
 // of the remaining motion. An iteration takes at most max_iteration_steps sub-steps and reports how
 // far along the motion it got (StepReport::target_fraction); the next one goes on from there.
 // Targets that move no further than a short sub-step take the thesis's iteration, at its cost. The
-// steps of converging iterations start their line search with the fallback merit penalty
-// (ConvergeSettings::fallback_merit). A target the sheet cannot reach (off the sheet, or asking
+// line search of converging steps turns to the fallback merit penalty after the full step
+// (SqpSolver::converge). A target the sheet cannot reach (off the sheet, or asking
 // for stretching) leaves the sheet as close as its constraints allow: the targets are soft, and
 // the iteration converges there. In a converging iteration a raised fold bias returns to its base
 // weight at the iteration's end, and once an escalation has ended unfolded the iteration's later
@@ -63,11 +63,11 @@ class StandardMode : public Mode {
 
  private:
   /// SQP steps of the current targets with the fold check and its retries (folding mode): the
-  /// thesis's iteration (no settings: sqp.max_steps steps, polished when `last`) or steps towards
-  /// convergence.
-  StepReport attempt(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging);
-  /// Fold sites left unfolded at x (0 when folding mode is off).
-  int unfolded_sites(const Dofs& x) const;
+  /// thesis's iteration (max_steps 0: sqp.max_steps steps, polished when `last`) or at most
+  /// max_steps steps towards convergence.
+  StepReport attempt(Dofs& x, bool last, int max_steps);
+  /// Every fold site folded at x (true when folding mode is off).
+  bool folded(const Dofs& x) const;
   /// A converging iteration (continuation towards the installed targets).
   StepReport converge(Dofs& x, bool last);
   /// Continuation sub-steps from reached_ towards `goal`, `distance` away (moved targets).
@@ -75,12 +75,10 @@ class StandardMode : public Mode {
   /// The last converging iteration's end: x projected to the final constraint tolerance.
   void finish(Dofs& x, StepReport& report);
   /// One SQP solve, its work added to `report`; false when it failed.
-  bool solve(Dofs& x, bool last, const std::optional<ConvergeSettings>& converging, StepReport& report,
-             double& constraint_max);
+  bool solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max);
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
-  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
-                          const std::optional<ConvergeSettings>& converging, int violations, double constraint_max,
-                          StepReport& report);
+  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int max_steps,
+                          int violations, double constraint_max, StepReport& report);
   void set_fold_bias(double weight);
   DogProblem& problem_;
   Scenario scenario_;

@@ -40,14 +40,4 @@ struct SqpOptions {
 
 const OptionTable<SqpOptions>& sqp_option_table();
 
-/// How SqpSolver::converge steps (set per call by the standard mode).
-struct ConvergeSettings {
-  int max_steps = 1;
-  /// The line search tries the full step with the penalty rho, then goes on with the fallback
-  /// merit_penalty at once (no trusted_backtracks halvings with rho). Steps towards targets that
-  /// moved far violate the constraints through their curvature, which rho punishes far more than
-  /// the objective gains; restoration removes that violation after the step.
-  bool fallback_merit = false;
-};
-
 }  // namespace sdog

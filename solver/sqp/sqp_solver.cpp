@@ -86,14 +86,17 @@ SqpReport SqpSolver::iterate(Dofs& x, bool last) {
   return report;
 }
 
-SqpReport SqpSolver::converge(Dofs& x, const ConvergeSettings& settings) {
+SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
   // Passes of one optimality step and its restoration, as in iterate() but without the forced
   // first step, until a full step would lower f by at most converged_decrease (to first order).
   // The objective's change of a step does not serve: the line search shortens steps near a fold.
+  // The line search tries the full step with the penalty rho, then goes on with merit_penalty at
+  // once: steps towards targets that moved far violate the constraints through their curvature,
+  // which rho punishes far more than the objective gains, and restoration removes that violation.
   Pass pass = ordinary_pass();
   pass.max_steps = 1;
   pass.first_step_always = false;
-  if (settings.fallback_merit) pass.trusted_backtracks = 0;
+  pass.trusted_backtracks = 0;
   SqpReport report;
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = lambda_;
@@ -120,7 +123,7 @@ SqpReport SqpSolver::converge(Dofs& x, const ConvergeSettings& settings) {
     const bool stationary = r.work.steps == 0 || std::abs(r.full_step_decrease) <= resolution || still_passes >= 2;
     report.converged = stationary && r.constraint_max <= options_.constraint_tolerance;
     // A pass without a step (stationary) would repeat itself.
-    if (report.converged || r.work.steps == 0 || report.work.steps >= settings.max_steps) break;
+    if (report.converged || r.work.steps == 0 || report.work.steps >= max_steps) break;
   }
   return report;
 }

@@ -93,9 +93,10 @@ class SqpSolver {
 
   /// Steps from x, each an optimality step and its restoration, until a full step would lower the
   /// objective by at most converged_decrease (relative, first order), or two steps in a row changed
-  /// it by at most that, with the constraints within constraint_tolerance; at most
-  /// settings.max_steps. Reports whether x converged.
-  SqpReport converge(Dofs& x, const ConvergeSettings& settings);
+  /// it by at most that, with the constraints within constraint_tolerance; at most `max_steps`.
+  /// Its line search turns to the fallback merit penalty after the full step. Reports whether x
+  /// converged.
+  SqpReport converge(Dofs& x, int max_steps);
 
   /// The last iteration's polish of x (above), its work added to `report`, whose constraint_max
   /// is x's on entry and is updated. At most polish_factorizations factorisations (0: no limit).
