@@ -40,8 +40,12 @@ nlohmann::json mesh_json(const DogMesh& m, const QuadTopology& t, const Resoluti
 nlohmann::json summary_json(const DogModel& m, double seconds,
                             const std::vector<std::string>& files) {
   const Box2& b = m.pattern.sheet.bbox;
-  int dashed = 0;
-  for (const auto& c : m.clean.creases) dashed += c.dashed;
+  nlohmann::json creases = nlohmann::json::array();
+  for (size_t k = 0; k < m.clean.creases.size(); ++k) {
+    const Crease& c = m.clean.creases[k];
+    creases.push_back({{"index", k}, {"element", c.origin}, {"id", c.id}, {"assignment", fold_name(c.fold)},
+                       {"angle", c.angle ? nlohmann::json(*c.angle) : nlohmann::json(nullptr)}});
+  }
   nlohmann::json j = {
       {"pattern", m.pattern.source},
       {"sheet",
@@ -52,8 +56,9 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
       {"creases",
        {{"drawn", m.pattern.creases.size()},
         {"cleaned", m.clean.creases.size()},
-        {"dashed", dashed},
-        {"junctions", m.clean.junctions.size()}}},
+        {"junctions", m.clean.junctions.size()},
+        {"list", creases}}},
+      {"warnings", m.clean.warnings},
       {"cleaning", m.clean.changes},
       {"mesh_units",
        {{"scale", m.fine.scale}, {"origin", {m.fine.sheet_origin.x(), m.fine.sheet_origin.y()}}}},
@@ -93,6 +98,13 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
      << format_number(m.fine.scale) << "\n"
      << "creases       " << m.pattern.creases.size() << " drawn, " << m.clean.creases.size()
      << " after cleaning, " << m.clean.junctions.size() << " junction(s)\n";
+  for (size_t k = 0; k < m.clean.creases.size(); ++k) {
+    const Crease& c = m.clean.creases[k];
+    os << "  crease " << k << "  " << c.origin << "  " << fold_name(c.fold);
+    if (c.angle) os << ", " << format_number(*c.angle) << " degrees";
+    os << "\n";
+  }
+  for (const auto& w : m.clean.warnings) os << "  warning:    " << w << "\n";
   if (verbose)
     for (const auto& c : m.clean.changes) os << "  cleaning:   " << c << "\n";
   print_mesh(os, "fine          ", m.fine, m.fine_topology, m.fine_res);

@@ -2,7 +2,7 @@
 // Internal to pattern cleaning (pattern_cleaning.cpp and cleaning_*.cpp): the Cleaner that runs
 // the steps of pattern_cleaning.h on one pattern, and the polyline helpers its steps share. Each
 // step lives in the file named after it: cleaning_clipping.cpp (step 2), cleaning_junctions.cpp
-// (steps 3 and 5), cleaning_snapping.cpp (step 4); pattern_cleaning.cpp has the pipeline, step 1
+// (steps 3 and 5), cleaning_snapping.cpp (step 4), cleaning_overlaps.cpp (step 0); pattern_cleaning.cpp has the pipeline, step 1
 // and the final check.
 #include <cmath>
 #include <map>
@@ -82,10 +82,14 @@ class Cleaner {
     return end == 0 ? c.points.front() : c.points.back();
   }
   void log(const std::string& s) { changes_.push_back(s); }
+  /// A change the user should hear about (a part of the drawing dropped or merged).
+  void warn(const std::string& s) { warnings_.push_back(s); }
   VertexCounts vertex_counts() const;
   void replace_vertex(const Vec2& from, const Vec2& to);
 
   // Step 1 (pattern_cleaning.cpp).
+  // Step 0 (cleaning_overlaps.cpp).
+  void drop_overlapping_segments();
   void merge_crease_ends();
   void join_continuing_creases();
   bool on_other_crease(const Vec2& p, int a, int b) const;
@@ -132,7 +136,7 @@ class Cleaner {
   std::vector<Polyline2> loops_;  ///< outer boundary, then the holes
   double merge_tol_ = 0, snap_tol_ = 0;
   std::vector<Vec2> junctions_, pins_;
-  std::vector<std::string> changes_;
+  std::vector<std::string> changes_, warnings_;
 };
 
 }  // namespace sdog::cleaning

@@ -6,6 +6,7 @@
 
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "geometry/fold_conventions.h"
 #include "geometry/plane_geometry.h"
 
 namespace sdog {
@@ -127,6 +128,8 @@ struct SortedCurves {
   std::vector<Polyline2> loops;
   std::vector<std::string> loop_origins;
   std::vector<const SvgCurve*> creases;
+  std::vector<CurveReading> readings;  ///< of each crease curve
+  int facet_lines = 0;
 };
 
 SortedCurves sort_curves(const SvgDrawing& drawing, double tol) {
@@ -134,8 +137,17 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol) {
   std::vector<OpenCurve> open_boundary;
   for (const auto& c : drawing.curves) {
     if (c.points.size() < 2) continue;
-    if (!c.is_boundary) {
+    const CurveReading reading = read_curve(c, origin_of(drawing.source, c));
+    if (reading.role == CurveRole::kFacet) {
+      ++out.facet_lines;
+      continue;
+    }
+    if (reading.role == CurveRole::kCut)
+      throw InputError(origin_of(drawing.source, c) + ": a cut line (green): cuts are not supported, the sheet "
+                       "must stay one piece along every crease; remove the cut or make it a crease");
+    if (reading.role == CurveRole::kCrease) {
       out.creases.push_back(&c);
+      out.readings.push_back(reading);
       continue;
     }
     Polyline2 pts = c.points;
@@ -229,8 +241,8 @@ size_t append_continuations(const std::vector<const SvgCurve*>& curves, size_t k
 
 // The creases of the crease curves: subpaths of one <path> that continue each other are joined,
 // and a crease whose ends meet within closed_fraction of the sheet size is closed.
-void add_creases(const std::vector<const SvgCurve*>& curves, const std::string& source,
-                 double closed_fraction, CreasePattern& pattern) {
+void add_creases(const std::vector<const SvgCurve*>& curves, const std::vector<CurveReading>& readings,
+                 const std::string& source, double closed_fraction, CreasePattern& pattern) {
   const double sheet_tol = closed_fraction * pattern.size();
   for (size_t k = 0; k < curves.size(); ++k) {
     const SvgCurve& c = *curves[k];
@@ -238,7 +250,9 @@ void add_creases(const std::vector<const SvgCurve*>& curves, const std::string& 
     Crease crease;
     crease.points = c.points;
     crease.closed = c.closed;
-    crease.dashed = c.dashed;
+    crease.fold = readings[k].fold;
+    crease.angle = readings[k].angle;
+    crease.id = c.id;
     crease.origin = origin_of(source, c);
     k = append_continuations(curves, k, sheet_tol, crease);
     if (!crease.closed && crease.points.size() > 2 &&
@@ -254,6 +268,22 @@ void add_creases(const std::vector<const SvgCurve*>& curves, const std::string& 
 
 }  // namespace
 
+const char* fold_name(Fold fold) {
+  switch (fold) {
+    case Fold::kMountain:
+      return "mountain";
+    case Fold::kValley:
+      return "valley";
+    case Fold::kFlat:
+      return "flat";
+    case Fold::kUnassigned:
+      break;
+  }
+  return "unassigned";
+}
+
+double fold_sign(Fold fold) { return fold == Fold::kValley ? 1.0 : fold == Fold::kMountain ? -1.0 : 0.0; }
+
 CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {
   CreasePattern pattern;
   pattern.source = drawing.source;
@@ -262,7 +292,10 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
   pattern.sheet = curves.loops.empty() ? sheet_from_viewbox(drawing)
                                        : sheet_from_loops(curves.loops, curves.loop_origins);
   pattern.sheet.bbox = box_of(pattern.sheet.outer);
-  add_creases(curves.creases, drawing.source, closed_fraction, pattern);
+  add_creases(curves.creases, curves.readings, drawing.source, closed_fraction, pattern);
+  if (curves.facet_lines > 0)
+    pattern.warnings.push_back(std::to_string(curves.facet_lines) +
+                               " facet line(s) (yellow, Origami Simulator's triangulation) ignored");
   return pattern;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves, in sheet
-// units (SVG user units, y up). Built from an SvgDrawing: black curves are the sheet boundary
-// (none: the viewBox rectangle), every other colour is a crease.
+// A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves with their
+// fold assignments, in sheet units (SVG user units, y up). Built from an SvgDrawing with the
+// conventions of geometry/fold_conventions.h (black curves are the sheet boundary; none: the
+// viewBox rectangle), or from a FOLD file (geometry/fold_reader.h).
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,11 +14,25 @@ namespace sdog {
 
 using Polyline2 = std::vector<Eigen::Vector2d>;
 
+/// How a crease folds, as the drawing says (the FOLD format's M, V, F and U).
+enum class Fold { kUnassigned, kMountain, kValley, kFlat };
+
+/// "unassigned", "mountain", "valley", "flat".
+const char* fold_name(Fold fold);
+/// +1 valley, -1 mountain, 0 flat or unassigned: the sign of the fold angle (FOLD's convention).
+double fold_sign(Fold fold);
+
 struct Crease {
   Polyline2 points;  ///< closed creases do not repeat the first point
   bool closed = false;
-  bool dashed = false;  ///< mountain/valley hint from the drawing (dashed stroke)
-  std::string origin;   ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
+  Fold fold = Fold::kUnassigned;
+  /// The fold angle the drawing gives, in degrees, 0 to 180 (its direction is `fold`'s); unset
+  /// when the drawing gives none.
+  std::optional<double> angle;
+  std::string id;      ///< the SVG element's id (FOLD: "edge N" of its first edge), or empty
+  std::string origin;  ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
+  /// Same assignment and angle: creases that may be joined into one.
+  bool folds_like(const Crease& other) const { return fold == other.fold && angle == other.angle; }
 };
 
 struct Sheet {
@@ -30,6 +46,7 @@ struct CreasePattern {
   std::string source;  ///< file name, for messages
   Sheet sheet;
   std::vector<Crease> creases;  ///< drawing order
+  std::vector<std::string> warnings;  ///< what reading left out, one line each
   /// L = max(width, height) of the sheet: the length all tolerances are relative to.
   double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
 };

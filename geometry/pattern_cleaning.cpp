@@ -23,7 +23,7 @@ std::string CleaningOptions::validate() const {
 namespace cleaning {
 
 Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
-    : source_(pattern.source), sheet_(pattern.sheet), creases_(pattern.creases) {
+    : source_(pattern.source), sheet_(pattern.sheet), creases_(pattern.creases), warnings_(pattern.warnings) {
   const double L = pattern.size();
   merge_tol_ = options.merge_fraction * L;
   snap_tol_ = options.snap_fraction * L;
@@ -32,6 +32,7 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
 }
 
 CleanPattern Cleaner::run() {
+  drop_overlapping_segments();
   merge_crease_ends();
   join_continuing_creases();
   clip_to_sheet();
@@ -48,6 +49,7 @@ CleanPattern Cleaner::run() {
   out.junctions = junctions_;
   out.pins = pins_;
   out.changes = changes_;
+  out.warnings = warnings_;
   return out;
 }
 
@@ -126,7 +128,7 @@ void Cleaner::join_continuing_creases() {
       if (sheet_side(p) != 1 || on_other_crease(p, list[0].first, list[1].first)) continue;
       const auto [a, ea] = list[0];
       const auto [b, eb] = list[1];
-      if (creases_[a].dashed != creases_[b].dashed) continue;
+      if (!creases_[a].folds_like(creases_[b])) continue;
       if (a == b) {
         creases_[a].closed = true;
         creases_[a].points.pop_back();

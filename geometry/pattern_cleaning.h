@@ -2,6 +2,8 @@
 // Pattern cleaning: makes a drawn crease pattern exact enough to mesh. Tolerances are fractions of
 // L = max(sheet width, height); the defaults are those of the reference implementation.
 //
+//  0. Crease segments drawn along the sheet boundary or along an earlier crease (within 1e-6 L)
+//     are removed, with a warning; the crease is split where they were.
 //  1. Crease ends closer than merge_tol = L/100 are merged (cluster mean); two crease ends that
 //     meet alone in the sheet's interior are joined into one crease.
 //  2. Creases are clipped to the sheet: parts outside (or in holes) are dropped, and the points
@@ -37,7 +39,10 @@ struct CleanPattern {
   /// Points that must be grid vertices: junctions, and crease ends on parts of the boundary that
   /// are not on the sheet's bounding box (those lie on a grid line already).
   std::vector<Eigen::Vector2d> pins;
-  std::vector<std::string> changes;  ///< what cleaning changed, one line each
+  std::vector<std::string> changes;   ///< what cleaning changed, one line each
+  /// What reading and cleaning dropped or merged from the drawing, one line each: facet lines,
+  /// creases drawn along the boundary or twice.
+  std::vector<std::string> warnings;
   double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
 };
 

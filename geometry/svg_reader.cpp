@@ -33,7 +33,8 @@ constexpr int kMaxNesting = 256;
 
 /// Properties resolved with precedence and inheritance (see svg_reader.h).
 struct InheritedStyle {
-  std::optional<std::string> stroke, fill, dasharray, color;
+  std::optional<std::string> stroke, fill, dasharray, color, stroke_opacity, data_fold, data_angle;
+  std::optional<double> opacity;  ///< product of the opacity of the element and its groups
   Affine ctm;  ///< maps the element's user space to the root's
 };
 
@@ -74,22 +75,35 @@ bool finite(const Point& p) {
   return std::isfinite(p.x()) && std::isfinite(p.y());
 }
 
-/// A dash array whose values are all zero renders solid (SVG 1.1 11.4); anything else that is
-/// not "none" counts as dashed, even if it cannot be parsed.
-bool is_dashed(const std::optional<std::string>& dasharray) {
-  if (!dasharray) return false;
+/// The dash lengths of a dash array (repeated to an even count, as SVG does) at even positions;
+/// empty for "none", an unparsable value or one whose values are all zero (renders solid).
+/// An unparsable value other than "none" gives {1}: dashed.
+std::vector<double> dash_lengths(const std::optional<std::string>& dasharray) {
+  if (!dasharray) return {};
   const std::string_view value = svg::trim(*dasharray);
-  if (value.empty() || svg::to_lower(value) == "none") return false;
+  if (value.empty() || svg::to_lower(value) == "none") return {};
+  std::vector<double> values;
   std::size_t pos = 0;
   while (pos < value.size()) {
     double v = 0;
-    if (svg::scan_number(value, pos, v) != svg::NumberScan::ok) return true;
-    if (v != 0) return true;
+    if (svg::scan_number(value, pos, v) != svg::NumberScan::ok) return {1};
+    values.push_back(std::abs(v));
     while (pos < value.size() && ((value[pos] >= 'a' && value[pos] <= 'z') || value[pos] == '%'))
       ++pos;  // unit
     svg::skip_comma_wsp(value, pos);
   }
-  return false;
+  if (std::all_of(values.begin(), values.end(), [](double v) { return v == 0; })) return {};
+  if (values.size() % 2 == 1) values.insert(values.end(), values.begin(), values.end());
+  std::vector<double> dashes;
+  for (std::size_t k = 0; k < values.size(); k += 2) dashes.push_back(values[k]);
+  return dashes;
+}
+
+/// Dash-dot: the longest dash is at least twice the shortest (a dot may have length 0).
+bool is_dash_dot(const std::vector<double>& dashes) {
+  if (dashes.size() < 2) return false;
+  const auto [shortest, longest] = std::minmax_element(dashes.begin(), dashes.end());
+  return *longest >= 2 * *shortest && *longest > 0;
 }
 
 void add_line_subpath(std::vector<PathSubpath>& subpaths, const std::vector<Point>& points,
@@ -235,7 +249,7 @@ class Reader {
   /// Returns false for display:none.
   bool apply_element_style(const pugi::xml_node& node, InheritedStyle& style) const {
     static const char* const kProperties[] = {"stroke", "fill", "stroke-dasharray", "color",
-                                              "display"};
+                                              "display", "stroke-opacity", "opacity"};
     std::map<std::string, std::string> own;
     for (const char* name : kProperties)
       if (const pugi::xml_attribute attribute = node.attribute(name)) own[name] = attribute.value();
@@ -257,6 +271,14 @@ class Reader {
     inherit("fill", style.fill);
     inherit("stroke-dasharray", style.dasharray);
     inherit("color", style.color);
+    inherit("stroke-opacity", style.stroke_opacity);
+    const auto opacity = own.find("opacity");
+    if (opacity != own.end()) {
+      const double value = guarded(node, "opacity", [&] { return svg::parse_opacity(opacity->second); });
+      style.opacity = style.opacity.value_or(1.0) * value;
+    }
+    for (auto [name, slot] : {std::pair{"data-fold", &style.data_fold}, std::pair{"data-angle", &style.data_angle}})
+      if (const pugi::xml_attribute attribute = node.attribute(name)) *slot = attribute.value();
 
     if (const pugi::xml_attribute transform = node.attribute("transform")) {
       const Affine local =
@@ -333,7 +355,18 @@ class Reader {
     shape.meta.line = line_of(node.offset_debug());
     shape.meta.color = resolve_color(node, style);
     shape.meta.is_boundary = shape.meta.color == "#000000";
-    shape.meta.dashed = is_dashed(style.dasharray);
+    const std::vector<double> dashes = dash_lengths(style.dasharray);
+    shape.meta.dashed = !dashes.empty();
+    shape.meta.dash_dot = is_dash_dot(dashes);
+    if (style.opacity || style.stroke_opacity) {
+      const double stroke_opacity =
+          style.stroke_opacity
+              ? guarded(node, "stroke-opacity", [&] { return svg::parse_opacity(*style.stroke_opacity); })
+              : 1.0;
+      shape.meta.opacity = style.opacity.value_or(1.0) * stroke_opacity;
+    }
+    shape.meta.data_fold = style.data_fold;
+    shape.meta.data_angle = style.data_angle;
 
     if (name == "path") {
       const char* d = node.attribute("d").value();

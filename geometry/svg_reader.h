@@ -8,7 +8,9 @@
 // class rules from <style> (".st0{stroke:#EF4545}") over the stroke="..." attribute, inherited
 // from enclosing <g> elements. An element without a stroke uses its fill colour (Illustrator
 // exports sometimes do this), and SVG's default fill is black.
-// A stroke-dasharray other than "none" marks the curve as dashed (a mountain/valley hint).
+// A stroke-dasharray other than "none" marks the curve as dashed, and dash-dot when its dashes
+// differ in length; opacity, stroke-opacity and the data-fold and data-angle attributes are
+// passed on (geometry/fold_conventions.h reads the fold assignment from them).
 //
 // Coordinates: y points up. A point (x, y) of the SVG user space becomes (x, -y): the SVG y axis
 // is negated exactly, so the viewBox "x0 y0 w h" covers [x0, x0+w] x [-(y0+h), -y0].
@@ -52,6 +54,7 @@
 //    NaN, infinite or overflowing numbers, also after relative sums and transforms, give
 //    "coordinate is not a finite number". A flatness that is not positive is a UsageError.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +72,13 @@ struct SvgCurve {
   std::string color;         ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
   bool is_boundary = false;  ///< colour is exactly black (#000000)
   bool dashed = false;       ///< stroke-dasharray set and not "none"
+  /// Dashed, with dashes of different lengths (the longest at least twice the shortest).
+  bool dash_dot = false;
+  /// opacity (the product over the element and its groups) times stroke-opacity (inherited);
+  /// unset when neither is given anywhere.
+  std::optional<double> opacity;
+  /// data-fold and data-angle of the element or its nearest group that has them.
+  std::optional<std::string> data_fold, data_angle;
   std::string element;       ///< tag name, e.g. "path"
   std::string id;            ///< the element's id attribute, or empty
   int line = 0;              ///< line of the element in the file (1-based), 0 if unknown

@@ -503,6 +503,19 @@ void Stylesheet::apply(std::string_view class_attribute,
       for (const auto& [name, value] : rule.declarations) properties[name] = value;
 }
 
+double parse_opacity(std::string_view text) {
+  const std::string_view value = trim(text);
+  std::size_t pos = 0;
+  double v = 0;
+  if (scan_number(value, pos, v) != NumberScan::ok)
+    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) + "'");
+  const std::string_view rest = trim(value.substr(pos));
+  if (rest == "%") v /= 100;
+  else if (!rest.empty())
+    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) + "'");
+  return std::clamp(v, 0.0, 1.0);
+}
+
 double parse_length(std::string_view text) {
   const std::string_view value = trim(text);
   std::size_t pos = 0;

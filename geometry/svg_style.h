@@ -77,6 +77,9 @@ class Stylesheet {
 /// Throws ElementError for percentages, em/ex and anything else.
 double parse_length(std::string_view text);
 
+/// An opacity: a number (clamped to [0, 1]) or a percentage. Throws ElementError otherwise.
+double parse_opacity(std::string_view text);
+
 std::string_view trim(std::string_view text);
 std::string to_lower(std::string_view text);
 

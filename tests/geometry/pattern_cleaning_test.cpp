@@ -105,9 +105,42 @@ TEST(PatternCleaning, ClosedCreaseInsideStaysClosed) {
   EXPECT_EQ(count_pattern_patches(c), 2);
 }
 
-TEST(PatternCleaning, CreaseAlongTheBoundaryIsRejected) {
-  EXPECT_THROW(clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}})),
-               InputError);
+TEST(PatternCleaning, CreasePartAlongTheBoundaryIsDroppedWithAWarning) {
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}}));
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_EQ(c.creases[0].points, (Polyline2{{100, 50}, {0, 60}}));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("crease 0"), std::string::npos) << c.warnings[0];
+  EXPECT_NE(c.warnings[0].find("along the sheet boundary (2 segment(s))"), std::string::npos) << c.warnings[0];
+}
+
+TEST(PatternCleaning, CreaseWhollyOnTheBoundaryDisappears) {
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 100}, {40, 100}}, {{50, 0}, {50, 100}}}));
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_EQ(c.creases[0].points.front().x(), 50);
+  EXPECT_EQ(c.warnings.size(), 1u);
+}
+
+TEST(PatternCleaning, CreaseDrawnTwiceIsMergedWithAWarning) {
+  CreasePattern p = rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}, {{50, 100}, {50, 0}}, {{0, 50}, {50, 50}}});
+  p.creases[0].fold = Fold::kMountain;
+  p.creases[1].fold = Fold::kValley;
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.creases.size(), 2u);
+  EXPECT_EQ(c.creases[0].fold, Fold::kMountain) << "the first drawing wins";
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("crease 1"), std::string::npos) << c.warnings[0];
+  EXPECT_NE(c.warnings[0].find("valley dropped for mountain"), std::string::npos) << c.warnings[0];
+}
+
+TEST(PatternCleaning, CreaseDrawnPartlyAgainKeepsItsOwnPart) {
+  // The second crease repeats the first one's lower half, then turns right: its turn is kept and
+  // ends on the first crease (a T junction).
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}, {{50, 0}, {50, 40}, {100, 40}}}));
+  ASSERT_EQ(c.creases.size(), 2u);
+  EXPECT_EQ(c.creases[1].points, (Polyline2{{50, 40}, {100, 40}}));
+  EXPECT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(count_pattern_patches(c), 3);
 }
 
 TEST(PatternCleaning, NearbyJunctionCoordinatesAreAligned) {

@@ -1,3 +1,4 @@
+#include <limits>
 #include "ui/vis/model_files.h"
 
 #include "geometry/mesh_arrays.h"
@@ -27,7 +28,8 @@ void write_model_files(const DogModel& model, OutputSet& out) {
 
   const CreaseStitching& st = model.fine.stitching;
   std::vector<Polyline3> creases;
-  NamedArray index{"crease", {}, true}, closed{"closed", {}, true}, dashed{"dashed", {}, true};
+  NamedArray index{"crease", {}, true}, closed{"closed", {}, true}, assignment{"assignment", {}, true},
+      angle{"angle", {}, true};
   for (size_t k = 0; k < st.curves.size(); ++k) {
     Polyline3 line;
     for (int p : st.curves[k].points)
@@ -36,27 +38,29 @@ void write_model_files(const DogModel& model, OutputSet& out) {
     creases.push_back(std::move(line));
     index.values.push_back(static_cast<double>(k));
     closed.values.push_back(st.curves[k].closed);
-    dashed.values.push_back(model.clean.creases[k].dashed);
+    const Crease& c = model.clean.creases[k];
+    assignment.values.push_back(static_cast<double>(c.fold));
+    angle.values.push_back(c.angle ? fold_sign(c.fold) * *c.angle : std::numeric_limits<double>::quiet_NaN());
   }
-  write_vtp(polylines(creases, {index, closed, dashed}), out.temporary("creases.vtp"));
+  write_vtp(polylines(creases, {index, closed, assignment, angle}), out.temporary("creases.vtp"));
 
   std::vector<Polyline3> curves;
-  NamedArray kind{"kind", {}, true}, which{"index", {}, true}, dash{"dashed", {}, true};
+  NamedArray kind{"kind", {}, true}, which{"index", {}, true}, fold{"assignment", {}, true};
   const Sheet& sheet = model.pattern.sheet;
   curves.push_back(lifted(model.fine, sheet.outer, true));
-  kind.values.push_back(0), which.values.push_back(0), dash.values.push_back(0);
+  kind.values.push_back(0), which.values.push_back(0), fold.values.push_back(0);
   for (size_t h = 0; h < sheet.holes.size(); ++h) {
     curves.push_back(lifted(model.fine, sheet.holes[h], true));
     kind.values.push_back(0), which.values.push_back(static_cast<double>(h + 1)),
-        dash.values.push_back(0);
+        fold.values.push_back(0);
   }
   for (size_t k = 0; k < model.pattern.creases.size(); ++k) {
     const Crease& c = model.pattern.creases[k];
     curves.push_back(lifted(model.fine, c.points, c.closed));
     kind.values.push_back(1), which.values.push_back(static_cast<double>(k)),
-        dash.values.push_back(c.dashed);
+        fold.values.push_back(static_cast<double>(c.fold));
   }
-  write_vtp(polylines(curves, {kind, which, dash}), out.temporary("pattern.vtp"));
+  write_vtp(polylines(curves, {kind, which, fold}), out.temporary("pattern.vtp"));
 }
 
 }  // namespace sdog::vis

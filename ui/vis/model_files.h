@@ -3,7 +3,9 @@
 //   fine.vtu     fine DOG; point arrays vertex_type, patch, partner, vertex_class; cell array patch
 //   coarse.vtu   coarse DOG, same arrays
 //   creases.vtp  crease polylines through the fine crease points; cell arrays crease, closed,
-//   dashed pattern.vtp  the curves as drawn; cell arrays kind (0 boundary, 1 crease), index, dashed
+//                assignment (0 unassigned, 1 mountain, 2 valley, 3 flat) and angle (the drawing's
+//                fold angle in degrees, positive for valleys; NaN where the drawing gives none)
+//   pattern.vtp  the curves as drawn; cell arrays kind (0 boundary, 1 crease), index, assignment
 #include <string>
 
 #include "base/atomic_output.h"
