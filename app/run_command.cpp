@@ -16,6 +16,7 @@
 #include "base/text_format.h"
 #include "base/statistics.h"
 #include "solver/config/run_config_json.h"
+#include "solver/problem/crease_angles.h"
 #include "solver/run/run_log.h"
 #include "solver/run/run_setup.h"
 #include "solver/run/run_totals.h"
@@ -187,6 +188,7 @@ void run(const RunArgs& a) {
     out->write_text("run.csv", csv.text());
     if (!patches.empty()) out->write_text("patches.csv", patches.text());
     out->write_text("run.json", run_json(a, setup, summary, totals).dump(2) + "\n");
+    out->write_text("creases.csv", creases_csv(model.fine, setup.scenario(), setup.positions()));
     if (frames) frames->finish();
     files = out->commit();
   }
@@ -200,7 +202,7 @@ void run(const RunArgs& a) {
   }
   report_success(a, setup, summary, totals, seconds_since(start));
   if (out)
-    std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ") << "run.json"
+    std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ") << "run.json, creases.csv"
               << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")
               << "\n";
 }
@@ -237,7 +239,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                   "JSON file with constraints, iteration counts, weights and solver options (command-line "
                   "options win); see docs/reference/configuration.md");
   add_preset_option(*cmd, a->preset);
-  cmd->add_option("--out", a->out, "directory for run.csv, run.json, frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
+  cmd->add_option("--out", a->out, "directory for run.csv, run.json, creases.csv (the fold angle reached at each crease point), frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();

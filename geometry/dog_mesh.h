@@ -8,6 +8,8 @@
 // fine twin have identical coordinates.
 #include <Eigen/Core>
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/patch_layout.h"
@@ -39,6 +41,9 @@ struct CreaseStitching {
   struct Curve {
     std::vector<int> points;  ///< crease points in order along the crease
     bool closed = false;
+    Fold fold = Fold::kUnassigned;  ///< the cleaned crease's assignment and angle (crease_pattern.h)
+    std::optional<double> angle;
+    std::string id;  ///< its element id
   };
   std::vector<Curve> curves;  ///< one per cleaned crease
 

@@ -22,6 +22,16 @@ PatchLayout checked_layout(const DogModel& m, const Resolution& res, const AxisL
   return layout;
 }
 
+// The stitching curves are the cleaned creases in the same order.
+void copy_folds(const CleanPattern& clean, DogMesh& mesh) {
+  for (size_t k = 0; k < mesh.stitching.curves.size(); ++k) {
+    auto& curve = mesh.stitching.curves[k];
+    curve.fold = clean.creases[k].fold;
+    curve.angle = clean.creases[k].angle;
+    curve.id = clean.creases[k].id;
+  }
+}
+
 }  // namespace
 
 DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
@@ -31,6 +41,11 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   m.pattern = pattern;
   m.clean = clean_pattern(pattern, options.cleaning);
   m.expected_patches = count_pattern_patches(m.clean);
+  if (const int k = first_non_separating_crease(m.clean); k >= 0)
+    throw InputError("crease " + std::to_string(k) + " (" + m.clean.creases[k].origin +
+                     ") does not separate the sheet: the same piece of paper lies on both of its sides (as for "
+                     "a crease from the outer boundary to a hole), and a DOG patch cannot fold along a crease "
+                     "inside it; extend the crease so that it divides the sheet, or remove it");
   m.fine_res = res;
 
   const Box2& b = m.clean.sheet.bbox;
@@ -52,6 +67,7 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   const Eigen::Vector2d origin(b.xmin, b.ymin);
   const double scale = (res.nx - 1) / b.width();
   m.fine = build_dog_mesh(fine, origin, scale);
+  copy_folds(m.clean, m.fine);
   m.fine_topology = quad_topology(m.fine);
   for (const auto& ring : fine.boundary) {
     Polyline2 r;
@@ -71,6 +87,7 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   renumber_patches(coarse, match_coarse_patches(fine, coarse));
   m.coarse_cover_cells = cover_fine_patches(coarse, fine);
   m.coarse = build_dog_mesh(coarse, origin, scale);
+  copy_folds(m.clean, m.coarse);
   m.coarse_topology = quad_topology(m.coarse);
   m.map = build_fine_coarse_map(m.fine, m.coarse);
   return m;

@@ -528,7 +528,10 @@ void renumber_patches(PatchLayout& layout, const std::vector<int>& new_id) {
   }
 }
 
-int count_pattern_patches(const CleanPattern& pattern) {
+namespace {
+
+// The arrangement of the cleaned pattern's boundary and creases.
+Arrangement pattern_arrangement(const CleanPattern& pattern) {
   std::vector<Traits::Curve_2> segs;
   auto add = [&](const Polyline2& pts, bool closed) {
     Poly exact_pts;
@@ -540,8 +543,35 @@ int count_pattern_patches(const CleanPattern& pattern) {
   for (const auto& c : pattern.creases) add(c.points, c.closed);
   Arrangement arr;
   CGAL::insert(arr, segs.begin(), segs.end());
+  return arr;
+}
+
+}  // namespace
+
+int count_pattern_patches(const CleanPattern& pattern) {
+  const Arrangement arr = pattern_arrangement(pattern);
   // Bounded faces minus the holes (cleaning removed every crease inside a hole).
   return static_cast<int>(arr.number_of_faces()) - 1 - static_cast<int>(pattern.sheet.holes.size());
+}
+
+int first_non_separating_crease(const CleanPattern& pattern) {
+  const Arrangement arr = pattern_arrangement(pattern);
+  // After cleaning, creases meet only at shared vertices, so each crease segment is one edge of
+  // the arrangement: a crease separates the sheet when the faces on the two sides of its segments
+  // differ (one segment suffices: the faces along a crease are the same between its vertices).
+  for (size_t k = 0; k < pattern.creases.size(); ++k) {
+    const Polyline2& pts = pattern.creases[k].points;
+    const Point a = exact(pts[0]), b = exact(pts[1]);
+    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+      const Point& s = e->source()->point();
+      const Point& t = e->target()->point();
+      if ((s == a && t == b) || (s == b && t == a)) {
+        if (e->face() == e->twin()->face()) return static_cast<int>(k);
+        break;
+      }
+    }
+  }
+  return -1;
 }
 
 }  // namespace sdog

@@ -73,4 +73,8 @@ void renumber_patches(PatchLayout& layout, const std::vector<int>& new_id);
 /// boundary inside the sheet): what every grid resolution must reproduce.
 int count_pattern_patches(const CleanPattern& pattern);
 
+/// The first crease of the cleaned pattern whose two sides lie in the same patch (it ends inside
+/// the sheet's piece on both sides, as a crease from the outer boundary to a hole), or -1.
+int first_non_separating_crease(const CleanPattern& pattern);
+
 }  // namespace sdog

@@ -114,9 +114,22 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int 
   s.name = "fold";
   s.iterations = iterations;
   s.hold = hold;
-  for (const auto& site : fold_sites(mesh)) s.angles.push_back(angle_constraint(mesh, site.point, 0.0, degrees));
-  s.curve_signs.assign(mesh.stitching.curves.size(), degrees > 0 ? 1.0 : degrees < 0 ? -1.0 : 0.0);
+  s.curve_signs.resize(mesh.stitching.curves.size(), 0.0);
+  for (size_t c = 0; c < mesh.stitching.curves.size(); ++c) {
+    const double target = crease_fold_target(mesh, c, degrees);
+    s.curve_signs[c] = target > 0 ? 1.0 : target < 0 ? -1.0 : 0.0;
+  }
+  for (const auto& site : fold_sites(mesh))
+    s.angles.push_back(angle_constraint(mesh, site.point, 0.0, crease_fold_target(mesh, site.curve, degrees)));
   return s;
+}
+
+double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees) {
+  const auto& c = mesh.stitching.curves[curve];
+  if (c.fold == Fold::kFlat) return 0;
+  const double size = c.angle ? *c.angle : std::abs(degrees);
+  const double sign = c.fold == Fold::kUnassigned ? (degrees < 0 ? -1.0 : 1.0) : fold_sign(c.fold);
+  return sign * size;
 }
 
 AngleConstraint angle_constraint(const DogMesh& mesh, int point, double start_degrees, double end_degrees) {

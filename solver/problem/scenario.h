@@ -56,9 +56,16 @@ struct Scenario {
 Scenario corners_scenario(const DogMesh& mesh, int iterations = 250, int hold = 50);
 
 /// Every crease point where a crease crosses the inside of a grid edge between two patches folds
-/// from flat to `degrees` (curved folding without dragging); positive angles fold valleys,
-/// negative ones mountains (the sign only picks the start tilt: the targets are cosines).
+/// from flat towards its crease's target (crease_fold_target), curved folding without dragging.
+/// The targets are cosines: the direction of each fold comes from the start state, which tilts
+/// every crease towards its target's sign (fold_seed.h), and from the fold bias that then keeps it.
 Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250, int hold = 50);
+
+/// The signed fold angle (degrees; positive valley, negative mountain) the fold scenario asks of a
+/// crease curve: 0 for a crease assigned flat; else the drawing's angle for it, or |degrees|,
+/// towards its assignment; a crease without assignment folds the way `degrees`'s sign says
+/// (0 counts as positive).
+double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees);
 
 /// alpha at a crease point: the angle between the crease tangent (circle through the point and its
 /// neighbours, flat state) and the grid edge it crosses. Throws std::logic_error for points

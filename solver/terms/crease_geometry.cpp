@@ -46,7 +46,7 @@ std::vector<FoldSite> fold_sites(const DogMesh& mesh) {
       const Eigen::Vector3d b = crease_point_position(st.points[nb.prev], rest);
       const Eigen::Vector3d f = crease_point_position(st.points[nb.next], rest);
       const double scale = (p - b).norm() * (f - p).norm();
-      const bool flat = ((p - b).cross(f - p)).norm() <= 1e-9 * scale;
+      const bool flat = curve.fold == Fold::kFlat || ((p - b).cross(f - p)).norm() <= 1e-9 * scale;
       sites.push_back({c, k, point, nb.prev, nb.next, flat});
     }
   }

@@ -30,7 +30,9 @@ struct FoldSite {
   int curve, index;  ///< position along the curve
   int point;         ///< crease point
   int prev, next;    ///< neighbouring crease points
-  bool flat;         ///< the crease is straight there in the rest state (no osculating plane)
+  /// The crease is straight there in the rest state (no osculating plane), or assigned flat:
+  /// neither the fold test nor the fold bias applies.
+  bool flat;
 };
 std::vector<FoldSite> fold_sites(const DogMesh& mesh);
 
