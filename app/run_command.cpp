@@ -17,6 +17,7 @@
 #include "base/statistics.h"
 #include "solver/config/run_config_json.h"
 #include "solver/problem/crease_angles.h"
+#include "solver/run/crease_settings.h"
 #include "solver/run/run_log.h"
 #include "solver/run/run_setup.h"
 #include "solver/run/run_totals.h"
@@ -160,7 +161,8 @@ void run(const RunArgs& a) {
   std::unique_ptr<OutputSet> out;
   if (!a.out.empty()) out = std::make_unique<OutputSet>(a.out);
 
-  const DogModel model = build_model(a.pattern);
+  DogModel model = build_model(a.pattern);
+  apply_crease_settings(config.creases, model);
   RunSetup setup(model, mode, config);
   const int total = setup.total_iterations();
   RunCsv csv;
@@ -220,7 +222,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                   "$.switches)");
   a->scenario_opt = cmd->add_option("--scenario", a->scenario,
                                     "corners: the thesis protocol (first grid corner held, last one dragged); "
-                                    "fold: every crease folds from flat to --angle; none: only the --config constraints; "
+                                    "fold: every crease folds from flat towards its assignment, to its own angle or --angle; none: only the --config constraints; "
                                     "flatten: start with every crease folded to --angle, one corner held, nothing else "
                                     "asked (the thesis's ADMM test)")
                         ->check(CLI::IsMember(scenario_names()))

@@ -53,10 +53,12 @@ class SegmentIndex {
     int owner;
   };
   long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-  static long long cell_key(long i, long j) { return (static_cast<long long>(i) << 32) ^ (j & 0xffffffffLL); }
+  static unsigned long long cell_key(long i, long j) {
+    return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(j) & 0xffffffffULL);
+  }
   double cell_, tol_;
   std::vector<Segment> segments_;
-  std::unordered_map<long long, std::vector<int>> cells_;
+  std::unordered_map<unsigned long long, std::vector<int>> cells_;
 };
 
 // The owners near all three points a, b and their midpoint.

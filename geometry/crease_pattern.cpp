@@ -282,6 +282,12 @@ const char* fold_name(Fold fold) {
   return "unassigned";
 }
 
+std::optional<Fold> find_fold(const std::string& name) {
+  for (const Fold fold : {Fold::kUnassigned, Fold::kMountain, Fold::kValley, Fold::kFlat})
+    if (name == fold_name(fold)) return fold;
+  return std::nullopt;
+}
+
 double fold_sign(Fold fold) { return fold == Fold::kValley ? 1.0 : fold == Fold::kMountain ? -1.0 : 0.0; }
 
 CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {

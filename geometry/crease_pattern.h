@@ -19,6 +19,8 @@ enum class Fold { kUnassigned, kMountain, kValley, kFlat };
 
 /// "unassigned", "mountain", "valley", "flat".
 const char* fold_name(Fold fold);
+/// The Fold named by fold_name, if any.
+std::optional<Fold> find_fold(const std::string& name);
 /// +1 valley, -1 mountain, 0 flat or unassigned: the sign of the fold angle (FOLD's convention).
 double fold_sign(Fold fold);
 

@@ -12,8 +12,7 @@ namespace {
 constexpr double kHalfTurn = 180;
 
 Fold fold_of_attribute(const std::string& value, const std::string& where) {
-  for (const Fold fold : {Fold::kMountain, Fold::kValley, Fold::kFlat, Fold::kUnassigned})
-    if (value == fold_name(fold)) return fold;
+  if (const std::optional<Fold> fold = find_fold(value)) return *fold;
   throw InputError(where + ": data-fold=\"" + value +
                    "\": expected \"mountain\", \"valley\", \"flat\" or \"unassigned\"");
 }

@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "geometry/plane_geometry.h"
 
 namespace sdog {
 namespace {
@@ -557,18 +559,22 @@ int count_pattern_patches(const CleanPattern& pattern) {
 int first_non_separating_crease(const CleanPattern& pattern) {
   const Arrangement arr = pattern_arrangement(pattern);
   // After cleaning, creases meet only at shared vertices, so each crease segment is one edge of
-  // the arrangement: a crease separates the sheet when the faces on the two sides of its segments
-  // differ (one segment suffices: the faces along a crease are the same between its vertices).
+  // the arrangement: a crease divides the sheet where the faces on the two sides of an edge differ.
+  // Edges with the same face on both sides (their ends as the input doubles, in both orders):
+  std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> inside;
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    if (e->face() != e->twin()->face()) continue;
+    const std::pair<double, double> s{CGAL::to_double(e->source()->point().x()), CGAL::to_double(e->source()->point().y())};
+    const std::pair<double, double> t{CGAL::to_double(e->target()->point().x()), CGAL::to_double(e->target()->point().y())};
+    inside.insert({s, t});
+    inside.insert({t, s});
+  }
   for (size_t k = 0; k < pattern.creases.size(); ++k) {
-    const Polyline2& pts = pattern.creases[k].points;
-    const Point a = exact(pts[0]), b = exact(pts[1]);
-    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-      const Point& s = e->source()->point();
-      const Point& t = e->target()->point();
-      if ((s == a && t == b) || (s == b && t == a)) {
-        if (e->face() == e->twin()->face()) return static_cast<int>(k);
-        break;
-      }
+    const Crease& c = pattern.creases[k];
+    for (int i = 0; i < segment_count(c.points, c.closed); ++i) {
+      const Eigen::Vector2d& a = c.points[i];
+      const Eigen::Vector2d& b = c.points[(i + 1) % c.points.size()];
+      if (inside.count({{a.x(), a.y()}, {b.x(), b.y()}})) return static_cast<int>(k);
     }
   }
   return -1;

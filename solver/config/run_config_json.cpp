@@ -26,19 +26,42 @@ PositionSpec position_spec(const Field& f) {
 }
 
 AngleSpec angle_spec(const Field& f) {
-  f.expect_object({"crease_point", "curve", "start", "end"});
+  f.expect_object({"crease_point", "curve", "id", "start", "end"});
   AngleSpec a;
   a.path = f.where();
-  if (f.has("crease_point") == f.has("curve"))
-    f.fail("give exactly one of \"crease_point\" (an index) and \"curve\" (a crease curve index)");
+  if (f.has("crease_point") + f.has("curve") + f.has("id") != 1)
+    f.fail("give exactly one of \"crease_point\" (an index), \"curve\" (a crease index) and \"id\" (a crease's SVG "
+           "element id)");
   if (!f.has("end")) f.fail("missing \"end\" (the final dihedral angle in degrees)");
   if (f.has("crease_point")) a.point = f["crease_point"].integer(0);
   if (f.has("curve")) a.curve = f["curve"].integer(0);
+  if (f.has("id")) a.id = f["id"].text();
   if (f.has("start")) a.start_degrees = f["start"].number();
   a.end_degrees = f["end"].number();
   for (double d : {a.start_degrees, a.end_degrees})
     if (std::abs(d) > 180) f.fail("angles must be in [-180, 180] degrees");
   return a;
+}
+
+CreaseSetting crease_setting(const Field& f) {
+  f.expect_object({"curve", "id", "fold", "angle"});
+  CreaseSetting c;
+  c.path = f.where();
+  if (f.has("curve") == f.has("id"))
+    f.fail("give exactly one of \"curve\" (a crease index, as sdog mesh lists them) and \"id\" (its SVG element id)");
+  if (!f.has("fold") && !f.has("angle")) f.fail("give \"fold\" (mountain, valley, flat or unassigned), \"angle\" or both");
+  if (f.has("curve")) c.curve = f["curve"].integer(0);
+  if (f.has("id")) c.id = f["id"].text();
+  if (f.has("fold")) {
+    c.fold = find_fold(f["fold"].text());
+    if (!c.fold) f["fold"].fail("unknown assignment \"" + f["fold"].text() + "\" (mountain, valley, flat or unassigned)");
+  }
+  if (f.has("angle")) {
+    c.angle = f["angle"].number();
+    if (*c.angle < 0 || *c.angle > 180)
+      f["angle"].fail("the fold angle must be from 0 to 180 degrees (its direction is the assignment's)");
+  }
+  return c;
 }
 
 ModeSwitch mode_switch(const Field& f) {
@@ -64,7 +87,7 @@ std::vector<std::string> top_level_keys() {
   for_each_option_section(defaults, [&](const char* key, const auto&, const auto&) {
     keys.push_back(key);
   });
-  for (const char* key : {"positions", "angles", "switches"}) keys.push_back(key);
+  for (const char* key : {"positions", "angles", "creases", "switches"}) keys.push_back(key);
   return keys;
 }
 
@@ -89,6 +112,7 @@ void apply_run_config(const json& j, const std::string& source, RunConfig& c) {
   });
   read_list(root, "positions", c.positions, position_spec);
   read_list(root, "angles", c.angles, angle_spec);
+  read_list(root, "creases", c.creases, crease_setting);
   read_list(root, "switches", c.switches, mode_switch);
   validate_run_config(c, source);
 }
@@ -126,11 +150,22 @@ json to_json(const RunConfig& c) {
     json e{{"start", a.start_degrees}, {"end", a.end_degrees}};
     if (a.point) e["crease_point"] = *a.point;
     if (a.curve) e["curve"] = *a.curve;
+    if (a.id) e["id"] = *a.id;
     angles.push_back(e);
+  }
+  json creases = json::array();
+  for (const auto& s : c.creases) {
+    json e = json::object();
+    if (s.curve) e["curve"] = *s.curve;
+    if (s.id) e["id"] = *s.id;
+    if (s.fold) e["fold"] = fold_name(*s.fold);
+    if (s.angle) e["angle"] = *s.angle;
+    creases.push_back(e);
   }
   for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", mode_name(s.mode)}});
   j["positions"] = positions;
   j["angles"] = angles;
+  j["creases"] = creases;
   j["switches"] = switches;
   return j;
 }

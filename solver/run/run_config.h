@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/option_table.h"
+#include "geometry/crease_pattern.h"
 #include "solver/modes/mode_kind.h"
 #include "solver/modes/mode_options.h"
 #include "solver/problem/weights.h"
@@ -42,13 +43,26 @@ struct PositionSpec {
   std::optional<Eigen::Vector3d> move;   ///< ... or displacement from start
 };
 
-/// An angle constraint before it is resolved: one crease point, or every fold site of a curve.
+/// An angle constraint before it is resolved: one crease point, or every fold site of a curve
+/// (named by its index among the cleaned creases or by its SVG element id).
 struct AngleSpec {
   std::string path;  ///< source and JSON path, for messages
   std::optional<int> point;
   std::optional<int> curve;
+  std::optional<std::string> id;
   double start_degrees = 0;
   double end_degrees = 0;
+};
+
+/// A crease's assignment and fold angle, set by the configuration over the drawing's: for the crease
+/// with index `curve` among the cleaned creases (as `sdog mesh` lists them), or for every cleaned
+/// crease drawn by the SVG element `id`.
+struct CreaseSetting {
+  std::string path;  ///< source and JSON path, for messages
+  std::optional<int> curve;
+  std::optional<std::string> id;
+  std::optional<Fold> fold;
+  std::optional<double> angle;  ///< degrees, 0 to 180
 };
 
 /// From iteration `iteration` on (1-based), mode `mode` computes the run (`sdog run --switch`).
@@ -67,6 +81,7 @@ struct RunConfig : ModeOptions {
   Weights weights;
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
+  std::vector<CreaseSetting> creases;
   std::vector<ModeSwitch> switches;  ///< mode switches during the run, by ascending iteration
 };
 

@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/run/crease_settings.h"
 #include "solver/run/flatten_scenario.h"
 
 namespace sdog {
@@ -70,12 +71,11 @@ void add_angles(const RunConfig& c, const DogMesh& mesh, Scenario& s) {
       for (const auto& site : sites)
         if (site.point == *a.point) set_sign(site.curve, a.end_degrees);
     } else {
-      if (*a.curve >= static_cast<int>(mesh.stitching.curves.size()))
-        throw InputError(a.path + ".curve: the pattern has " + std::to_string(mesh.stitching.curves.size()) +
-                         " crease curves, there is no curve " + std::to_string(*a.curve));
-      for (const auto& site : sites)
-        if (site.curve == *a.curve) s.angles.push_back(angle_constraint(mesh, site.point, a.start_degrees, a.end_degrees));
-      set_sign(*a.curve, a.end_degrees);
+      for (const int curve : named_creases(mesh, a.curve, a.id, a.path)) {
+        for (const auto& site : sites)
+          if (site.curve == curve) s.angles.push_back(angle_constraint(mesh, site.point, a.start_degrees, a.end_degrees));
+        set_sign(curve, a.end_degrees);
+      }
     }
   }
 }

@@ -166,3 +166,33 @@ TEST(PatternCleaning, RefusesInvalidOptions) {
 
 }  // namespace
 }  // namespace sdog
+
+namespace sdog {
+namespace {
+
+CreasePattern annulus_pattern(std::vector<Polyline2> creases) {
+  CreasePattern p = test::rectangle_pattern(100, 80, std::move(creases));
+  p.sheet.holes = {{{40, 30}, {40, 50}, {60, 50}, {60, 31}}};
+  return p;
+}
+
+TEST(NonSeparatingCreases, FromTheBoundaryToAHole) {
+  const CleanPattern c = clean_pattern(annulus_pattern({{{50, 0}, {50, 30.5}}}));
+  EXPECT_EQ(first_non_separating_crease(c), 0);
+}
+
+TEST(NonSeparatingCreases, FromACreaseToAHole) {
+  // The second piece of the slanted crease (after the crossing at x = 80) runs from the vertical
+  // crease to the hole: the piece left of x = 80 stays one ring around the hole.
+  const CleanPattern c = clean_pattern(annulus_pattern({{{100, 80}, {40, 50}}, {{80, 0}, {80, 80}}}));
+  ASSERT_EQ(c.creases[0].points.size(), 3u) << "one crease through the crossing";
+  EXPECT_EQ(first_non_separating_crease(c), 0);
+}
+
+TEST(NonSeparatingCreases, SeparatingCreasesPass) {
+  EXPECT_EQ(first_non_separating_crease(clean_pattern(annulus_pattern({{{50, 0}, {50, 30.5}}, {{50, 50}, {50, 80}}}))), -1);
+  EXPECT_EQ(first_non_separating_crease(clean_pattern(test::rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}}))), -1);
+}
+
+}  // namespace
+}  // namespace sdog

@@ -75,16 +75,24 @@ TEST(RunConfigJson, EveryKeyRoundTripsThroughRunJson) {
 TEST(RunConfigJson, ListsOfConstraintsAndSwitchesRoundTrip) {
   const json j = json::parse(R"({
     "positions": [{"vertex": 3, "move": [0, 0, 1]}, {"near": [1.5, -2], "start": [0, 0, 0], "end": [1, 2, 3]}],
-    "angles": [{"curve": 1, "end": 60}, {"crease_point": 7, "start": -10, "end": -45}],
+    "angles": [{"curve": 1, "end": 60}, {"crease_point": 7, "start": -10, "end": -45}, {"id": "c2", "end": 30}],
+    "creases": [{"id": "c2", "fold": "valley", "angle": 40}, {"curve": 0, "fold": "flat"}, {"curve": 1, "angle": 15}],
     "switches": [{"iteration": 5, "mode": "twolevel"}, {"iteration": 9, "mode": "standard"}]})");
   RunConfig c;
   apply_run_config(j, "c.json", c);
   ASSERT_EQ(c.positions.size(), 2u);
   EXPECT_EQ(*c.positions[0].vertex, 3);
   EXPECT_EQ(*c.positions[1].end, Eigen::Vector3d(1, 2, 3));
-  ASSERT_EQ(c.angles.size(), 2u);
+  ASSERT_EQ(c.angles.size(), 3u);
   EXPECT_EQ(*c.angles[1].point, 7);
   EXPECT_EQ(c.angles[1].start_degrees, -10);
+  EXPECT_EQ(*c.angles[2].id, "c2");
+  ASSERT_EQ(c.creases.size(), 3u);
+  EXPECT_EQ(*c.creases[0].id, "c2");
+  EXPECT_EQ(*c.creases[0].fold, Fold::kValley);
+  EXPECT_EQ(*c.creases[0].angle, 40);
+  EXPECT_EQ(*c.creases[1].fold, Fold::kFlat);
+  EXPECT_FALSE(c.creases[2].fold);
   ASSERT_EQ(c.switches.size(), 2u);
   EXPECT_EQ(c.switches[0].mode, ModeKind::kTwoLevel);
   RunConfig again;
@@ -140,6 +148,11 @@ TEST(RunConfigJson, BadValuesNameTheFileAndTheJsonPath) {
       {R"({"positions": [{"vertex": 1}]})", "c.json: $.positions[0]: give exactly one of \"end\""},
       {R"({"positions": [{"vertex": 1, "end": [1, 2]}]})", "c.json: $.positions[0].end: expected an array of 3"},
       {R"({"switches": [{"iteration": 2, "mode": "fast"}]})", "c.json: $.switches[0].mode: unknown mode"},
+      {R"({"angles": [{"curve": 1, "id": "a", "end": 3}]})", "c.json: $.angles[0]: give exactly one of"},
+      {R"({"creases": [{"id": "a", "fold": "hill"}]})", "c.json: $.creases[0].fold: unknown assignment \"hill\""},
+      {R"({"creases": [{"id": "a"}]})", "c.json: $.creases[0]: give \"fold\""},
+      {R"({"creases": [{"curve": 2, "angle": -5}]})", "c.json: $.creases[0].angle: the fold angle must be from 0 to 180"},
+      {R"({"creases": [{"fold": "valley"}]})", "c.json: $.creases[0]: give exactly one of \"curve\""},
       {R"({"iterations": 0, "hold": 0})", "c.json: iterations + hold must be at least 1"},
       {R"([1, 2])", "c.json: $: expected an object"}};
   for (const auto& [text, message] : cases) {
