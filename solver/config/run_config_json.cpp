@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "base/errors.h"
-#include "solver/config/json_field.h"
+#include "base/json_field.h"
 #include "solver/config/option_json.h"
 
 namespace sdog {
