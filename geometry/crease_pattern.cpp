@@ -1,12 +1,15 @@
 #include "geometry/crease_pattern.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "geometry/fold_conventions.h"
+#include "geometry/fold_reader.h"
 #include "geometry/pattern_assembly.h"
 
 namespace sdog {
@@ -224,6 +227,9 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
 }
 
 CreasePattern read_crease_pattern(const std::string& path, const SvgReadOptions& options) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".fold") return read_fold_file(path);
   return crease_pattern_from_svg(read_svg_file(path, options));
 }
 
