@@ -1,5 +1,6 @@
 # Scalable DOGs: `make demo` and `make test` install what is missing (Debian 12 packages), build
-# (CMake + Ninja, RelWithDebInfo) and run. `make fuzz` runs the libFuzzer targets (clang).
+# (CMake + Ninja, RelWithDebInfo) and run. `make fuzz` runs the libFuzzer targets (clang), each for
+# FUZZ_SECONDS.
 BUILD    ?= build
 FUZZ_BUILD ?= build-fuzz
 JOBS     ?= 2
@@ -60,6 +61,9 @@ fuzz: fuzz-deps deps
 	mkdir -p $(FUZZ_BUILD)/corpus/svg && cp -n datasets/*.svg tests/fuzz/seeds/*.svg $(FUZZ_BUILD)/corpus/svg/ 2>/dev/null || true
 	$(FUZZ_BUILD)/tests/fuzz/fuzz_svg_pattern -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=tests/fuzz/svg.dict -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus/svg
+	mkdir -p $(FUZZ_BUILD)/corpus/fold && cp -n datasets/*.fold tests/fuzz/seeds/*.fold $(FUZZ_BUILD)/corpus/fold/ 2>/dev/null || true
+	$(FUZZ_BUILD)/tests/fuzz/fuzz_fold_pattern -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	  -dict=tests/fuzz/fold.dict -artifact_prefix=$(FUZZ_BUILD)/fold- $(FUZZ_BUILD)/corpus/fold
 
 # Regenerates the dataset previews (datasets/README.md) and the README pictures (also the studio's).
 previews: build

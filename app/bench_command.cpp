@@ -184,7 +184,7 @@ void register_bench_command(CLI::App& app, Runner& runner) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand(
       "bench", "Time solver modes on the thesis protocol (median ms per iteration over iterations 10-240)");
-  cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
+  cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
   cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
   cmd->add_flag("--thesis-grid", a->thesis_grid,

@@ -22,8 +22,8 @@ void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig&
 
 void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
   cmd.add_option("PATTERN", o.pattern,
-                 "crease pattern (SVG): black strokes = sheet boundary, "
-                 "other colours = creases")
+                 "crease pattern: an SVG drawing (black strokes = sheet boundary, other colours = "
+                 "creases) or a FOLD file (.fold)")
       ->required();
   cmd.add_option("--res", o.res,
                  "grid lines XxY such as 31x21 (odd numbers when a coarse mesh is built), or "
@@ -79,8 +79,8 @@ std::string command_line_text(int argc, char** argv) {
 void register_sdog_commands(CLI::App& app, Runner& run, const std::string& command_line) {
   app.name("sdog");
   app.description(
-      "Scalable DOGs: crease patterns (SVG) to discrete orthogonal geodesic nets (DOGs), their "
-      "coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options.");
+      "Scalable DOGs: crease patterns (SVG or FOLD) to discrete orthogonal geodesic nets (DOGs), "
+      "their coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options.");
   app.require_subcommand(1);
   register_mesh_command(app, run);
   register_render_command(app, run);

@@ -229,7 +229,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
       "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its "
       "speedup, DOG residuals, stitching gap), "
       "series.csv, compare.json and PNG plots (needs an X display: use xvfb-run on a headless machine)");
-  cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG)");
+  cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");
   cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_modes() + ")")
       ->delimiter(',')

@@ -8,7 +8,7 @@ namespace sdog::cli {
 void add_studio_options(CLI::App& cli, StudioArgs& a) {
   cli.name("sdog-studio");
   cli.description("Scalable DOGs studio: see and steer the solver");
-  cli.add_option("PATTERN", a.pattern, "crease pattern (SVG) to open");
+  cli.add_option("PATTERN", a.pattern, "crease pattern (SVG or FOLD) to open");
   cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh), or auto: 41 along the longer side")
       ->capture_default_str();
   cli.add_option("--mode", a.mode, "solver mode (" + known_modes() + ")")->capture_default_str();

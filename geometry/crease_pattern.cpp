@@ -1,13 +1,16 @@
 #include "geometry/crease_pattern.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "geometry/fold_conventions.h"
-#include "geometry/plane_geometry.h"
+#include "geometry/fold_reader.h"
+#include "geometry/pattern_assembly.h"
 
 namespace sdog {
 namespace {
@@ -66,48 +69,6 @@ std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol)
     loops.push_back(std::move(current.points));
   }
   return loops;
-}
-
-Box2 box_of(const Polyline2& pts) {
-  Box2 b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (const auto& p : pts) {
-    b.xmin = std::min(b.xmin, p.x());
-    b.ymin = std::min(b.ymin, p.y());
-    b.xmax = std::max(b.xmax, p.x());
-    b.ymax = std::max(b.ymax, p.y());
-  }
-  return b;
-}
-
-void check_simple(const std::vector<Polyline2>& loops, const std::vector<std::string>& origins) {
-  std::vector<const Polyline2*> ptrs;
-  for (const auto& l : loops) ptrs.push_back(&l);
-  const auto contacts = find_segment_contacts(ptrs, std::vector<bool>(loops.size(), true));
-  if (contacts.empty()) return;
-  const auto& c = contacts.front();
-  const Polyline2& la = loops[c.a];
-  const Eigen::Vector2d where = la[c.sa];
-  if (c.a == c.b)
-    throw InputError(origins[c.a] + ": the sheet boundary crosses itself near " +
-                     format_point(where) + "; a boundary must be a simple closed curve");
-  throw InputError(origins[c.b] + ": this boundary curve touches or crosses another one (" +
-                   origins[c.a] + ") near " + format_point(where) +
-                   "; holes must lie strictly inside the sheet and apart from each other");
-}
-
-// Creases may reach past the sheet (they are clipped), but coordinates many sheet sizes away are
-// a drawing mistake, and they would make clipping and crossing searches needlessly expensive.
-void check_not_far(const SvgCurve& c, const CreasePattern& pattern, const std::string& source) {
-  constexpr double kFarFactor = 100;
-  const Box2& b = pattern.sheet.bbox;
-  const double L = pattern.size();
-  for (const auto& p : c.points) {
-    if (p.x() < b.xmin - kFarFactor * L || p.x() > b.xmax + kFarFactor * L ||
-        p.y() < b.ymin - kFarFactor * L || p.y() > b.ymax + kFarFactor * L)
-      throw InputError(origin_of(source, c) + ": the curve reaches " + format_point(p) +
-                       ", more than " + format_number(kFarFactor) +
-                       " sheet sizes away from the sheet; check the drawing's coordinates");
-  }
 }
 
 // The tolerance for closing curves: closed_fraction of the sheet size, which is not known yet, so
@@ -189,40 +150,6 @@ Sheet sheet_from_viewbox(const SvgDrawing& drawing) {
   return sheet;
 }
 
-// The sheet of boundary loops: the loop of largest area is the outer boundary (made
-// counter-clockwise), the others are holes inside it (made clockwise); bbox not yet set.
-Sheet sheet_from_loops(const std::vector<Polyline2>& loops,
-                       const std::vector<std::string>& loop_origins) {
-  for (size_t k = 0; k < loops.size(); ++k) {
-    if (loops[k].size() < 3)
-      throw InputError(loop_origins[k] +
-                       ": the sheet boundary has fewer than 3 distinct points (zero area)");
-  }
-  check_simple(loops, loop_origins);
-  size_t outer = 0;
-  for (size_t k = 1; k < loops.size(); ++k)
-    if (std::abs(signed_area(loops[k])) > std::abs(signed_area(loops[outer]))) outer = k;
-  const Box2 b = box_of(loops[outer]);
-  const double area = std::abs(signed_area(loops[outer]));
-  const double L = std::max(b.width(), b.height());
-  if (!(area > 1e-12 * L * L) || !(L > 0))
-    throw InputError(loop_origins[outer] + ": the sheet has zero area (its boundary encloses " +
-                     format_number(area) + " square units)");
-  Sheet sheet;
-  sheet.outer = loops[outer];
-  if (signed_area(sheet.outer) < 0) std::reverse(sheet.outer.begin(), sheet.outer.end());
-  for (size_t k = 0; k < loops.size(); ++k) {
-    if (k == outer) continue;
-    if (point_in_polygon(loops[k].front(), sheet.outer) != 1)
-      throw InputError(loop_origins[k] + ": this boundary loop lies outside the sheet (" +
-                       loop_origins[outer] + "); holes must lie inside the outer boundary");
-    Polyline2 hole = loops[k];
-    if (signed_area(hole) > 0) std::reverse(hole.begin(), hole.end());
-    sheet.holes.push_back(std::move(hole));
-  }
-  return sheet;
-}
-
 // Appends to `crease` the curves after curves[k] that continue it: later open subpaths of the
 // same <path> that start within `tol` of its end. Returns the index of the last curve used.
 size_t append_continuations(const std::vector<const SvgCurve*>& curves, size_t k, double tol,
@@ -246,7 +173,7 @@ void add_creases(const std::vector<const SvgCurve*>& curves, const std::vector<C
   const double sheet_tol = closed_fraction * pattern.size();
   for (size_t k = 0; k < curves.size(); ++k) {
     const SvgCurve& c = *curves[k];
-    check_not_far(c, pattern, source);
+    check_near_sheet(c.points, origin_of(source, c), pattern);
     Crease crease;
     crease.points = c.points;
     crease.closed = c.closed;
@@ -306,6 +233,9 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
 }
 
 CreasePattern read_crease_pattern(const std::string& path, const SvgReadOptions& options) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".fold") return read_fold_file(path);
   return crease_pattern_from_svg(read_svg_file(path, options));
 }
 

@@ -62,7 +62,8 @@ struct CreasePattern {
 /// sheet, or a drawing without viewBox and without boundary.
 CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction = 0.002);
 
-/// read_svg_file + crease_pattern_from_svg.
+/// A file whose name ends in .fold (in any case) is read with read_fold_file (the options do not
+/// apply), any other with read_svg_file + crease_pattern_from_svg.
 CreasePattern read_crease_pattern(const std::string& path, const SvgReadOptions& options = {});
 
 }  // namespace sdog

@@ -2,15 +2,13 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
 
 #include "base/errors.h"
+#include "base/text_file.h"
 #include "geometry/svg_flatten.h"
 #include "geometry/svg_path_data.h"
 #include "geometry/svg_style.h"
@@ -527,17 +525,7 @@ SvgDrawing parse_svg(const std::string& text, const std::string& source,
 }
 
 SvgDrawing read_svg_file(const std::string& path, const SvgReadOptions& options) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) throw InputError(path + ": cannot open file (" + std::strerror(errno) + ")");
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, count);
-  // Reading a directory fails here (EISDIR), not in fopen.
-  const int error = std::ferror(file) ? errno : 0;
-  std::fclose(file);
-  if (error != 0) throw InputError(path + ": cannot open file (" + std::strerror(error) + ")");
-  return parse_svg(text, path, options);
+  return parse_svg(read_text_file(path), path, options);
 }
 
 }  // namespace sdog

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "base/json_field.h"
 #include "base/option_table.h"
-#include "solver/config/json_field.h"
 
 namespace sdog {
 

@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "base/errors.h"
-#include "solver/config/json_field.h"
+#include "base/json_field.h"
 #include "solver/config/option_json.h"
 
 namespace sdog {
@@ -122,7 +122,7 @@ json read_json_file(const std::string& path, const std::string& what) {
   if (!in) throw InputError(path + ": cannot open the " + what);
   try {
     return json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // also numbers out of range, such as 1e999
     throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
 }

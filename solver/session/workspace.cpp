@@ -4,7 +4,7 @@
 
 #include "base/atomic_output.h"
 #include "base/errors.h"
-#include "solver/config/json_field.h"
+#include "base/json_field.h"
 #include "solver/config/run_config_json.h"
 
 namespace sdog {

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/errors.h"
-#include "solver/config/json_field.h"
+#include "base/json_field.h"
 
 namespace sdog {
 namespace {

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/errors.h"
-#include "solver/config/json_field.h"
+#include "base/json_field.h"
 #include "solver/config/option_json.h"
 #include "solver/config/run_config_json.h"
 

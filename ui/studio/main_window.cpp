@@ -69,7 +69,7 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   inspector_dock->setWidget(inspector_);
   addDockWidget(Qt::RightDockWidgetArea, inspector_dock);
 
-  status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG file here).");
+  status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG or FOLD file here).");
   statusBar()->addWidget(status_, 1);
 
   marks_ = std::make_unique<SelectionMarks>(renderer_);
@@ -468,10 +468,10 @@ void MainWindow::dropEvent(QDropEvent* event) {
 void MainWindow::open_file(const QString& path) {
   if (path.endsWith(".json", Qt::CaseInsensitive))
     open_workspace(path);
-  else if (path.endsWith(".svg", Qt::CaseInsensitive))
+  else if (path.endsWith(".svg", Qt::CaseInsensitive) || path.endsWith(".fold", Qt::CaseInsensitive))
     open_pattern(path, resolution_.isEmpty() ? QString("auto") : resolution_, QString::fromStdString(mode_));
   else
-    report_error("Cannot open " + path + ": the studio opens crease patterns (.svg) and workspaces (.json).");
+    report_error("Cannot open " + path + ": the studio opens crease patterns (.svg, .fold) and workspaces (.json).");
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -51,9 +51,9 @@ void MainWindow::build_menus() {
 
 void MainWindow::build_file_menu() {
   QMenu* m = menuBar()->addMenu("&File");
-  connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG) at a resolution"),
+  connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG or FOLD) at a resolution"),
           &QAction::triggered, this, [this] {
-            const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg)");
+            const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg *.fold)");
             if (path.isEmpty()) return;
             bool ok = false;
             const QString res = QInputDialog::getText(

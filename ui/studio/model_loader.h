@@ -9,9 +9,10 @@
 
 namespace sdog::studio {
 
-/// Reads the SVG and builds the model; `resolution` is "XxY" or "auto" (41 grid lines along the
-/// sheet's longer side, as sdog's default). Throws the geometry library's errors (UsageError for a
-/// resolution that cannot work, InputError for a pattern that cannot be read or meshed).
+/// Reads the pattern (SVG or FOLD) and builds the model; `resolution` is "XxY" or "auto" (41 grid
+/// lines along the sheet's longer side, as sdog's default). Throws the geometry library's errors
+/// (UsageError for a resolution that cannot work, InputError for a pattern that cannot be read or
+/// meshed).
 std::shared_ptr<const DogModel> load_model(const std::string& pattern_path, const std::string& resolution);
 
 }  // namespace sdog::studio

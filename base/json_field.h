@@ -1,6 +1,7 @@
 #pragma once
-// Reading JSON input files (run configurations, workspaces) with errors that name the file and the
-// JSON path of the offending value ("c.json: $.solver.epsilon: expected a number").
+// Reading JSON input files (run configurations, workspaces, FOLD crease patterns) with errors that
+// name the file and the JSON path of the offending value ("c.json: $.solver.epsilon: expected a
+// number").
 #include <Eigen/Core>
 #include <cmath>
 #include <nlohmann/json.hpp>

@@ -1,0 +1,13 @@
+// libFuzzer target: FOLD text -> reader -> crease pattern -> cleaning -> patch count, plus a small
+// mesh (pattern_fuzzing.h).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "geometry/fold_reader.h"
+#include "tests/fuzz/pattern_fuzzing.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  return sdog::fuzz::exercise_pattern([&] { return sdog::parse_fold(text, "fuzz.fold"); });
+}
