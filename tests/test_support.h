@@ -17,11 +17,11 @@ inline std::string dataset(const std::string& name) {
   return std::string(SDOG_DATASETS_DIR) + "/" + name;
 }
 
-/// The project's own crease patterns (datasets/*.svg), sorted.
+/// The project's own crease patterns (datasets/*.svg and *.fold), sorted.
 inline std::vector<std::string> all_datasets() {
   std::vector<std::string> out;
   for (const auto& e : std::filesystem::directory_iterator(SDOG_DATASETS_DIR))
-    if (e.path().extension() == ".svg") out.push_back(e.path().string());
+    if (e.path().extension() == ".svg" || e.path().extension() == ".fold") out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -37,7 +37,7 @@ inline std::vector<std::string> all_reference_patterns() {
   const std::string dir = reference_patterns_dir();
   if (dir.empty()) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".svg") out.push_back(e.path().string());
+    if (e.path().extension() == ".svg" || e.path().extension() == ".fold") out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -1,9 +1,10 @@
-// One crease pattern written in each of the drawing conventions (fold_conventions.h) gives the same
-// creases, mesh and fold; the configuration overrides assignments by crease id.
+// One crease pattern written in each of the drawing conventions (fold_conventions.h) and as a FOLD
+// file gives the same creases, mesh and fold; the configuration overrides assignments by crease id.
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
 #include "geometry/dog_model.h"
+#include "geometry/fold_reader.h"
 #include "geometry/svg_reader.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/crease_settings.h"
@@ -28,6 +29,16 @@ DogModel model_of(const std::string& svg) {
   return build_dog_model(crease_pattern_from_svg(parse_svg(svg, "pleats.svg")), {21, 21});
 }
 
+// The same pleats as a FOLD crease pattern (FOLD's y points down the page, as SVG's does).
+const char* const kPleatsFold = R"({
+  "frame_classes": ["creasePattern"],
+  "vertices_coords": [[0, 0], [100, 0], [100, 100], [0, 100],
+                      [25, 0], [30, 50], [25, 100], [50, 0], [55, 50], [50, 100], [75, 0], [80, 50], [75, 100]],
+  "edges_vertices": [[0, 4], [4, 7], [7, 10], [10, 1], [1, 2], [2, 12], [12, 9], [9, 6], [6, 3], [3, 0],
+                     [4, 5], [5, 6], [7, 8], [8, 9], [10, 11], [11, 12]],
+  "edges_assignment": ["B", "B", "B", "B", "B", "B", "B", "B", "B", "B", "M", "M", "V", "V", "M", "M"]
+})";
+
 Dofs folded(const DogModel& model, const RunConfig& config) {
   RunSetup setup(model, ModeKind::kStandard, config);
   EXPECT_EQ(setup.run({}).termination, Termination::kCompleted);
@@ -51,8 +62,9 @@ TEST(FoldedAsDrawn, ColoursDashesAndAttributesGiveTheSameFold) {
   const DogModel attributes = model_of(pleats_svg([](int k) {
     return std::string(k == 1 ? "stroke=\"#888888\" data-fold=\"valley\"" : "stroke=\"#888888\" data-fold=\"mountain\"");
   }));
+  const DogModel fold_file = build_dog_model(parse_fold(kPleatsFold, "pleats.fold"), {21, 21});
   ASSERT_EQ(colours.fine.stitching.curves.size(), 3u);
-  for (const DogModel* other : {&dashes, &attributes}) {
+  for (const DogModel* other : {&dashes, &attributes, &fold_file}) {
     EXPECT_TRUE(other->fine.V == colours.fine.V);
     EXPECT_TRUE(other->fine.F == colours.fine.F);
     for (size_t k = 0; k < 3; ++k) {
@@ -65,6 +77,7 @@ TEST(FoldedAsDrawn, ColoursDashesAndAttributesGiveTheSameFold) {
   const Dofs x = folded(colours, fold_config());
   EXPECT_TRUE(folded(dashes, fold_config()) == x);
   EXPECT_TRUE(folded(attributes, fold_config()) == x);
+  EXPECT_TRUE(folded(fold_file, fold_config()) == x);
   // The pleats: each fold site's angle has its crease's sign.
   const FoldAngles angles(colours.fine);
   for (size_t k = 0; k < angles.sites().size(); ++k)
