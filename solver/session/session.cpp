@@ -1,22 +1,41 @@
 #include "solver/session/session.h"
 
+#include <algorithm>
+#include <utility>
+
 #include "base/errors.h"
 #include "solver/problem/fold_seed.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/run/crease_settings.h"
 #include "solver/run/run_setup.h"
 
 namespace sdog {
 
 Session::Session(const DogModel& model, const RunConfig& config, ModeKind mode)
-    : model_(model), config_(config), mode_kind_(mode) {
+    : source_(model), model_(model), config_(config), mode_kind_(mode) {
   check_mode_usable(mode, model);
-  base_ = make_scenario(config, model.fine);
-  problem_ = std::make_unique<DogProblem>(model.fine, model.fine_topology, config.weights);
-  x_ = base_.start(model.fine);
+  apply_creases();
+  x_ = base_.start(model_.fine);
   rebuild();
 }
 
 Session::~Session() = default;
+
+void Session::apply_creases() {
+  for (size_t k = 0; k < model_.clean.creases.size(); ++k) {
+    model_.clean.creases[k].fold = source_.clean.creases[k].fold;
+    model_.clean.creases[k].angle = source_.clean.creases[k].angle;
+  }
+  for (const auto& [to, from] : {std::pair{&model_.fine, &source_.fine}, std::pair{&model_.coarse, &source_.coarse}})
+    for (size_t k = 0; k < to->stitching.curves.size(); ++k) {
+      to->stitching.curves[k].fold = from->stitching.curves[k].fold;
+      to->stitching.curves[k].angle = from->stitching.curves[k].angle;
+    }
+  apply_crease_settings(config_.creases, model_);
+  base_ = make_scenario(config_, model_.fine);
+  mode_.reset();  // before the problem it refers to
+  problem_ = std::make_unique<DogProblem>(model_.fine, model_.fine_topology, config_.weights);
+}
 
 void Session::rebuild() {
   scenario_ = base_;
@@ -61,7 +80,7 @@ void Session::check_vertex(int vertex) const {
 }
 
 void Session::edit(const UserConstraints& next, bool merge) {
-  if (!merge || undo_.empty()) undo_.push_back(user_);
+  if (!merge || undo_.empty()) undo_.push_back({user_, config_.creases});
   redo_.clear();
   user_ = next;
   rebuild();
@@ -134,14 +153,62 @@ void Session::set_constraints(const UserConstraints& constraints) {
   edit(constraints);
 }
 
+void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle) {
+  const auto& existing = model_.fine.stitching.curves;
+  if (curves.empty()) throw InputError("no crease to set: pick one first");
+  for (int k : curves)
+    if (k < 0 || k >= static_cast<int>(existing.size()))
+      throw InputError("crease " + std::to_string(k) + " does not exist (the pattern has " +
+                       std::to_string(existing.size()) + " creases after cleaning)");
+  if (angle && !(*angle >= 0 && *angle <= 180)) throw InputError("a fold angle must be in [0, 180] degrees");
+  if (!fold && !angle) return;
+  undo_.push_back({user_, config_.creases});
+  redo_.clear();
+  for (int k : curves) {
+    // The crease's whole state after the edit, as apply_crease_settings would leave it.
+    CreaseSetting s;
+    s.path = "studio: crease " + std::to_string(k);
+    s.curve = k;
+    s.fold = fold.value_or(existing[k].fold);
+    s.angle = existing[k].angle;
+    if (fold && *fold != Fold::kMountain && *fold != Fold::kValley) s.angle.reset();
+    if (angle) s.angle = angle;
+    // A setting with the whole state makes the studio's earlier ones for the crease redundant
+    // (one with an assignment and no angle keeps the angle before it: those stay).
+    if (s.angle || (*s.fold != Fold::kMountain && *s.fold != Fold::kValley)) {
+      auto& list = config_.creases;
+      list.erase(std::remove_if(list.begin(), list.end(),
+                                [&](const CreaseSetting& c) {
+                                  return c.curve == k && !c.id && c.path.rfind("studio: ", 0) == 0;
+                                }),
+                 list.end());
+    }
+    config_.creases.push_back(s);
+  }
+  apply_creases();
+  rebuild();
+}
+
+void Session::fold() {
+  RunConfig next = config_;
+  next.scenario = ScenarioKind::kFold;
+  Scenario scenario = make_scenario(next, model_.fine);
+  check_scenario_targets(scenario, next, "the pattern at this resolution");
+  config_ = next;
+  base_ = std::move(scenario);
+  reset();
+}
+
 bool Session::undo() { return travel(undo_, redo_); }
 bool Session::redo() { return travel(redo_, undo_); }
 
-bool Session::travel(std::vector<UserConstraints>& from, std::vector<UserConstraints>& to) {
+bool Session::travel(std::vector<EditState>& from, std::vector<EditState>& to) {
   if (from.empty()) return false;
-  to.push_back(user_);
-  user_ = from.back();
+  to.push_back({user_, config_.creases});
+  user_ = from.back().user;
+  config_.creases = from.back().creases;
   from.pop_back();
+  apply_creases();
   rebuild();
   return true;
 }

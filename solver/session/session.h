@@ -7,8 +7,13 @@
 // user's constraints, which hold their targets from the start. Every edit rebuilds the mode on the
 // current positions (switch_mode; the modes keep their own copy of the targets, and adding or
 // removing a constraint changes the solver's sparsity pattern). Undo and redo restore the user's
-// constraints, not the positions: the sheet stays where the solver put it.
+// constraints and crease assignments, not the positions: the sheet stays where the solver put it.
+//
+// The session solves its own copy of the model with the run configuration's crease settings
+// (config().creases, crease_settings.h) applied. The user's assignment and angle edits become
+// settings of that list, so a workspace (which keeps the configuration) keeps them.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,13 +41,15 @@ struct UserConstraints {
 
 class Session {
  public:
-  /// The configuration's scenario (make_scenario) from its start state. Throws UsageError for an
-  /// unusable mode (a coarse mode without the coarse mesh).
+  /// The configuration's scenario (make_scenario) from its start state, on a copy of `model` with
+  /// the configuration's crease settings. Throws UsageError for an unusable mode (a coarse mode
+  /// without the coarse mesh), InputError for a crease setting naming no crease.
   Session(const DogModel& model, const RunConfig& config, ModeKind mode);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
+  /// The model solved: the given one with the crease settings of config() applied.
   const DogModel& model() const { return model_; }
   const RunConfig& config() const { return config_; }
   ModeKind mode() const { return mode_kind_; }
@@ -90,19 +97,37 @@ class Session {
   void remove_angle(int angle);
   /// Replaces every user constraint at once (a loaded workspace), as one edit.
   void set_constraints(const UserConstraints& constraints);
+  /// The assignment and/or fold angle (degrees, 0 to 180) of the creases `curves` (indices among
+  /// the cleaned creases), as apply_crease_settings sets them: one undoable edit, added to
+  /// config().creases. The base scenario and the problem are rebuilt; the positions stay (the
+  /// fold scenario goes on from the current shape). Throws InputError for a crease that does not
+  /// exist or an angle out of range.
+  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle);
+  /// Starts the fold scenario (config().scenario becomes fold) from the flat sheet tilted towards
+  /// the assignments; the constraints and the undo history stay. Throws UsageError when the
+  /// pattern has no fold sites at this resolution.
+  void fold();
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
   bool undo();
   bool redo();
 
  private:
+  // What an undo step restores.
+  struct EditState {
+    UserConstraints user;
+    std::vector<CreaseSetting> creases;
+  };
   void edit(const UserConstraints& next, bool merge = false);  // records the undo step and rebuilds
   // Undo (from undo_ to redo_) or redo (the other way).
-  bool travel(std::vector<UserConstraints>& from, std::vector<UserConstraints>& to);
+  bool travel(std::vector<EditState>& from, std::vector<EditState>& to);
   void rebuild();
+  // model_'s creases from source_ with config_.creases applied; the problem and base scenario anew.
+  void apply_creases();
   void check_vertex(int vertex) const;
 
-  const DogModel& model_;
+  const DogModel& source_;
+  DogModel model_;
   RunConfig config_;
   ModeKind mode_kind_;
   Scenario base_, scenario_;
@@ -111,7 +136,7 @@ class Session {
   Dofs x_;
   int iteration_ = 0;
   UserConstraints user_;
-  std::vector<UserConstraints> undo_, redo_;
+  std::vector<EditState> undo_, redo_;
 };
 
 }  // namespace sdog

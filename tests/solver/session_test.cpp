@@ -1,6 +1,6 @@
 // The interactive session (session.h) and workspaces (workspace.h): stepping, handles dragged by
-// program, angle constraints added and removed, undo and redo, mode switches, and a workspace saved
-// and loaded back.
+// program, angle constraints added and removed, crease assignments and angles set, undo and redo,
+// mode switches, and a workspace saved and loaded back.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +8,7 @@
 
 #include "geometry/dog_model.h"
 #include "base/errors.h"
+#include "solver/problem/scenario.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
 #include "tests/solver/session_fixture.h"
@@ -127,6 +128,51 @@ TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
   EXPECT_EQ(with.scenario().angles.size(), 1u);
   EXPECT_THROW(with.add_angle(static_cast<int>(points.size()), 30), InputError);
   EXPECT_THROW(with.add_angle(site, 200), InputError);
+}
+
+TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
+  // The configuration's crease settings apply to the session's copy of the model, not the given one.
+  RunConfig config;
+  config.scenario = ScenarioKind::kFold;
+  config.creases.push_back({"test", 1, std::nullopt, Fold::kMountain, 45.0});
+  Session s(model(), config, ModeKind::kStandard);
+  EXPECT_EQ(s.model().fine.stitching.curves[1].fold, Fold::kMountain);
+  EXPECT_EQ(s.model().fine.stitching.curves[1].angle, std::optional<double>(45.0));
+  EXPECT_EQ(model().fine.stitching.curves[1].angle, std::nullopt);
+  const Fold drawn = model().fine.stitching.curves[0].fold;
+  const Fold flipped = drawn == Fold::kMountain ? Fold::kValley : Fold::kMountain;
+  // The fold scenario's targets on crease 0 follow its assignment and angle.
+  auto target_of = [&](int curve) { return crease_fold_target(s.model().fine, curve, config.fold_angle); };
+  s.set_creases({0}, flipped, std::nullopt);
+  s.set_creases({0}, std::nullopt, 30.0);
+  EXPECT_EQ(s.model().fine.stitching.curves[0].fold, flipped);
+  EXPECT_EQ(s.model().clean.creases[0].angle, std::optional<double>(30.0));
+  EXPECT_DOUBLE_EQ(target_of(0), flipped == Fold::kValley ? 30.0 : -30.0);
+  EXPECT_DOUBLE_EQ(target_of(1), -45.0);
+  // The edits are settings of the configuration: the later one with the whole state replaces the
+  // earlier one of the crease.
+  ASSERT_EQ(s.config().creases.size(), 2u);
+  EXPECT_EQ(s.config().creases.back().curve, std::optional<int>(0));
+  EXPECT_EQ(s.config().creases.back().angle, std::optional<double>(30.0));
+  for (int k = 0; k < 3; ++k) ASSERT_FALSE(s.step().step.failed);
+  s.fold();
+  EXPECT_EQ(s.iteration(), 0);
+  EXPECT_EQ(s.config().scenario, ScenarioKind::kFold);
+  ASSERT_TRUE(s.undo());  // the angle
+  EXPECT_EQ(s.model().fine.stitching.curves[0].fold, flipped);
+  EXPECT_EQ(s.model().fine.stitching.curves[0].angle, model().fine.stitching.curves[0].angle);
+  ASSERT_TRUE(s.undo());  // the assignment
+  EXPECT_EQ(s.model().fine.stitching.curves[0].fold, drawn);
+  EXPECT_EQ(s.config().creases.size(), 1u);
+  ASSERT_TRUE(s.redo());
+  EXPECT_EQ(s.model().fine.stitching.curves[0].fold, flipped);
+  s.set_creases({0, 1}, Fold::kFlat, std::nullopt);
+  EXPECT_DOUBLE_EQ(target_of(0), 0.0);
+  EXPECT_DOUBLE_EQ(target_of(1), 0.0);
+  EXPECT_FALSE(s.can_redo());
+  EXPECT_THROW(s.set_creases({99}, Fold::kValley, std::nullopt), InputError);
+  EXPECT_THROW(s.set_creases({0}, std::nullopt, 200.0), InputError);
+  EXPECT_THROW(s.set_creases({}, Fold::kValley, std::nullopt), InputError);
 }
 
 TEST(Session, ModeSwitchKeepsThePositions) {

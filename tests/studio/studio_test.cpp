@@ -1,7 +1,8 @@
 // Smoke tests of the studio's main window (run under xvfb-run): a pattern opened, every overlay
 // switched, the solver stepped and played on its thread, handles and angle constraints edited
-// and undone, a vertex inspected, a screenshot, a frame series and a workspace written and read
-// back, and the command line's --screenshot.
+// and undone, a vertex inspected, a crease picked, reassigned, folded and undone, a screenshot, a
+// frame series and a workspace written and read back, a run configuration dropped for another
+// pattern, and the command line's --screenshot.
 #include <QAction>
 #include <QApplication>
 #include <QDir>
@@ -22,7 +23,10 @@
 #include <QtTest>
 #include <cmath>
 #include <memory>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
 #include <vtkRenderWindowInteractor.h>
 
 #include "app/blas_kernels.h"
@@ -32,6 +36,7 @@
 #include "ui/studio/screen_picking.h"
 #include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
+#include "ui/vis/mesh_view.h"
 
 using sdog::studio::MainWindow;
 namespace vis = sdog::vis;
@@ -55,6 +60,36 @@ class StudioTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
   }
   int iteration() const { return window_->snapshot() ? window_->snapshot()->iteration : -1; }
+  /// Saves the window's workspace as `path` and opens it in `other`, a second window (errors to the
+  /// same list), until its first state (at `iteration`) is shown.
+  void save_and_reopen(const QString& path, int iteration, std::unique_ptr<MainWindow>& other) {
+    QSignalSpy saved(window_.get(), &MainWindow::workspace_saved);
+    QVERIFY(window_->save_workspace(path));
+    QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, kWait);
+    QVERIFY(QFileInfo(path).size() > 1000);
+    other = std::make_unique<MainWindow>("about");
+    other->set_error_sink([this](const QString& m) { errors_ << m; });
+    other->resize(900, 600);
+    other->show();
+    QVERIFY(other->open_workspace(path));
+    QTRY_VERIFY_WITH_TIMEOUT(other->snapshot() && other->snapshot()->iteration == iteration, kWait);
+  }
+  /// The session's assignment and angle of crease k in the last state shown.
+  static sdog::Fold fold_of(const MainWindow& w, int k) { return w.snapshot()->state.crease_folds.at(k); }
+  static std::optional<double> angle_of(const MainWindow& w, int k) { return w.snapshot()->crease_angles.at(k); }
+  /// Clicks crease k where the view draws the middle of it, as the mouse does (the flat view, the
+  /// crease-curves overlay on).
+  void click_crease(int k) {
+    window_->set_view(vis::View::Flat);
+    window_->set_layer(vis::Layer::CreaseCurves, true);
+    window_->reset_camera();
+    QApplication::processEvents();
+    const sdog::DogMesh& fine = window_->model()->fine;
+    const auto& points = fine.stitching.curves.at(k).points;
+    const Eigen::Vector3d at = vis::crease_point_positions(fine, fine.V)[points[points.size() / 2]];
+    const Eigen::Vector3d d = sdog::studio::to_display(window_->renderer(), at);
+    window_->click(d.x(), d.y());
+  }
 
  private Q_SLOTS:
   void init() {
@@ -352,6 +387,106 @@ class StudioTest : public QObject {
     QVERIFY(window_->inspector_text().contains("DOG residual"));
   }
 
+  void edits_a_crease_assignment_folds_and_undoes() {
+    open();
+    const int k = 0;
+    const sdog::Fold drawn = fold_of(*window_, k);
+    const std::optional<double> drawn_angle = angle_of(*window_, k);
+    const sdog::Fold flipped = drawn == sdog::Fold::kMountain ? sdog::Fold::kValley : sdog::Fold::kMountain;
+    click_crease(k);
+    QCOMPARE(window_->selected_creases(), std::vector<int>{k});
+    QVERIFY2(window_->inspector_text().contains("crease 0"), qPrintable(window_->inspector_text()));
+    QVERIFY2(window_->inspector_text().contains("four_corner_arcs.svg:"), qPrintable(window_->inspector_text()));
+    QVERIFY(window_->status_text().contains("crease 0 picked"));
+
+    window_->set_crease_fold(flipped);
+    QTRY_COMPARE_WITH_TIMEOUT(fold_of(*window_, k), flipped, kWait);
+    window_->set_crease_angle(60);
+    QTRY_VERIFY_WITH_TIMEOUT(angle_of(*window_, k) == 60.0, kWait);
+    const QString assignment = QString(sdog::fold_name(flipped)) + ", 60 degrees";
+    QVERIFY2(window_->inspector_text().contains(assignment), qPrintable(window_->inspector_text()));
+    // The run configuration carries the edit; the crease-curves overlay colours the crease.
+    QVERIFY(!window_->run_config().creases.empty());
+    QCOMPARE(window_->run_config().creases.back().curve, std::optional<int>(k));
+    vtkDataArray* codes = window_->scene()->layer_data(vis::Layer::CreaseCurves)->GetCellData()->GetArray("assignment");
+    QVERIFY(codes != nullptr);
+    QCOMPARE(static_cast<int>(codes->GetTuple1(k)), static_cast<int>(flipped));
+
+    // Fold: the fold scenario from flat, the crease folding towards its new assignment.
+    window_->fold_creases();
+    QTRY_COMPARE_WITH_TIMEOUT(window_->run_config().scenario, sdog::ScenarioKind::kFold, kWait);
+    window_->step(3);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 3, kWait);
+    const auto& curve = window_->model()->fine.stitching.curves[k].points;
+    int sites = 0;
+    for (const auto& site : window_->snapshot()->state.constraints.angle_sites) {
+      if (std::find(curve.begin(), curve.end(), site.point) == curve.end()) continue;
+      ++sites;
+      QCOMPARE(site.target_degrees > 0, flipped == sdog::Fold::kValley);  // valleys positive
+    }
+    QVERIFY(sites > 0);
+    QVERIFY(window_->snapshot()->state.fine.col(2).cwiseAbs().maxCoeff() > 1e-6);  // off the flat sheet
+
+    // Undo takes back the angle, then the assignment; redo brings both back.
+    window_->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(angle_of(*window_, k) != std::optional<double>(60.0), kWait);
+    QCOMPARE(fold_of(*window_, k), flipped);
+    window_->undo();
+    QTRY_COMPARE_WITH_TIMEOUT(fold_of(*window_, k), drawn, kWait);
+    QCOMPARE(angle_of(*window_, k), drawn_angle);
+    window_->redo();
+    window_->redo();
+    QTRY_VERIFY_WITH_TIMEOUT(fold_of(*window_, k) == flipped && angle_of(*window_, k) == 60.0, kWait);
+
+    // A workspace keeps the assignment.
+    QTemporaryDir dir;
+    std::unique_ptr<MainWindow> other;
+    save_and_reopen(dir.filePath("creases.json"), 3, other);
+    if (QTest::currentTestFailed()) return;
+    QCOMPARE(fold_of(*other, k), flipped);
+    QCOMPARE(angle_of(*other, k), std::optional<double>(60.0));
+    QCOMPARE(other->run_config().scenario, sdog::ScenarioKind::kFold);
+
+    // Nothing picked: the edit is refused with a message.
+    window_->select_creases({});
+    window_->set_crease_fold(sdog::Fold::kFlat);
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY2(errors_[0].contains("Pick a crease"), qPrintable(errors_[0]));
+  }
+
+  void drops_a_run_configuration_for_another_pattern() {
+    open();
+    QTemporaryDir dir;
+    const QString config = dir.filePath("run.json");
+    QFile file(config);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"scenario": "fold", "creases": [{"curve": 0, "fold": "mountain", "angle": 45}]})");
+    file.close();
+    QVERIFY(window_->load_run_config(config));
+    QTRY_VERIFY_WITH_TIMEOUT(fold_of(*window_, 0) == sdog::Fold::kMountain && angle_of(*window_, 0) == 45.0, kWait);
+    // The same pattern at another resolution keeps it ...
+    QVERIFY(window_->change_resolution("23x23"));
+    QCOMPARE(window_->run_config().creases.size(), size_t(1));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() && fold_of(*window_, 0) == sdog::Fold::kMountain, kWait);
+    // ... another pattern does not, and the status bar says so.
+    const QString other = QString(SDOG_DATASETS_DIR) + "/one_curve.svg";
+    QVERIFY(window_->open_pattern(other, "21x21"));
+    QVERIFY(window_->run_config().creases.empty());
+    QCOMPARE(window_->run_config().scenario, sdog::ScenarioKind::kCorners);
+    QVERIFY2(window_->status_text().contains("run.json") && window_->status_text().contains("dropped"),
+             qPrintable(window_->status_text()));
+    // Crease assignments set in the studio belong to their pattern as well.
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
+    click_crease(0);
+    window_->set_crease_fold(sdog::Fold::kValley);
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->run_config().creases.empty(), kWait);
+    QVERIFY(window_->open_pattern(kPattern, "21x21"));
+    QVERIFY(window_->run_config().creases.empty());
+    QVERIFY2(window_->status_text().contains("crease assignments set for one_curve.svg are dropped"),
+             qPrintable(window_->status_text()));
+    QVERIFY(errors_.isEmpty());
+  }
+
   void edits_the_solver_settings() {
     open();
     // The Solver panel shows the configuration in use; edits wait for Apply.
@@ -481,23 +616,14 @@ class StudioTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(iteration(), 3, kWait);
     const Eigen::MatrixX3d positions = window_->snapshot()->state.fine;
     QTemporaryDir dir;
-    const QString path = dir.filePath("session.json");
-    QSignalSpy saved(window_.get(), &MainWindow::workspace_saved);
-    QVERIFY(window_->save_workspace(path));
-    QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, kWait);
-    QVERIFY(QFileInfo(path).size() > 1000);
-
-    MainWindow other("about");
-    other.set_error_sink([this](const QString& m) { errors_ << m; });
-    other.resize(900, 600);
-    other.show();
-    QVERIFY(other.open_workspace(path));
-    QTRY_VERIFY_WITH_TIMEOUT(other.snapshot() && other.snapshot()->iteration == 3, kWait);
-    QCOMPARE(other.snapshot()->constraints.handles.size(), size_t(2));
-    QCOMPARE(other.snapshot()->constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
-    QVERIFY((other.snapshot()->state.fine - positions).norm() < 1e-9);
+    std::unique_ptr<MainWindow> other;
+    save_and_reopen(dir.filePath("session.json"), 3, other);
+    if (QTest::currentTestFailed()) return;
+    QCOMPARE(other->snapshot()->constraints.handles.size(), size_t(2));
+    QCOMPARE(other->snapshot()->constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
+    QVERIFY((other->snapshot()->state.fine - positions).norm() < 1e-9);
     QVERIFY(errors_.isEmpty());
-    QVERIFY(!other.open_workspace(dir.filePath("missing.json")));
+    QVERIFY(!other->open_workspace(dir.filePath("missing.json")));
     QCOMPARE(errors_.size(), 1);
   }
 

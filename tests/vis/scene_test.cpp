@@ -1,6 +1,6 @@
 // The data behind the scene's layers (no picture is rendered here): one line per link vertex, the
-// log-scaled residuals, the stitch gaps, the handles, one colour layer at a time, legends that
-// follow their layers, updates that keep the actors.
+// log-scaled residuals, the stitch gaps, the handles, crease lines coloured by assignment, one
+// colour layer at a time, legends that follow their layers, updates that keep the actors.
 #include <gtest/gtest.h>
 #include <vtkActor2DCollection.h>
 #include <vtkActorCollection.h>
@@ -140,6 +140,35 @@ TEST_F(SceneTest, HandlesJoinEachHandleToItsTarget) {
       EXPECT_DOUBLE_EQ(t[d], s.constraints.handles[k].target[d]);
     }
   }
+}
+
+TEST_F(SceneTest, CreaseCurvesAreColouredByAssignment) {
+  const DogModel& m = arcs_model();
+  const auto& curves = m.fine.stitching.curves;
+  ASSERT_GE(curves.size(), 2u);
+  vis::Scene scene(m, renderer);
+  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::CreaseCurves));
+  ASSERT_NE(lines, nullptr);
+  vtkDataArray* code = lines->GetCellData()->GetArray("assignment");
+  ASSERT_NE(code, nullptr);
+  ASSERT_EQ(code->GetNumberOfTuples(), static_cast<vtkIdType>(curves.size()));
+  for (size_t k = 0; k < curves.size(); ++k)  // without a state's own: the model's
+    EXPECT_EQ(static_cast<int>(code->GetTuple1(static_cast<vtkIdType>(k))), static_cast<int>(curves[k].fold));
+  // A state's assignments win: a red mountain, blue valleys.
+  vis::SceneState s = arcs_standard_state();
+  s.crease_folds.assign(curves.size(), Fold::kValley);
+  s.crease_folds[0] = Fold::kMountain;
+  scene.update(s);
+  code = lines->GetCellData()->GetArray("assignment");
+  EXPECT_EQ(code->GetTuple1(0), 1.0);
+  EXPECT_EQ(code->GetTuple1(1), 2.0);
+  vtkDataArray* rgb = lines->GetCellData()->GetScalars();
+  ASSERT_NE(rgb, nullptr);
+  EXPECT_GT(rgb->GetComponent(0, 0), 200);
+  EXPECT_LT(rgb->GetComponent(0, 2), 50);
+  EXPECT_GT(rgb->GetComponent(1, 2), 200);
+  s.crease_folds.pop_back();
+  EXPECT_THROW(scene.update(s), std::invalid_argument);
 }
 
 TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {

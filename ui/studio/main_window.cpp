@@ -17,6 +17,7 @@
 #include "base/errors.h"
 #include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
+#include "ui/studio/crease_inspector.h"
 #include "ui/studio/model_loader.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"
@@ -24,6 +25,7 @@
 #include "ui/studio/solver_worker.h"
 #include "ui/studio/vertex_inspector.h"
 #include "ui/vis/camera.h"
+#include "ui/vis/mesh_view.h"
 
 namespace sdog::studio {
 
@@ -166,6 +168,22 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   chart_->clear();
   reports_received_ = 0;
   select_vertex(-1);
+  selected_creases_.clear();
+  // A run configuration names vertices, crease points and creases of its pattern: another pattern
+  // does not get it.
+  QString dropped;
+  if (!config_pattern_.isEmpty() && QFileInfo(config_pattern_).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) {
+    if (!config_file_.isEmpty()) {
+      dropped = QString(" - the run configuration of %1 (for %2) is dropped: default solver settings")
+                    .arg(QFileInfo(config_file_).fileName(), QFileInfo(config_pattern_).fileName());
+      config_ = RunConfig{};
+    } else if (!config_.creases.empty()) {
+      dropped = QString(" - the crease assignments set for %1 are dropped").arg(QFileInfo(config_pattern_).fileName());
+      config_.creases.clear();
+    }
+    config_file_.clear();
+  }
+  config_pattern_ = path;
   model_ = std::move(model);
   pattern_path_ = path;
   resolution_ = QString::fromStdString(Resolution{model_->fine.nx(), model_->fine.ny()}.str());  // "auto" resolved
@@ -184,7 +202,8 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
                        .arg(model_->fine.patch_count())
                        .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
                                                : QString("no coarse mesh (even resolution)"))
-                       .arg(QString::fromStdString(mode_), QString(scenario_name(config_.scenario))));
+                       .arg(QString::fromStdString(mode_), QString(scenario_name(config_.scenario))) +
+                   dropped);
   update_actions();
   show_solver_state();
   render();
@@ -203,8 +222,12 @@ void MainWindow::show_snapshot(const Snapshot& s) {
   const bool updated = attempt([&] { scene_->update(s.state); });
   if (updated) {
     snapshot_ = s;
-    if (mode_ != s.mode) {
+    // The session's crease edits and Creases > Fold change its configuration: the next session
+    // (another scenario, new settings) starts with them.
+    config_.creases = s.crease_settings;
+    if (mode_ != s.mode || config_.scenario != s.scenario) {
       mode_ = s.mode;
+      config_.scenario = s.scenario;
       show_solver_state();
     }
     if (!camera_fitted_) {
@@ -257,12 +280,87 @@ void MainWindow::render() {
 void MainWindow::select_vertex(int vertex) { select_vertices(vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{}); }
 
 void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
-  if (!add) selection_.clear();
+  if (!add) {
+    selection_.clear();
+    selected_creases_.clear();
+  }
   for (int v : vertices)
     if (std::find(selection_.begin(), selection_.end(), v) == selection_.end()) selection_.push_back(v);
   selected_vertex_ = selection_.size() == 1 ? selection_.front() : -1;
   refresh_selection_marks();
   show_in_inspector(-1);
+}
+
+void MainWindow::select_creases(const std::vector<int>& creases, bool add) {
+  if (!add) {
+    selected_creases_.clear();
+    selection_.clear();
+    selected_vertex_ = -1;
+  }
+  const int count = model_ ? static_cast<int>(model_->fine.stitching.curves.size()) : 0;
+  for (int k : creases)
+    if (k >= 0 && k < count && std::find(selected_creases_.begin(), selected_creases_.end(), k) == selected_creases_.end())
+      selected_creases_.push_back(k);
+  refresh_selection_marks();
+  show_in_inspector(-1);
+}
+
+void MainWindow::click(double x, double y) {
+  if (!snapshot_) return;
+  if (scene_->layer_on(vis::Layer::CreaseCurves) && !model_->fine.stitching.curves.empty()) {
+    const auto points = vis::crease_point_positions(model_->fine, shown_positions());
+    Eigen::MatrixX3d rows(points.size(), 3);
+    for (size_t p = 0; p < points.size(); ++p) rows.row(p) = points[p].transpose();
+    const int point = pick_point(renderer_, rows, x, y, 8);
+    const auto& curves = model_->fine.stitching.curves;
+    for (int k = 0; point >= 0 && k < static_cast<int>(curves.size()); ++k) {
+      if (std::find(curves[k].points.begin(), curves[k].points.end(), point) == curves[k].points.end()) continue;
+      select_creases({k});
+      status_->setText(QString("crease %1 picked (Creases: Mountain, Valley, Angle..., Fold)").arg(k));
+      return;
+    }
+  }
+  const int v = pick_point(renderer_, shown_positions(), x, y, 12);
+  select_vertex(v);
+  status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
+                          : QString("no vertex within 12 pixels of the click"));
+}
+
+bool MainWindow::edit_creases(std::optional<Fold> fold, std::optional<double> angle) {
+  if (selected_creases_.empty()) {
+    report_error("Pick a crease first: switch the crease-curves overlay on (Ctrl+9) and click a crease.");
+    return false;
+  }
+  const std::vector<int> creases = selected_creases_;
+  post([creases, fold, angle](SolverWorker& w) { w.set_creases(creases, fold, angle); });
+  const QString what = fold ? QString(fold_name(*fold)) : QString("%1 degrees").arg(*angle);
+  status_->setText(QString("%1 crease(s) set to %2%3")
+                       .arg(creases.size())
+                       .arg(what)
+                       .arg(config_.scenario == ScenarioKind::kFold
+                                ? " - the fold goes on from the current shape (Creases > Fold starts again from flat)"
+                                : " - Creases > Fold folds with the assignments"));
+  return true;
+}
+
+void MainWindow::set_crease_fold(Fold fold) { edit_creases(fold, std::nullopt); }
+
+void MainWindow::set_crease_angle(double degrees) {
+  if (!(degrees >= 0 && degrees <= 180)) {
+    report_error("A fold angle is from 0 to 180 degrees (its direction is the assignment's).");
+    return;
+  }
+  edit_creases(std::nullopt, degrees);
+}
+
+void MainWindow::fold_creases() {
+  if (!worker_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return;
+  }
+  chart_->clear();
+  post([](SolverWorker& w) { w.fold(); });
+  status_->setText("folding from the flat sheet with the crease assignments (Solver > Play: Space)");
 }
 
 void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {
@@ -286,6 +384,14 @@ void MainWindow::refresh_selection_marks() {
 void MainWindow::show_in_inspector(int hovered) {
   hovered_vertex_ = hovered;
   const int vertex = hovered >= 0 ? hovered : selected_vertex_;
+  if (vertex < 0 && !selected_creases_.empty() && model_ && snapshot_) {
+    attempt([&] {
+      inspector_->setText("<i>picked</i><br>" + describe_creases(*model_, snapshot_->state.crease_folds,
+                                                                 snapshot_->crease_angles, config_.fold_angle,
+                                                                 selected_creases_));
+    });
+    return;
+  }
   if (vertex < 0 || !model_ || !snapshot_) {
     inspector_->setText("Click a vertex to pick it, or point at one to inspect it.");
     return;
@@ -393,7 +499,10 @@ bool MainWindow::set_scenario(const QString& scenario) {
 bool MainWindow::load_run_config(const QString& path) {
   RunConfig config;
   if (!attempt([&] { read_run_config(path.toStdString(), config); })) return false;
-  return set_run_config(config);
+  if (!set_run_config(config)) return false;
+  config_file_ = path;
+  config_pattern_ = pattern_path_;  // none open: the next one
+  return true;
 }
 
 bool MainWindow::set_run_config(const RunConfig& config) {
@@ -430,10 +539,15 @@ bool MainWindow::open_workspace(const QString& path) {
   Workspace w;
   if (!attempt([&] { w = load_workspace(path.toStdString()); })) return false;
   const RunConfig previous = config_;
+  const QString previous_file = config_file_, previous_pattern = config_pattern_;
   config_ = w.config;
+  config_file_ = path;
+  config_pattern_ = QString::fromStdString(w.pattern);
   if (!open_pattern(QString::fromStdString(w.pattern), QString::fromStdString(w.resolution),
                     QString::fromStdString(w.mode))) {
     config_ = previous;
+    config_file_ = previous_file;
+    config_pattern_ = previous_pattern;
     show_solver_state();
     return false;
   }

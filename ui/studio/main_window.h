@@ -1,7 +1,7 @@
 #pragma once
 // The studio's main window: a 3D view of the model (vis::Scene in a QVTKOpenGLNativeWidget), the
-// solver on its own thread (SolverWorker), a live chart of the iterations, the vertex inspector,
-// menus File / Edit / View / Solver / Help.
+// solver on its own thread (SolverWorker), a live chart of the iterations, the inspector of the
+// picked vertex or creases, menus File / Edit / View / Creases / Solver / Help.
 //
 // Every public operation is what a menu entry does, without dialogs, so that tests and the
 // command line drive the window as a user would. Errors go to the error sink (a message box by
@@ -50,7 +50,9 @@ class MainWindow : public QMainWindow {
   void set_error_sink(std::function<void(const QString&)> sink) { error_sink_ = std::move(sink); }
 
   // File
-  /// Meshes the pattern and starts a session on it with the current run configuration.
+  /// Meshes the pattern and starts a session on it with the current run configuration. A run
+  /// configuration loaded (or crease assignments set) for another pattern is dropped first, which
+  /// the status bar says.
   bool open_pattern(const QString& path, const QString& resolution, const QString& mode = "standard");
   /// The same pattern at another resolution (the mode stays if it can run there).
   bool change_resolution(const QString& resolution);
@@ -112,6 +114,21 @@ class MainWindow : public QMainWindow {
   /// band: Ctrl + drag) are selected.
   void select_in_rectangle(double x0, double y0, double x1, double y1, bool add = false);
   const std::vector<int>& selection() const { return selection_; }
+  /// What a click at display position (x, y) of the 3D view does: with the crease-curves layer on,
+  /// the crease through the nearest crease point within 8 pixels is picked; otherwise (or when
+  /// there is none) the nearest vertex within 12 pixels.
+  void click(double x, double y);
+
+  // Creases (Creases menu): the picked creases, their assignment and angle (each change one
+  // undoable edit of the session), and the fold scenario with them.
+  /// The crease selection becomes `creases` (with `add`: they are added); shown in the inspector.
+  void select_creases(const std::vector<int>& creases, bool add = false);
+  const std::vector<int>& selected_creases() const { return selected_creases_; }
+  void set_crease_fold(Fold fold);
+  /// Fold angle in degrees (0 to 180) of the selected creases; their assignment stays.
+  void set_crease_angle(double degrees);
+  /// Starts the fold scenario from the flat sheet with the current assignments.
+  void fold_creases();
 
   // State, for tests and the command line
   const DogModel* model() const { return model_.get(); }
@@ -145,6 +162,7 @@ class MainWindow : public QMainWindow {
   void build_file_menu();
   void build_edit_menu();
   void build_view_menu();
+  void build_crease_menu();
   void build_solver_menu();
   void build_help_menu();
   void build_solver_panel();
@@ -162,7 +180,9 @@ class MainWindow : public QMainWindow {
   void show_snapshot(const Snapshot& snapshot);
   void show_report(const IterationReport& report);
   void write_png_frame();
-  /// The hovered vertex (-1: none, then the picked one) in the inspector.
+  /// Sends a crease edit of the selection to the session (false: nothing selected, said).
+  bool edit_creases(std::optional<Fold> fold, std::optional<double> angle);
+  /// The hovered vertex (-1: none, then the picked vertex or creases) in the inspector.
   void show_in_inspector(int hovered);
   /// Where the view draws the fine vertices (the flat view: the rest state). Needs a snapshot.
   Eigen::MatrixX3d shown_positions() const;
@@ -179,6 +199,9 @@ class MainWindow : public QMainWindow {
   QString pattern_path_, resolution_;
   std::string mode_ = "standard";
   RunConfig config_;
+  // The run configuration's file (or workspace) and the pattern it was loaded or its creases set
+  // for; opening another pattern drops it (empty: the configuration fits any pattern).
+  QString config_file_, config_pattern_;
   std::shared_ptr<const DogModel> model_;
   std::unique_ptr<vis::Scene> scene_;
   vis::SceneOptions scene_options_;
@@ -194,6 +217,7 @@ class MainWindow : public QMainWindow {
   int selected_vertex_ = -1;
   int hovered_vertex_ = -1;
   std::vector<int> selection_;
+  std::vector<int> selected_creases_;
   std::unique_ptr<SelectionMarks> marks_;
   int dragged_handle_ = -1;
   double drag_depth_ = 0;

@@ -108,13 +108,7 @@ vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->intera
 
 void MainWindow::set_up_mouse() {
   vtkNew<ClickDragStyle> style;
-  style->on_click = [this](int x, int y) {
-    if (!snapshot_) return;
-    const int v = pick_point(renderer_, shown_positions(), x, y, 12);
-    select_vertex(v);
-    status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
-                            : QString("no vertex within 12 pixels of the click"));
-  };
+  style->on_click = [this](int x, int y) { click(x, y); };
   style->on_hover = [this](int x, int y) {
     if (!snapshot_) return;
     show_in_inspector(pick_point(renderer_, shown_positions(), x, y, 12));

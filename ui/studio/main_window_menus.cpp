@@ -8,6 +8,7 @@
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <cmath>
 
 #include "solver/modes/mode_kind.h"
 #include "ui/studio/main_window.h"
@@ -44,6 +45,7 @@ void MainWindow::build_menus() {
   build_file_menu();
   build_edit_menu();
   build_view_menu();
+  build_crease_menu();
   build_solver_menu();
   build_help_menu();
   for (QMenu* menu : menuBar()->findChildren<QMenu*>()) menu->setToolTipsVisible(true);
@@ -116,9 +118,9 @@ void MainWindow::build_file_menu() {
 
 void MainWindow::build_edit_menu() {
   QMenu* m = menuBar()->addMenu("&Edit");
-  undo_action_ = add_action(m, "&Undo", QKeySequence::Undo, "Undo the last constraint edit");
+  undo_action_ = add_action(m, "&Undo", QKeySequence::Undo, "Undo the last edit (a constraint, a crease assignment or angle)");
   connect(undo_action_, &QAction::triggered, this, &MainWindow::undo);
-  redo_action_ = add_action(m, "&Redo", QKeySequence("Ctrl+Shift+Z"), "Redo the constraint edit undone last");
+  redo_action_ = add_action(m, "&Redo", QKeySequence("Ctrl+Shift+Z"), "Redo the edit undone last");
   connect(redo_action_, &QAction::triggered, this, &MainWindow::redo);
   m->addSeparator();
   connect(add_action(m, "Make &handle", QKeySequence("H"),
@@ -215,6 +217,45 @@ void MainWindow::build_view_menu() {
   });
 }
 
+void MainWindow::build_crease_menu() {
+  QMenu* m = menuBar()->addMenu("&Creases");
+  for (const Fold fold : {Fold::kMountain, Fold::kValley, Fold::kFlat, Fold::kUnassigned}) {
+    QString name = fold_name(fold);
+    name[0] = name[0].toUpper();
+    connect(add_action(m, name, QKeySequence(),
+                       QString("Assign the picked creases %1 (click a crease with the crease-curves overlay on)")
+                           .arg(fold_name(fold))),
+            &QAction::triggered, this, [this, fold] { set_crease_fold(fold); });
+  }
+  connect(add_action(m, "&Angle...", QKeySequence(), "Ask for the fold angle of the picked creases (0 to 180 degrees)"),
+          &QAction::triggered, this, [this] {
+            if (selected_creases_.empty()) {
+              report_error("Pick a crease first: switch the crease-curves overlay on (Ctrl+9) and click a crease.");
+              return;
+            }
+            double current = config_.fold_angle;
+            const int first = selected_creases_.front();
+            if (snapshot_ && first < static_cast<int>(snapshot_->crease_angles.size()) && snapshot_->crease_angles[first])
+              current = *snapshot_->crease_angles[first];
+            bool ok = false;
+            const double degrees = QInputDialog::getDouble(
+                this, "Fold angle", "Fold angle in degrees (0 to 180; the assignment gives the direction):",
+                std::abs(current), 0, 180, 1, &ok);
+            if (ok) set_crease_angle(degrees);
+          });
+  m->addSeparator();
+  connect(add_action(m, "Select all creases", QKeySequence(), "Pick every crease of the pattern"), &QAction::triggered,
+          this, [this] {
+            if (!model_) return;
+            std::vector<int> all(model_->fine.stitching.curves.size());
+            for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+            select_creases(all);
+          });
+  connect(add_action(m, "&Fold", QKeySequence(),
+                     "Start the fold scenario from the flat sheet: every crease folds to its assignment and angle"),
+          &QAction::triggered, this, &MainWindow::fold_creases);
+}
+
 void MainWindow::build_solver_menu() {
   QMenu* m = menuBar()->addMenu("&Solver");
   play_action_ = add_action(m, "&Play", QKeySequence("Space"), "Iterate continuously (again: pause)");
@@ -275,7 +316,11 @@ void MainWindow::build_solver_panel() {
     if (!set_scenario(scenario)) show_solver_state();
   });
   connect(solver_panel_, &SolverPanel::config_file_wanted, this, &MainWindow::ask_for_run_config);
-  connect(solver_panel_, &SolverPanel::apply_wanted, this, &MainWindow::set_run_config);
+  // The panel does not show the crease settings: those of the session stay.
+  connect(solver_panel_, &SolverPanel::apply_wanted, this, [this](RunConfig config) {
+    config.creases = config_.creases;
+    set_run_config(config);
+  });
   show_solver_state();
 }
 

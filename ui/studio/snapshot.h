@@ -2,7 +2,9 @@
 // What the solver thread hands to the window: plain values (no pointers into the session), sent
 // through queued Qt signals.
 #include <QMetaType>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "solver/run/run.h"
 #include "solver/session/session.h"
@@ -16,6 +18,13 @@ struct Snapshot {
   int iteration = 0;
   std::string mode;
   UserConstraints constraints;
+  /// The fold angle of each crease curve as the session folds it (degrees; none: the scenario's);
+  /// the assignments are state.crease_folds.
+  std::vector<std::optional<double>> crease_angles;
+  /// The session's run configuration: its crease settings (the user's edits included) and
+  /// scenario.
+  std::vector<CreaseSetting> crease_settings;
+  ScenarioKind scenario = ScenarioKind::kCorners;
   bool can_undo = false, can_redo = false;
 };
 

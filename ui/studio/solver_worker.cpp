@@ -48,6 +48,12 @@ void SolverWorker::send_snapshot() {
   snap.iteration = s.iteration();
   snap.mode = mode_name(s.mode());
   snap.constraints = s.constraints();
+  for (const auto& c : s.model().fine.stitching.curves) {
+    snap.state.crease_folds.push_back(c.fold);
+    snap.crease_angles.push_back(c.angle);
+  }
+  snap.crease_settings = s.config().creases;
+  snap.scenario = s.config().scenario;
   snap.can_undo = s.can_undo();
   snap.can_redo = s.can_redo();
   snapshot_taken_ = false;
@@ -165,6 +171,17 @@ void SolverWorker::add_angle(int crease_point, double degrees) {
 void SolverWorker::remove_angle(int angle) {
   session().remove_angle(angle);
   play_on();
+  send_snapshot();
+}
+
+void SolverWorker::set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle) {
+  session().set_creases(curves, fold, angle);
+  play_on();
+  send_snapshot();
+}
+
+void SolverWorker::fold() {
+  session().fold();
   send_snapshot();
 }
 

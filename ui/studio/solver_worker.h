@@ -59,6 +59,9 @@ class SolverWorker : public QObject {
   void remove_handle(int handle);
   void add_angle(int crease_point, double degrees);
   void remove_angle(int angle);
+  /// Session::set_creases and Session::fold.
+  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle);
+  void fold();
   void undo();
   void redo();
   /// A loaded workspace: its mode, constraints and positions.

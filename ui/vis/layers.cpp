@@ -33,7 +33,10 @@ const LayerInfo kLayers[] = {
      "position handles (orange), their targets (dark blue) and residual lines (red); angle-constraint sites "
      "(cyan)",
      false},
-    {Layer::CreaseCurves, "crease-curves", "crease polylines through the crease points, crease points pink", false},
+    {Layer::CreaseCurves, "crease-curves",
+     "crease polylines through the crease points coloured by assignment (mountain red, valley blue, flat light "
+     "grey, unassigned grey), crease points pink",
+     false},
     {Layer::Wireframe, "wireframe", "the quad edges", false},
 };
 

@@ -17,7 +17,7 @@ enum class Layer : int {
   StitchGap,     ///< per crease point: distance between its copies, as glyph size and colour
   Bending,       ///< bending energy |r|^2 per vertex (colour layer)
   Handles,       ///< position handles, their targets and residual lines; angle-constraint sites
-  CreaseCurves,  ///< crease polylines through the crease points, crease points pink
+  CreaseCurves,  ///< crease polylines coloured by assignment, crease points pink
   Wireframe,     ///< the quad edges
 };
 

@@ -2,6 +2,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -88,7 +89,10 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   crease_lines_ = vtkSmartPointer<vtkPolyData>::New();
   crease_lines_->SetPoints(crease_point_coords_);
   crease_lines_->SetLines(lines);
-  crease_line_actor_ = flat_actor(crease_lines_, kCreaseLineColor);
+  crease_line_actor_ = flat_actor(crease_lines_, fold_color(Fold::kUnassigned));
+  std::vector<Fold> folds;
+  for (const auto& c : mesh.stitching.curves) folds.push_back(c.fold);
+  set_crease_folds(folds);
   crease_points_poly_ = vtkSmartPointer<vtkPolyData>::New();
   crease_points_poly_->SetPoints(crease_point_coords_);
   crease_points_poly_->SetVerts(vertex_cells(crease_point_coords_->GetNumberOfPoints()));
@@ -168,6 +172,23 @@ void MeshView::set_crease_lines_visible(bool visible) {
   crease_lines_on_ = visible;
   apply_visibility();
 }
+void MeshView::set_crease_folds(const std::vector<Fold>& folds) {
+  auto code = vtkSmartPointer<vtkIntArray>::New();
+  code->SetName("assignment");
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("assignment_color");
+  rgb->SetNumberOfComponents(3);
+  for (size_t k = 0; k < mesh_.stitching.curves.size(); ++k) {
+    const Fold fold = k < folds.size() ? folds[k] : Fold::kUnassigned;
+    code->InsertNextValue(static_cast<int>(fold));
+    const Rgb c = fold_color(fold);
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+  }
+  crease_lines_->GetCellData()->AddArray(code);
+  crease_lines_->GetCellData()->SetScalars(rgb);
+  crease_lines_->Modified();
+}
+
 void MeshView::set_crease_points_visible(bool visible) {
   crease_points_ = visible;
   apply_visibility();

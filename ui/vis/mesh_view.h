@@ -47,6 +47,9 @@ class MeshView {
   void color_by(const char* array, bool cell_array, vtkScalarsToColors* lut);
   void set_vertices_visible(bool visible);
   void set_crease_lines_visible(bool visible);
+  /// Colours each crease line by its assignment (fold_color; cell arrays `assignment`, 0 to 3 as
+  /// in creases.vtp, and `assignment_color`); creases beyond the list: unassigned.
+  void set_crease_folds(const std::vector<Fold>& folds);
   void set_crease_points_visible(bool visible);
   void set_edges_visible(bool visible);
   /// Pixel size of the vertex and crease-point dots (crease lines follow).

@@ -2,6 +2,7 @@
 // Colours shared by every picture (the thesis's conventions for the fine/coarse map).
 #include <array>
 
+#include "geometry/crease_pattern.h"
 #include "geometry/fine_coarse_map.h"
 
 namespace sdog::vis {
@@ -22,7 +23,21 @@ inline Rgb vertex_type_color(VertexType t) {
   return {0, 0, 0};
 }
 inline constexpr Rgb kCreasePointColor{1.0, 0.45, 0.75};  // pink
-inline constexpr Rgb kCreaseLineColor{0.80, 0.20, 0.50};
+/// Crease lines by assignment (crease_pattern.h): mountain red, valley blue, unassigned grey,
+/// flat light grey (a crease that stays flat hardly matters to the shape).
+inline Rgb fold_color(Fold fold) {
+  switch (fold) {
+    case Fold::kMountain:
+      return {0.85, 0.10, 0.10};
+    case Fold::kValley:
+      return {0.10, 0.35, 0.85};
+    case Fold::kFlat:
+      return {0.80, 0.80, 0.80};
+    case Fold::kUnassigned:
+      break;
+  }
+  return {0.40, 0.40, 0.40};
+}
 inline constexpr Rgb kSurfaceColor{0.94, 0.94, 0.94};
 inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
 inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};

@@ -226,7 +226,11 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
                                                                         {"handle to target", kResidualLineColor},
                                                                         {"angle constraint", kAngleSiteColor}}));
   o.legends.emplace(Layer::CreaseCurves,
-                    Legend::categories("creases", {{"crease", kCreaseLineColor}, {"crease point", kCreasePointColor}}));
+                    Legend::categories("creases", {{"mountain", fold_color(Fold::kMountain)},
+                                                   {"valley", fold_color(Fold::kValley)},
+                                                   {"flat", fold_color(Fold::kFlat)},
+                                                   {"unassigned", fold_color(Fold::kUnassigned)},
+                                                   {"crease point", kCreasePointColor}}));
   for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
 
   // Patches do not change: their cell arrays are set once.
@@ -257,6 +261,9 @@ void Scene::update(const SceneState& state) {
     if (a.point < 0 || a.point >= static_cast<int>(model_.fine.stitching.points.size()))
       throw std::invalid_argument("scene state: angle site at crease point " + std::to_string(a.point) +
                                   " out of range");
+  if (!state.crease_folds.empty())
+    check_size(state.crease_folds.size(), static_cast<int>(model_.fine.stitching.curves.size()),
+               "crease_folds");
   state_ = state;
   refresh();
 }
@@ -272,6 +279,7 @@ void Scene::refresh() {
   if (coarse_) refresh_coarse(fine_x, flat || state_.coarse.rows() == 0 ? model_.coarse.V : state_.coarse);
   refresh_stitch_gaps();
   refresh_handles(fine_x, flat);
+  refresh_crease_folds();
   apply_layers();
 }
 
@@ -324,6 +332,14 @@ void Scene::refresh_stitch_gaps() {
 
 // Handles (targets and residual lines only where positions are current: not in the flat view) and
 // angle-constraint sites.
+void Scene::refresh_crease_folds() {
+  std::vector<Fold> folds = state_.crease_folds;
+  if (folds.empty())
+    for (const auto& c : model_.fine.stitching.curves) folds.push_back(c.fold);
+  fine_->set_crease_folds(folds);
+  if (coarse_) coarse_->set_crease_folds(folds);
+}
+
 void Scene::refresh_handles(const Eigen::MatrixX3d& fine_x, bool flat) {
   Overlays& o = *overlays_;
   vtkPoints* hp = o.handle_lines->GetPoints();

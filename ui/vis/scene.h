@@ -85,8 +85,8 @@ class Scene {
   /// arrays vertex_type_color, dog_residual, log10_dog_residual, bending; cell arrays patch,
   /// edge_strain) for vertex-types, patches, dog-residual, edge-strain, bending and wireframe; one
   /// line per link vertex for links; the crease points (arrays stitch_gap, radius) for stitch-gap;
-  /// handle, target and residual-line points and cells for handles; the crease polylines for
-  /// crease-curves.
+  /// handle, target and residual-line points and cells for handles; the crease polylines (cell
+  /// arrays assignment and assignment_color) for crease-curves.
   vtkDataSet* layer_data(Layer layer) const;
   /// The legend actor of a layer (a vtkScalarBarActor or vtkLegendBoxActor), nullptr for
   /// wireframe.
@@ -101,6 +101,7 @@ class Scene {
   void refresh_coarse(const Eigen::MatrixX3d& fine_x, const Eigen::MatrixX3d& coarse_x);
   void refresh_stitch_gaps();
   void refresh_handles(const Eigen::MatrixX3d& fine_x, bool flat);
+  void refresh_crease_folds();
   double coarse_offset() const;
   const DogModel& model_;
   vtkRenderer* renderer_;

@@ -34,6 +34,9 @@ struct SceneState {
   Eigen::MatrixX3d coarse;  ///< coarse positions; no rows: the coarse rest state
   Fields fields;            ///< of `fine` (diagnostics.h): dog_residual, bending, edge_strain, stitch_gap
   ConstraintView constraints;
+  /// Assignment of each crease curve (the cleaned creases, in order) as the run folds them;
+  /// empty: the model's own.
+  std::vector<Fold> crease_folds;
 };
 
 /// The state of a run: fine dofs `x` measured on `problem` (its current targets), the coarse
