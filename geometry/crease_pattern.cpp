@@ -15,6 +15,10 @@
 namespace sdog {
 namespace {
 
+// Open boundary pieces are chained across gaps up to this fraction of the sheet size (the default
+// merge tolerance of pattern cleaning).
+constexpr double kBoundaryJoinFraction = 0.01;
+
 std::string origin_of(const std::string& source, const SvgCurve& c) {
   std::ostringstream s;
   s << source;
@@ -35,26 +39,30 @@ struct OpenCurve {
   std::string origin;
 };
 
-// Chains open boundary curves end to end into closed loops.
+// Chains open boundary curves end to end into closed loops: each continues with the piece whose
+// nearer end is nearest its end, within tol (a gap is closed by the chain's straight step).
 std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol) {
   std::vector<Polyline2> loops;
   while (!open.empty()) {
     OpenCurve current = std::move(open.front());
     open.erase(open.begin());
     while ((current.points.front() - current.points.back()).norm() > tol) {
-      bool extended = false;
+      size_t best = open.size();
+      bool reversed = false;
+      double nearest = tol;
       for (size_t k = 0; k < open.size(); ++k) {
-        Polyline2& next = open[k].points;
-        if ((next.front() - current.points.back()).norm() <= tol) {
-        } else if ((next.back() - current.points.back()).norm() <= tol) {
-          std::reverse(next.begin(), next.end());
-        } else {
-          continue;
+        const Polyline2& next = open[k].points;
+        for (const bool back : {false, true}) {
+          const double d = ((back ? next.back() : next.front()) - current.points.back()).norm();
+          if (d <= nearest) best = k, reversed = back, nearest = d;
         }
-        current.points.insert(current.points.end(), next.begin() + 1, next.end());
-        open.erase(open.begin() + k);
-        extended = true;
-        break;
+      }
+      const bool extended = best < open.size();
+      if (extended) {
+        Polyline2& next = open[best].points;
+        if (reversed) std::reverse(next.begin(), next.end());
+        current.points.insert(current.points.end(), next.begin() + (nearest == 0 ? 1 : 0), next.end());
+        open.erase(open.begin() + static_cast<std::ptrdiff_t>(best));
       }
       if (!extended) {
         throw InputError(current.origin +
@@ -93,7 +101,7 @@ struct SortedCurves {
   int facet_lines = 0;
 };
 
-SortedCurves sort_curves(const SvgDrawing& drawing, double tol) {
+SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol) {
   SortedCurves out;
   std::vector<OpenCurve> open_boundary;
   for (const auto& c : drawing.curves) {
@@ -124,7 +132,7 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol) {
   }
   if (!open_boundary.empty()) {
     const std::string origin = open_boundary.front().origin;
-    for (auto& loop : chain_into_loops(std::move(open_boundary), tol)) {
+    for (auto& loop : chain_into_loops(std::move(open_boundary), join_tol)) {
       drop_repeated_points(loop, true);
       out.loops.push_back(std::move(loop));
       out.loop_origins.push_back(origin);
@@ -221,7 +229,7 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
   CreasePattern pattern;
   pattern.source = drawing.source;
   const double tol = closing_tolerance(drawing, closed_fraction);
-  const SortedCurves curves = sort_curves(drawing, tol);
+  const SortedCurves curves = sort_curves(drawing, tol, closing_tolerance(drawing, kBoundaryJoinFraction));
   pattern.sheet = curves.loops.empty() ? sheet_from_viewbox(drawing)
                                        : sheet_from_loops(curves.loops, curves.loop_origins);
   pattern.sheet.bbox = box_of(pattern.sheet.outer);

@@ -54,7 +54,8 @@ struct CreasePattern {
 };
 
 /// Sorts the drawing's curves into sheet boundary and creases. Boundary curves must form closed
-/// loops (open black curves are chained end to end within `closed_fraction * L`); the loop of
+/// loops (open black curves, in any order and direction, are chained end to end, each to the
+/// nearest end within L/100; a gap becomes a straight step); the loop of
 /// largest area is the outer boundary, the others are holes and must lie inside it. Creases drawn
 /// as consecutive subpaths of one <path> that continue each other are joined; a crease whose ends
 /// meet within `closed_fraction * L` is closed. Throws InputError for an open or

@@ -80,3 +80,41 @@ TEST(FoldConventions, BadAttributesAndCutLinesAreClearErrors) {
 
 }  // namespace
 }  // namespace sdog
+
+namespace sdog {
+namespace {
+
+TEST(BoundaryPieces, SeparateSegmentsInAnyOrderAndDirectionAreJoined) {
+  // Four black lines, shuffled and two reversed, one with a gap of 0.5 (L/200): one closed sheet.
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<line x1=\"100\" y1=\"100\" x2=\"100\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"0\" y1=\"100\" x2=\"0\" y2=\"0.5\" stroke=\"#000\"/>"
+      "<line x1=\"100\" y1=\"100\" x2=\"0\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"0\" x2=\"50\" y2=\"100\" stroke=\"#f00\"/>"
+      "</svg>";
+  const CreasePattern p = crease_pattern_from_svg(parse_svg(svg, "t.svg"));
+  EXPECT_TRUE(p.sheet.holes.empty());
+  EXPECT_GE(p.sheet.outer.size(), 4u);
+  EXPECT_DOUBLE_EQ(p.sheet.bbox.width(), 100);
+  EXPECT_DOUBLE_EQ(p.sheet.bbox.height(), 100);
+  ASSERT_EQ(p.creases.size(), 1u);
+  EXPECT_EQ(p.creases[0].fold, Fold::kMountain);
+}
+
+TEST(BoundaryPieces, AGapWiderThanTheToleranceIsAnError) {
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<polyline points=\"0,0 100,0 100,100 0,100 0,5\" fill=\"none\" stroke=\"#000\"/>"
+      "</svg>";
+  try {
+    crease_pattern_from_svg(parse_svg(svg, "t.svg"));
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the sheet boundary (black) is not closed"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sdog
