@@ -395,6 +395,8 @@ class StudioTest : public QObject {
     const sdog::Fold flipped = drawn == sdog::Fold::kMountain ? sdog::Fold::kValley : sdog::Fold::kMountain;
     click_crease(k);
     QCOMPARE(window_->selected_creases(), std::vector<int>{k});
+    const auto& picked_curve = window_->model()->fine.stitching.curves[k].points;
+    QVERIFY(std::find(picked_curve.begin(), picked_curve.end(), window_->picked_crease_point()) != picked_curve.end());
     QVERIFY2(window_->inspector_text().contains("crease 0"), qPrintable(window_->inspector_text()));
     QVERIFY2(window_->inspector_text().contains("four_corner_arcs.svg:"), qPrintable(window_->inspector_text()));
     QVERIFY(window_->status_text().contains("crease 0 picked"));

@@ -283,6 +283,7 @@ void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
   if (!add) {
     selection_.clear();
     selected_creases_.clear();
+    picked_crease_point_ = -1;
   }
   for (int v : vertices)
     if (std::find(selection_.begin(), selection_.end(), v) == selection_.end()) selection_.push_back(v);
@@ -316,7 +317,11 @@ void MainWindow::click(double x, double y) {
     for (int k = 0; point >= 0 && k < static_cast<int>(curves.size()); ++k) {
       if (std::find(curves[k].points.begin(), curves[k].points.end(), point) == curves[k].points.end()) continue;
       select_creases({k});
-      status_->setText(QString("crease %1 picked (Creases: Mountain, Valley, Angle..., Fold)").arg(k));
+      picked_crease_point_ = point;
+      status_->setText(QString("crease %1 picked at crease point %2 (Creases: Mountain, Valley, Angle..., Fold; "
+                               "Edit > Add angle constraint: A)")
+                           .arg(k)
+                           .arg(point));
       return;
     }
   }

@@ -124,6 +124,9 @@ class MainWindow : public QMainWindow {
   /// The crease selection becomes `creases` (with `add`: they are added); shown in the inspector.
   void select_creases(const std::vector<int>& creases, bool add = false);
   const std::vector<int>& selected_creases() const { return selected_creases_; }
+  /// The crease point of the last crease picked by a click (-1: none): where Edit > Add angle
+  /// constraint asks for an angle.
+  int picked_crease_point() const { return picked_crease_point_; }
   void set_crease_fold(Fold fold);
   /// Fold angle in degrees (0 to 180) of the selected creases; their assignment stays.
   void set_crease_angle(double degrees);
@@ -218,6 +221,7 @@ class MainWindow : public QMainWindow {
   int hovered_vertex_ = -1;
   std::vector<int> selection_;
   std::vector<int> selected_creases_;
+  int picked_crease_point_ = -1;
   std::unique_ptr<SelectionMarks> marks_;
   int dragged_handle_ = -1;
   double drag_depth_ = 0;

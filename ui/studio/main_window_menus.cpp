@@ -140,24 +140,25 @@ void MainWindow::build_edit_menu() {
             if (const int i = choose(this, "Remove handle", items); i >= 0) remove_handle(i);
           });
   connect(add_action(m, "Add &angle constraint...", QKeySequence("A"),
-                     "Ask for a dihedral angle at a crease point between two patches"),
+                     "Ask for a fold angle at the picked crease point (click a crease with the crease-curves overlay on)"),
           &QAction::triggered, this, [this] {
             if (!model_) {
               report_error("Open a crease pattern first (File > Open pattern).");
               return;
             }
-            const int points = static_cast<int>(model_->fine.stitching.points.size());
-            if (points == 0) {
-              report_error("This pattern has no crease points.");
+            const int point = picked_crease_point();
+            if (point < 0) {
+              report_error("Pick a crease point first: switch the crease-curves overlay on (Ctrl+9) and click a crease "
+                           "where it should fold.");
               return;
             }
             bool ok = false;
-            const int point = QInputDialog::getInt(this, "Angle constraint",
-                                                   QString("Crease point (0 to %1):").arg(points - 1), 0, 0, points - 1,
-                                                   1, &ok);
-            if (!ok) return;
-            const double degrees = QInputDialog::getDouble(this, "Angle constraint",
-                                                           "Dihedral angle in degrees (0: flat):", 60, -180, 180, 1, &ok);
+            const double degrees = QInputDialog::getDouble(
+                this, "Angle constraint",
+                QString("Fold angle at crease point %1, degrees: positive folds a valley (both sides rise towards "
+                        "the viewer of the flat sheet), negative a mountain, 0 keeps it flat:")
+                    .arg(point),
+                60, -180, 180, 1, &ok);
             if (ok) add_angle(point, degrees);
           });
   connect(add_action(m, "Remove angle constraint...", QKeySequence("Shift+A"), "Remove one of the angle constraints"),
