@@ -110,7 +110,12 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh) 
     st.points.push_back(std::move(sp));
   }
   for (const auto& s : adjacency) st.patch_adjacency.emplace_back(s.begin(), s.end());
-  for (const auto& c : layout.curves) st.curves.push_back({c.points, c.closed});
+  for (const auto& c : layout.curves) {
+    CreaseStitching::Curve curve;
+    curve.points = c.points;
+    curve.closed = c.closed;
+    st.curves.push_back(std::move(curve));
+  }
   return st;
 }
 
