@@ -32,7 +32,8 @@ class FoldAngles {
   struct Frame {
     Eigen::Vector3d u[2], normal[2];
   };
-  Frame frame(const FoldSite& site, const Dofs& x) const;
+  /// Needs own_v1_[k].
+  Frame frame(size_t k, const Dofs& x) const;
   /// Whether v1 is the end of copy `copy`'s edge on its patch's own side.
   bool own_end_is_v1(const FoldSite& site, int copy) const;
   std::vector<std::array<bool, 2>> own_v1_;

@@ -63,6 +63,9 @@ struct CreaseSetting {
   std::optional<std::string> id;
   std::optional<Fold> fold;
   std::optional<double> angle;  ///< degrees, 0 to 180
+  bool operator==(const CreaseSetting& o) const {
+    return path == o.path && curve == o.curve && id == o.id && fold == o.fold && angle == o.angle;
+  }
 };
 
 /// From iteration `iteration` on (1-based), mode `mode` computes the run (`sdog run --switch`).

@@ -206,9 +206,10 @@ bool Session::travel(std::vector<EditState>& from, std::vector<EditState>& to) {
   if (from.empty()) return false;
   to.push_back({user_, config_.creases});
   user_ = from.back().user;
+  const bool creases_change = config_.creases != from.back().creases;
   config_.creases = from.back().creases;
   from.pop_back();
-  apply_creases();
+  if (creases_change) apply_creases();  // the problem and scenario are rebuilt only when they change
   rebuild();
   return true;
 }
