@@ -141,6 +141,13 @@ DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_o
   mesh.F.resize(static_cast<Eigen::Index>(F.size()), 4);
   for (size_t k = 0; k < F.size(); ++k) mesh.F.row(static_cast<Eigen::Index>(k)) = F[k].transpose();
   mesh.stitching = build_stitching(layout, mesh);
+  for (const auto& piece : layout.pieces) {
+    const auto& cells = patch_cells[piece.patch];
+    const auto at = std::lower_bound(cells.begin(), cells.end(), piece.cell) - cells.begin();
+    mesh.quad_pieces.push_back({mesh.quad_patch_begin[piece.patch] + static_cast<int>(at), piece.uv});
+  }
+  std::stable_sort(mesh.quad_pieces.begin(), mesh.quad_pieces.end(),
+                   [](const DogMesh::QuadPiece& a, const DogMesh::QuadPiece& b) { return a.quad < b.quad; });
   return mesh;
 }
 

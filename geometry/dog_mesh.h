@@ -62,6 +62,16 @@ struct DogMesh {
   Eigen::Vector2d sheet_origin = Eigen::Vector2d::Zero();
   double scale = 1;
   CreaseStitching stitching;
+  /// The quads whose cell a crease or the boundary cuts, with the part of the cell that belongs to
+  /// their patch: a convex polygon, counter-clockwise, in the quad's cell coordinates (u, v) in
+  /// [0, 1]^2 from F(q, 0) towards F(q, 1) and F(q, 3) (PatchLayout::CellPiece). A quad may have
+  /// several pieces, or one without points (none of its cell lies in the patch); quads not listed lie
+  /// wholly in their patch. Sorted by quad.
+  struct QuadPiece {
+    int quad = 0;
+    std::vector<Eigen::Vector2d> uv;
+  };
+  std::vector<QuadPiece> quad_pieces;
 
   int vertex_count() const { return static_cast<int>(V.rows()); }
   int quad_count() const { return static_cast<int>(F.rows()); }

@@ -300,9 +300,9 @@ CellCuts cut_cells(const Grid& grid, const std::vector<Traits::Curve_2>& segs) {
   return cuts;
 }
 
-// One interior point of each piece into which the chords split cell (i, j), sorted by y, then x.
-std::vector<Point> piece_samples(const Grid& grid, int i, int j,
-                                 const std::vector<std::pair<Point, Point>>& chords) {
+// The convex pieces into which the chords split cell (i, j), counter-clockwise, sorted by the
+// position of their vertex average: by y, then x.
+std::vector<Poly> cell_pieces(const Grid& grid, int i, int j, const std::vector<std::pair<Point, Point>>& chords) {
   std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
                             Point(grid.X[i + 1], grid.Y[j + 1]), Point(grid.X[i], grid.Y[j + 1])}};
   for (const auto& [p, q] : chords) {
@@ -315,12 +315,23 @@ std::vector<Point> piece_samples(const Grid& grid, int i, int j,
     }
     pieces = std::move(next);
   }
-  std::vector<Point> samples;
-  for (const auto& piece : pieces) samples.push_back(vertex_average(piece));
-  std::sort(samples.begin(), samples.end(), [](const Point& u, const Point& v) {
+  std::vector<std::pair<Point, Poly>> sorted;
+  for (auto& piece : pieces) sorted.emplace_back(vertex_average(piece), std::move(piece));
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
+    const Point &u = a.first, &v = b.first;
     return u.y() < v.y() || (u.y() == v.y() && u.x() < v.x());
   });
-  return samples;
+  pieces.clear();
+  for (auto& s : sorted) pieces.push_back(std::move(s.second));
+  return pieces;
+}
+
+// A piece in cell coordinates (PatchLayout::CellPiece).
+std::vector<Eigen::Vector2d> cell_coordinates(const Grid& grid, int i, int j, const Poly& piece) {
+  std::vector<Eigen::Vector2d> uv;
+  const FT w = grid.X[i + 1] - grid.X[i], h = grid.Y[j + 1] - grid.Y[j];
+  for (const auto& p : piece) uv.emplace_back(CGAL::to_double((p.x() - grid.X[i]) / w), CGAL::to_double((p.y() - grid.Y[j]) / h));
+  return uv;
 }
 
 // Gives component `id` to the uncut cells reachable from `cell` without crossing a snapped curve.
@@ -353,6 +364,7 @@ struct CellQueries {
   std::vector<int> of_component;            ///< query of each component
   std::vector<int> component;               ///< component of each uncut cell, else -1
   std::vector<std::vector<int>> of_pieces;  ///< queries of the pieces of each cut cell
+  std::vector<std::vector<Poly>> pieces;    ///< the pieces of each cut cell
 };
 
 CellQueries cell_queries(const Grid& grid, const CellCuts& cuts) {
@@ -360,13 +372,15 @@ CellQueries cell_queries(const Grid& grid, const CellCuts& cuts) {
   CellQueries q;
   q.component.assign(static_cast<size_t>(ncx) * ncy, -1);
   q.of_pieces.resize(static_cast<size_t>(ncx) * ncy);
+  q.pieces.resize(static_cast<size_t>(ncx) * ncy);
   for (int j = 0; j < ncy; ++j) {
     for (int i = 0; i < ncx; ++i) {
       const int cell = j * ncx + i;
       if (!cuts.chords[cell].empty()) {
-        for (const auto& s : piece_samples(grid, i, j, cuts.chords[cell])) {
+        q.pieces[cell] = cell_pieces(grid, i, j, cuts.chords[cell]);
+        for (const auto& piece : q.pieces[cell]) {
           q.of_pieces[cell].push_back(static_cast<int>(q.points.size()));
-          q.points.push_back(s);
+          q.points.push_back(vertex_average(piece));
         }
         continue;
       }
@@ -385,7 +399,7 @@ using FacePatches = std::unordered_map<const void*, int>;
 
 // Locates the queries and fills the owners of every cell; faces inside the sheet become patches
 // in the order in which the cells meet them. Returns the patch of each face met.
-FacePatches assign_cells(const Arrangement& arr, const CellCuts& cuts, const CellQueries& q,
+FacePatches assign_cells(const Arrangement& arr, const Grid& grid, const CellCuts& cuts, const CellQueries& q,
                          const std::vector<Poly>& loops, PatchLayout& layout) {
   const auto faces = locate_faces(arr, q.points);
   FacePatches patch_of_face;
@@ -406,9 +420,12 @@ FacePatches assign_cells(const Arrangement& arr, const CellCuts& cuts, const Cel
   for (int cell = 0; cell < layout.cell_count(); ++cell) {
     std::vector<int> owners;
     if (!cuts.chords[cell].empty()) {
-      for (int query : q.of_pieces[cell]) {
-        const int p = patch_of_query(query);
-        if (p >= 0) owners.push_back(p);
+      const int ncx = layout.nx() - 1;
+      for (size_t k = 0; k < q.of_pieces[cell].size(); ++k) {
+        const int p = patch_of_query(q.of_pieces[cell][k]);
+        if (p < 0) continue;
+        owners.push_back(p);
+        layout.pieces.push_back({cell, p, cell_coordinates(grid, cell % ncx, cell / ncx, q.pieces[cell][k])});
       }
     } else {
       int& p = component_patch[q.component[cell]];
@@ -506,7 +523,7 @@ PatchLayout build_patch_layout(const CleanPattern& pattern, const AxisLayout& xl
 
   const CellCuts cuts = cut_cells(grid, segs);
   const CellQueries queries = cell_queries(grid, cuts);
-  FacePatches patch_of_face = assign_cells(arr, cuts, queries, loops, layout);
+  FacePatches patch_of_face = assign_cells(arr, grid, cuts, queries, loops, layout);
   sort_patches(layout, patch_of_face);
   add_crease_points(layout, arr, grid, pattern, creases, patch_of_face);
   for (const auto& l : loops) {
@@ -528,6 +545,7 @@ void renumber_patches(PatchLayout& layout, const std::vector<int>& new_id) {
     for (auto& id : p.patches) id = new_id[id];
     std::sort(p.patches.begin(), p.patches.end());
   }
+  for (auto& piece : layout.pieces) piece.patch = new_id[piece.patch];
 }
 
 namespace {

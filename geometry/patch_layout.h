@@ -52,6 +52,18 @@ struct PatchLayout {
 
   std::vector<Polyline2> boundary;  ///< the snapped boundary loops, for drawing
 
+  /// The part of a cut cell (one that a snapped crease or the boundary crosses) that lies in one
+  /// patch: a convex polygon, counter-clockwise, in cell coordinates: (u, v) in [0, 1]^2 from the
+  /// cell's lower-left corner along x and y. Every vertex lies on the cell's boundary (the chords
+  /// of a cell end on its edges). Pieces outside the sheet (in a hole, beyond the boundary) are
+  /// not listed. A piece without points marks a cell that a patch owns without any of its area (a
+  /// coarse cell added to cover a fine patch, fine_coarse_map.h).
+  struct CellPiece {
+    int cell = 0, patch = 0;
+    std::vector<Eigen::Vector2d> uv;
+  };
+  std::vector<CellPiece> pieces;  ///< of every cut cell, by cell, then from bottom to top
+
   int nx() const { return static_cast<int>(xs.size()); }
   int ny() const { return static_cast<int>(ys.size()); }
   int cell_count() const { return (nx() - 1) * (ny() - 1); }

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "geometry/dog_model.h"
+#include "geometry/trimmed_surface.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run_config.h"
 #include "tests/solver/run_recorder.h"
@@ -57,6 +58,10 @@ TEST_P(ExactStitching, HoldsAfterEveryIterationAndClosesAtTheEnd) {
     EXPECT_LE(rep.diagnostics.stitch_gap_max, kIterationGap) << "iteration " << rep.iteration;
   EXPECT_LE(r.reports.back().diagnostics.stitch_gap_max, kFinalGap);
   EXPECT_LE(r.reports.back().diagnostics.dog_max, config.standard.sqp.final_constraint_tolerance);
+  // The trimmed surface of the folded sheet keeps the sheet's area (a DOG bends without stretching).
+  const double rest = surface_area(trimmed_surface(model.fine, model.fine.V));
+  const double folded = surface_area(trimmed_surface(model.fine, to_positions(r.x)));
+  EXPECT_NEAR(folded, rest, 0.01 * rest);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryDataset, ExactStitching, testing::ValuesIn(every_dataset_run()), case_name);
