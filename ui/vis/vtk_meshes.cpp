@@ -109,6 +109,32 @@ vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const 
   return grid;
 }
 
+vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays) {
+  const Eigen::MatrixX3d& V = surface.V;
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) points->SetPoint(i, V(i, 0), V(i, 1), V(i, 2));
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  triangles->AllocateExact(surface.T.rows(), 3 * surface.T.rows());
+  for (Eigen::Index t = 0; t < surface.T.rows(); ++t) {
+    const vtkIdType ids[3] = {surface.T(t, 0), surface.T(t, 1), surface.T(t, 2)};
+    triangles->InsertNextCell(3, ids);
+  }
+  auto normals = vtkSmartPointer<vtkDoubleArray>::New();
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) normals->SetTuple3(i, surface.N(i, 0), surface.N(i, 1), surface.N(i, 2));
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(triangles);
+  poly->GetPointData()->SetNormals(normals);
+  for (const auto& a : arrays.point) poly->GetPointData()->AddArray(to_vtk(a));
+  for (const auto& a : arrays.cell) poly->GetCellData()->AddArray(to_vtk(a));
+  return poly;
+}
+
 vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
                                        const std::vector<NamedArray>& cell_arrays) {
   auto points = vtkSmartPointer<vtkPoints>::New();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/mesh_arrays.h"
+#include "geometry/trimmed_surface.h"
 
 namespace sdog::vis {
 
@@ -17,6 +18,11 @@ using Polyline3 = std::vector<Eigen::Vector3d>;
 /// Quad mesh (n x 3 positions, quads) with the given point and cell arrays.
 vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
                                                const MeshArrays& arrays);
+
+/// The trimmed surface (geometry/trimmed_surface.h) as triangles with its normals ("Normals", the
+/// point normals for smooth shading) and the given arrays (trimmed_arrays: one value per surface
+/// vertex and per triangle).
+vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays);
 
 /// Polylines (one cell each; closed ones repeat their first point) with one cell array per entry
 /// of `cell_arrays` (values per polyline).
