@@ -9,7 +9,7 @@ namespace sdog {
 namespace {
 
 TEST(Layers, NamesParseAndUnknownOnesListTheKnown) {
-  EXPECT_EQ(vis::all_layers().size(), 10u);
+  EXPECT_EQ(vis::all_layers().size(), 11u);
   for (vis::Layer l : vis::all_layers()) EXPECT_EQ(vis::parse_layers(vis::layer_name(l)), std::vector<vis::Layer>{l});
   EXPECT_EQ(vis::parse_layers("dog-residual,handles,links"),
             (std::vector<vis::Layer>{vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::Links}));

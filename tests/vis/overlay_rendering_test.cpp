@@ -73,6 +73,7 @@ const OverlayCase kCases[] = {
     {"overlay_wireframe", {Layer::Wireframe}, View::ThreeD, false, Run::Standard},
     {"overlay_patches_side_by_side", {Layer::Patches}, View::SideBySide, false, Run::Rest},
     {"overlay_dog_residual_flat", {Layer::DogResidual, Layer::CreaseCurves}, View::Flat, false, Run::Standard},
+    {"overlay_full_cells", {Layer::FullCells, Layer::Patches}, View::ThreeD, false, Run::Standard},
 };
 
 const OverlayCase& find_case(const std::string& baseline) {

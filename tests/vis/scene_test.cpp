@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "base/errors.h"
+#include "geometry/trimmed_surface.h"
 #include "solver/problem/diagnostics.h"
 #include "tests/vis/scene_fixture.h"
 #include "ui/vis/camera.h"
@@ -190,11 +191,11 @@ TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {
   EXPECT_EQ(scene.layers_on(), (std::vector<vis::Layer>{vis::Layer::StitchGap, vis::Layer::Handles}));
 }
 
-TEST_F(SceneTest, EveryLayerButWireframeHasALegendShownWithIt) {
+TEST_F(SceneTest, EveryLayerButWireframeAndFullCellsHasALegendShownWithIt) {
   vis::Scene scene(arcs_model(), renderer);
   for (vis::Layer l : vis::all_layers()) {
     vtkProp* legend = scene.legend_prop(l);
-    if (l == vis::Layer::Wireframe) {
+    if (l == vis::Layer::Wireframe || l == vis::Layer::FullCells) {
       EXPECT_EQ(legend, nullptr);
       continue;
     }
@@ -205,6 +206,51 @@ TEST_F(SceneTest, EveryLayerButWireframeHasALegendShownWithIt) {
     scene.set_layer(l, false);
     EXPECT_FALSE(legend->GetVisibility()) << vis::layer_name(l);
   }
+}
+
+TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
+  const DogModel& m = arcs_model();
+  vis::Scene scene(m, renderer, {vis::View::ThreeD});
+  scene.update(arcs_standard_state());
+  vtkPolyData* trimmed = scene.trimmed_surface();
+  ASSERT_NE(trimmed, nullptr);
+  // Cut cells add triangles beyond two per quad's share; every triangle lies in a patch.
+  EXPECT_GT(trimmed->GetNumberOfCells(), m.fine.quad_count());
+  for (const char* name : {"dog_residual", "log10_dog_residual", "bending"}) {
+    vtkDataArray* a = trimmed->GetPointData()->GetArray(name);
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(a->GetNumberOfTuples(), trimmed->GetNumberOfPoints()) << name;
+  }
+  for (const char* name : {"patch", "edge_strain"}) {
+    vtkDataArray* a = trimmed->GetCellData()->GetArray(name);
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(a->GetNumberOfTuples(), trimmed->GetNumberOfCells()) << name;
+  }
+  EXPECT_NE(trimmed->GetPointData()->GetNormals(), nullptr);
+  // Its points follow the state (the geometry's trimmed surface of the state's positions).
+  double bounds[6];
+  trimmed->GetBounds(bounds);
+  const TrimmedSurface expected = trimmed_surface(m.fine, arcs_standard_state().fine);
+  EXPECT_NEAR(bounds[5], expected.V.col(2).maxCoeff(), 1e-9);
+  EXPECT_GT(bounds[5], 1);  // lifted
+
+  // Which actors draw the fine surface: the trimmed one by default, the quads with full-cells.
+  auto visible_surfaces = [&]() {
+    int n = 0;
+    vtkActorCollection* actors = renderer->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* a = actors->GetNextActor())
+      if (a->GetVisibility() && a->GetMapper() && (a->GetMapper()->GetInput() == trimmed ||
+                                                   a->GetMapper()->GetInput() == scene.layer_data(vis::Layer::Wireframe)))
+        n += a->GetMapper()->GetInput() == trimmed ? 1 : 10;
+    return n;
+  };
+  EXPECT_EQ(visible_surfaces(), 1);  // the trimmed surface alone
+  scene.set_layer(vis::Layer::FullCells, true);
+  EXPECT_EQ(visible_surfaces(), 10);  // the quads alone
+  scene.set_layer(vis::Layer::FullCells, false);
+  scene.set_layer(vis::Layer::Wireframe, true);
+  EXPECT_EQ(visible_surfaces(), 11);  // the trimmed surface with the quad edges over it
 }
 
 TEST_F(SceneTest, UpdateKeepsTheActorsAndMovesThePoints) {

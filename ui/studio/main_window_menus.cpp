@@ -175,8 +175,10 @@ void MainWindow::build_view_menu() {
   QMenu* m = menuBar()->addMenu("&View");
   int key = 1;
   for (vis::Layer layer : vis::all_layers()) {
-    QAction* a = add_action(m, vis::layer_name(layer), QKeySequence(QString("Ctrl+%1").arg(key++ % 10)),
-                            vis::layer_description(layer));
+    // Ctrl+1 .. Ctrl+0 for the overlays, Ctrl+Shift+W for the full cells ("whole quads").
+    const QKeySequence shortcut = layer == vis::Layer::FullCells ? QKeySequence("Ctrl+Shift+W")
+                                                                   : QKeySequence(QString("Ctrl+%1").arg(key++ % 10));
+    QAction* a = add_action(m, vis::layer_name(layer), shortcut, vis::layer_description(layer));
     a->setCheckable(true);
     connect(a, &QAction::toggled, this, [this, layer](bool on) { set_layer(layer, on); });
     layer_actions_[layer] = a;

@@ -38,6 +38,10 @@ const LayerInfo kLayers[] = {
      "grey, unassigned grey), crease points pink",
      false},
     {Layer::Wireframe, "wireframe", "the quad edges", false},
+    {Layer::FullCells, "full-cells",
+     "every quad drawn whole, overhanging its patch's creases (the DOG as the solver sees it), instead of the "
+     "trimmed surface, where each patch ends at its creases",
+     false},
 };
 
 const LayerInfo& info(Layer layer) { return kLayers[static_cast<int>(layer)]; }

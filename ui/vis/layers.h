@@ -19,6 +19,7 @@ enum class Layer : int {
   Handles,       ///< position handles, their targets and residual lines; angle-constraint sites
   CreaseCurves,  ///< crease polylines coloured by assignment, crease points pink
   Wireframe,     ///< the quad edges
+  FullCells,     ///< every quad whole instead of the trimmed surface (the DOG as the solver sees it)
 };
 
 /// Every layer, in the order above (the order of the documentation).

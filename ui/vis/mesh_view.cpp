@@ -61,6 +61,22 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   surface_->GetProperty()->SetAmbient(0.35);
   surface_->GetProperty()->SetDiffuse(0.65);
 
+  edge_color_ = kEdgeColor;
+  // The trimmed surface: its topology once, its positions and normals with every state.
+  trimmed_surface_ = trimmed_surface(mesh, mesh.V);
+  trimmed_poly_ = triangle_surface(trimmed_surface_, {});
+  trimmed_mapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
+  trimmed_mapper_->SetInputData(trimmed_poly_);
+  trimmed_mapper_->ScalarVisibilityOff();
+  trimmed_mapper_->InterpolateScalarsBeforeMappingOn();
+  // Pushed back a little, so that the quad edges and crease lines drawn on it stay in front.
+  trimmed_mapper_->SetRelativeCoincidentTopologyPolygonOffsetParameters(1, 1);
+  trimmed_actor_ = vtkSmartPointer<vtkActor>::New();
+  trimmed_actor_->SetMapper(trimmed_mapper_);
+  trimmed_actor_->GetProperty()->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
+  trimmed_actor_->GetProperty()->SetAmbient(0.35);
+  trimmed_actor_->GetProperty()->SetDiffuse(0.65);
+
   // Vertex dots share the grid's points, so they follow every position update.
   vertices_poly_ = vtkSmartPointer<vtkPolyData>::New();
   vertices_poly_->SetPoints(points_);
@@ -110,12 +126,21 @@ MeshView::~MeshView() {
 }
 
 std::vector<vtkActor*> MeshView::actors() const {
-  return {surface_, crease_line_actor_, vertex_actor_, crease_point_actor_};
+  return {trimmed_actor_, surface_, crease_line_actor_, vertex_actor_, crease_point_actor_};
 }
 
 void MeshView::set_positions(const Eigen::MatrixX3d& X) {
   for (Eigen::Index i = 0; i < X.rows(); ++i) points_->SetPoint(i, X(i, 0), X(i, 1), X(i, 2));
   points_->Modified();
+  place_trimmed_surface(trimmed_surface_, X);
+  vtkPoints* tp = trimmed_poly_->GetPoints();
+  vtkDataArray* normals = trimmed_poly_->GetPointData()->GetNormals();
+  for (int r = 0; r < trimmed_surface_.vertex_count(); ++r) {
+    tp->SetPoint(r, trimmed_surface_.V(r, 0), trimmed_surface_.V(r, 1), trimmed_surface_.V(r, 2));
+    normals->SetTuple3(r, trimmed_surface_.N(r, 0), trimmed_surface_.N(r, 1), trimmed_surface_.N(r, 2));
+  }
+  tp->Modified();
+  normals->Modified();
   crease_positions_ = crease_point_positions(mesh_, X);
   for (size_t k = 0; k < crease_positions_.size(); ++k)
     crease_point_coords_->SetPoint(static_cast<vtkIdType>(k), crease_positions_[k].data());
@@ -127,20 +152,28 @@ void MeshView::set_offset(double dx) {
   for (vtkActor* a : actors()) a->SetPosition(dx, 0, 0);
 }
 
+void MeshView::set_point_array(const char* name, const std::vector<double>& values) {
+  set_double_array(grid_->GetPointData(), name, values);
+  MeshArrays arrays;
+  arrays.point.push_back({name, values, false});
+  set_double_array(trimmed_poly_->GetPointData(), name, trimmed_arrays(trimmed_surface_, arrays).point[0].values);
+}
+
+void MeshView::set_cell_array(const char* name, const std::vector<double>& values) {
+  set_double_array(grid_->GetCellData(), name, values);
+  MeshArrays arrays;
+  arrays.cell.push_back({name, values, false});
+  set_double_array(trimmed_poly_->GetCellData(), name, trimmed_arrays(trimmed_surface_, arrays).cell[0].values);
+}
+
+void MeshView::set_trimmed(bool trimmed) {
+  trimmed_on_ = trimmed;
+  apply_visibility();
+}
+
 void MeshView::set_filled(bool filled, const std::array<double, 3>& edge_color) {
   filled_ = filled;
-  vtkProperty* p = surface_->GetProperty();
-  if (filled) {
-    p->SetRepresentationToSurface();
-    p->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
-    p->SetEdgeColor(edge_color[0], edge_color[1], edge_color[2]);
-    p->SetLighting(true);
-  } else {
-    p->SetRepresentationToWireframe();
-    p->SetColor(edge_color[0], edge_color[1], edge_color[2]);
-    p->SetLineWidth(2);
-    p->SetLighting(false);
-  }
+  edge_color_ = edge_color;
   apply_visibility();
 }
 
@@ -150,18 +183,30 @@ void MeshView::set_visible(bool visible) {
 }
 
 void MeshView::color_by(const char* array, bool cell_array, vtkScalarsToColors* lut) {
-  if (!array || !lut || !filled_) {
-    surface_mapper_->ScalarVisibilityOff();
-    return;
-  }
-  surface_mapper_->ScalarVisibilityOn();
-  if (cell_array)
-    surface_mapper_->SetScalarModeToUseCellFieldData();
-  else
-    surface_mapper_->SetScalarModeToUsePointFieldData();
-  surface_mapper_->SelectColorArray(array);
-  surface_mapper_->SetLookupTable(lut);
-  surface_mapper_->UseLookupTableScalarRangeOn();
+  colour_array_ = array;
+  colour_cells_ = cell_array;
+  colour_lut_ = lut;
+  apply_colours();
+}
+
+void MeshView::apply_colours() {
+  const bool coloured = colour_array_ && colour_lut_ && filled_;
+  auto configure = [&](vtkMapper* mapper, bool on) {
+    if (!on) {
+      mapper->ScalarVisibilityOff();
+      return;
+    }
+    mapper->ScalarVisibilityOn();
+    if (colour_cells_)
+      mapper->SetScalarModeToUseCellFieldData();
+    else
+      mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray(colour_array_);
+    mapper->SetLookupTable(colour_lut_);
+    mapper->UseLookupTableScalarRangeOn();
+  };
+  configure(trimmed_mapper_, coloured);
+  configure(surface_mapper_, coloured && !trimmed_on_);  // with the trimmed surface the grid draws plain edges
 }
 
 void MeshView::set_vertices_visible(bool visible) {
@@ -205,11 +250,35 @@ void MeshView::set_dot_size(double pixels) {
 }
 
 void MeshView::apply_visibility() {
-  surface_->SetVisibility(visible_);
-  surface_->GetProperty()->SetEdgeVisibility(filled_ && edges_);
+  const bool trimmed = trimmed_on_ && filled_;
+  trimmed_actor_->SetVisibility(visible_ && trimmed);
+  vtkProperty* p = surface_->GetProperty();
+  if (trimmed) {  // the quad grid shows only its edges, as lines over the trimmed surface
+    surface_->SetVisibility(visible_ && edges_);
+    p->SetRepresentationToWireframe();
+    p->SetColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
+    p->SetLineWidth(1);
+    p->SetLighting(false);
+    p->SetEdgeVisibility(false);
+  } else if (filled_) {
+    surface_->SetVisibility(visible_);
+    p->SetRepresentationToSurface();
+    p->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
+    p->SetEdgeColor(edge_color_[0], edge_color_[1], edge_color_[2]);
+    p->SetLighting(true);
+    p->SetEdgeVisibility(edges_);
+  } else {
+    surface_->SetVisibility(visible_);
+    p->SetRepresentationToWireframe();
+    p->SetColor(edge_color_[0], edge_color_[1], edge_color_[2]);
+    p->SetLineWidth(2);
+    p->SetLighting(false);
+    p->SetEdgeVisibility(false);
+  }
   vertex_actor_->SetVisibility(visible_ && vertices_);
   crease_line_actor_->SetVisibility(visible_ && crease_lines_on_);
   crease_point_actor_->SetVisibility(visible_ && crease_points_);
+  apply_colours();
 }
 
 }  // namespace sdog::vis

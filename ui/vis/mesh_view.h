@@ -2,10 +2,17 @@
 // One DOG mesh in a scene: its surface (coloured by at most one array), its vertices as coloured
 // dots (vertex types), its crease polylines and crease points. Positions change in place
 // (set_positions), so the actors live as long as the view.
+//
+// The surface is the trimmed surface (geometry/trimmed_surface.h: each patch clipped at its
+// creases, smooth shaded) or, as the debugging view of the DOG itself, the full cells: every quad
+// whole, overhanging its patch's creases. The quad grid holds the arrays that colour the surface;
+// set_point_array and set_cell_array carry them over to the trimmed surface. With the trimmed
+// surface the quad edges (set_edges_visible) are drawn as lines over it.
 #include <vtkActor.h>
 #include <vtkDataSetMapper.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 #include <vtkScalarsToColors.h>
 #include <vtkSmartPointer.h>
@@ -17,6 +24,7 @@
 
 #include "geometry/dog_mesh.h"
 #include "geometry/fine_coarse_map.h"
+#include "geometry/trimmed_surface.h"
 
 namespace sdog::vis {
 
@@ -36,6 +44,11 @@ class MeshView {
   MeshView& operator=(const MeshView&) = delete;
 
   void set_positions(const Eigen::MatrixX3d& X);
+  /// A point array (one value per mesh vertex) or cell array (one per quad) of the surface.
+  void set_point_array(const char* name, const std::vector<double>& values);
+  void set_cell_array(const char* name, const std::vector<double>& values);
+  /// The trimmed surface (default) or the full cells.
+  void set_trimmed(bool trimmed);
   /// Draws everything moved by (dx, 0, 0) (side-by-side view).
   void set_offset(double dx);
   double offset() const { return offset_; }
@@ -58,21 +71,32 @@ class MeshView {
   vtkUnstructuredGrid* grid() const { return grid_; }
   vtkPolyData* crease_lines() const { return crease_lines_; }
   const std::vector<Eigen::Vector3d>& crease_points() const { return crease_positions_; }
-  vtkActor* surface_actor() const { return surface_; }
+  /// The trimmed surface with the carried-over arrays (positions of the last set_positions).
+  vtkPolyData* trimmed() const { return trimmed_poly_; }
+  /// The actor of the surface on display (trimmed or full cells).
+  vtkActor* surface_actor() const { return trimmed_on_ && filled_ ? trimmed_actor_ : surface_; }
   vtkActor* vertex_actor() const { return vertex_actor_; }
 
  private:
   std::vector<vtkActor*> actors() const;
   void apply_visibility();
+  void apply_colours();
   const DogMesh& mesh_;
   vtkRenderer* renderer_;
   double offset_ = 0;
-  bool visible_ = true, filled_ = true, vertices_ = false, crease_lines_on_ = false, crease_points_ = false,
+  bool visible_ = true, filled_ = true, trimmed_on_ = true, vertices_ = false, crease_lines_on_ = false, crease_points_ = false,
        edges_ = false;
   vtkSmartPointer<vtkPoints> points_, crease_point_coords_;
   vtkSmartPointer<vtkUnstructuredGrid> grid_;
   vtkSmartPointer<vtkDataSetMapper> surface_mapper_;
-  vtkSmartPointer<vtkActor> surface_, vertex_actor_, crease_line_actor_, crease_point_actor_;
+  TrimmedSurface trimmed_surface_;
+  vtkSmartPointer<vtkPolyData> trimmed_poly_;
+  vtkSmartPointer<vtkPolyDataMapper> trimmed_mapper_;
+  std::array<double, 3> edge_color_{};
+  const char* colour_array_ = nullptr;  ///< what color_by chose (nullptr: plain)
+  bool colour_cells_ = false;
+  vtkScalarsToColors* colour_lut_ = nullptr;
+  vtkSmartPointer<vtkActor> trimmed_actor_, surface_, vertex_actor_, crease_line_actor_, crease_point_actor_;
   vtkSmartPointer<vtkPolyData> vertices_poly_, crease_lines_, crease_points_poly_;
   std::vector<Eigen::Vector3d> crease_positions_;
 };

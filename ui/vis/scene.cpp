@@ -23,6 +23,7 @@
 #include "ui/vis/legends.h"
 #include "ui/vis/mesh_view.h"
 #include "ui/vis/palette.h"
+#include "ui/vis/vtk_meshes.h"
 
 namespace sdog::vis {
 namespace {
@@ -30,20 +31,6 @@ namespace {
 constexpr double kLogResidualLow = -10, kLogResidualHigh = -2;  // log10 of 1e-10 and 1e-2
 constexpr double kSideBySideShift = 1.12;                      // sheet widths
 constexpr double kPi = 3.14159265358979323846;
-
-// Replaces (or adds) a double array of the attributes, reusing its storage.
-void set_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values) {
-  auto* array = vtkDoubleArray::SafeDownCast(attributes->GetArray(name));
-  if (!array) {
-    auto fresh = vtkSmartPointer<vtkDoubleArray>::New();
-    fresh->SetName(name);
-    attributes->AddArray(fresh);
-    array = fresh;
-  }
-  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t k = 0; k < values.size(); ++k) array->SetValue(static_cast<vtkIdType>(k), values[k]);
-  array->Modified();
-}
 
 vtkSmartPointer<vtkPolyData> poly_data() {
   auto p = vtkSmartPointer<vtkPolyData>::New();
@@ -234,8 +221,8 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
 
   // Patches do not change: their cell arrays are set once.
-  set_array(fine_->grid()->GetCellData(), "patch", quad_patches(model.fine));
-  if (coarse_) set_array(coarse_->grid()->GetCellData(), "patch", quad_patches(model.coarse));
+  fine_->set_cell_array("patch", quad_patches(model.fine));
+  if (coarse_) coarse_->set_cell_array("patch", quad_patches(model.coarse));
   for (Layer l : all_layers()) on_[l] = false;
   update(rest_scene_state(model));
   apply_view();
@@ -286,11 +273,10 @@ void Scene::refresh() {
 void Scene::refresh_fine(const Eigen::MatrixX3d& fine_x) {
   Overlays& o = *overlays_;
   fine_->set_positions(fine_x);
-  vtkPointData* pd = fine_->grid()->GetPointData();
-  set_array(pd, "dog_residual", state_.fields.dog_residual);
-  set_array(pd, "log10_dog_residual", log10_residuals(state_.fields.dog_residual));
-  set_array(pd, "bending", state_.fields.bending);
-  set_array(fine_->grid()->GetCellData(), "edge_strain", state_.fields.edge_strain);
+  fine_->set_point_array("dog_residual", state_.fields.dog_residual);
+  fine_->set_point_array("log10_dog_residual", log10_residuals(state_.fields.dog_residual));
+  fine_->set_point_array("bending", state_.fields.bending);
+  fine_->set_cell_array("edge_strain", state_.fields.edge_strain);
   const auto bending = robust_range(state_.fields.bending);
   o.bending_lut->SetTableRange(bending[0], bending[1]);
   const auto strain = robust_range(state_.fields.edge_strain);
@@ -326,8 +312,8 @@ void Scene::refresh_stitch_gaps() {
     radius[k] = 0.15 + 0.45 * state_.fields.stitch_gap[k] / gap_range[1];
   }
   gp->Modified();
-  set_array(o.gaps->GetPointData(), "stitch_gap", state_.fields.stitch_gap);
-  set_array(o.gaps->GetPointData(), "radius", radius);
+  set_double_array(o.gaps->GetPointData(), "stitch_gap", state_.fields.stitch_gap);
+  set_double_array(o.gaps->GetPointData(), "radius", radius);
 }
 
 // Handles (targets and residual lines only where positions are current: not in the flat view) and
@@ -425,6 +411,7 @@ void Scene::apply_layers() {
     view->set_crease_points_visible(types || creases);
     view->set_crease_lines_visible(creases);
     view->set_edges_visible(on_[Layer::Wireframe]);
+    view->set_trimmed(!on_[Layer::FullCells]);
   }
   switch (colour.value_or(Layer::Wireframe)) {  // wireframe: not a colour layer
     case Layer::Patches:
@@ -518,6 +505,8 @@ vtkDataSet* Scene::layer_data(Layer layer) const {
       return fine_->grid();
   }
 }
+
+vtkPolyData* Scene::trimmed_surface() const { return fine_->trimmed(); }
 
 vtkProp* Scene::legend_prop(Layer layer) const {
   const auto it = overlays_->legends.find(layer);

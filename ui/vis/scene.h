@@ -17,6 +17,7 @@
 // its rest state. Layers that only exist on the fine mesh (residuals, strain, bending, stitch gap,
 // handles) are drawn on the fine mesh only.
 #include <vtkDataSet.h>
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
@@ -88,6 +89,8 @@ class Scene {
   /// handle, target and residual-line points and cells for handles; the crease polylines (cell
   /// arrays assignment and assignment_color) for crease-curves.
   vtkDataSet* layer_data(Layer layer) const;
+  /// The fine mesh's trimmed surface (positions and the colour arrays of the last update).
+  vtkPolyData* trimmed_surface() const;
   /// The legend actor of a layer (a vtkScalarBarActor or vtkLegendBoxActor), nullptr for
   /// wireframe.
   vtkProp* legend_prop(Layer layer) const;

@@ -109,6 +109,19 @@ vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const 
   return grid;
 }
 
+void set_double_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values) {
+  auto* array = vtkDoubleArray::SafeDownCast(attributes->GetArray(name));
+  if (!array) {
+    auto fresh = vtkSmartPointer<vtkDoubleArray>::New();
+    fresh->SetName(name);
+    attributes->AddArray(fresh);
+    array = fresh;
+  }
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k) array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  array->Modified();
+}
+
 vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays) {
   const Eigen::MatrixX3d& V = surface.V;
   auto points = vtkSmartPointer<vtkPoints>::New();

@@ -29,6 +29,9 @@ vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, con
 vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
                                        const std::vector<NamedArray>& cell_arrays);
 
+/// Replaces (or adds) the double array `name` of the attributes, reusing its storage.
+void set_double_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values);
+
 /// VTK XML writers; throw OutputError with the path and VTK's reason on failure.
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path);
 void write_vtp(vtkPolyData* poly, const std::string& path);
