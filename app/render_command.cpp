@@ -17,6 +17,7 @@ namespace {
 struct RenderArgs {
   PatternOptions pattern;
   std::string overlay = "vertex-types,crease-curves,wireframe";
+  CLI::Option* overlay_opt = nullptr;
   std::string view = "side-by-side";
   bool coarse = false;
   std::string mode = "standard";
@@ -27,6 +28,8 @@ struct RenderArgs {
   std::string camera;
   std::string out;
   bool transparent = false;
+  std::string style = "standard";
+  std::string effects = "ambient-occlusion";
 };
 
 std::string overlay_help() {
@@ -49,7 +52,10 @@ vis::SceneState run_state(const DogModel& model, ModeKind mode, const RunConfig&
 void render(const RenderArgs& a) {
   vis::PictureOptions options;
   options.size = vis::parse_image_size(a.size);
-  options.layers = vis::parse_layers(a.overlay);
+  options.paper = a.style == "paper";
+  // The paper style draws the crease curves alone unless overlays are asked for.
+  options.layers = vis::parse_layers(options.paper && a.overlay_opt->count() == 0 ? "crease-curves" : a.overlay);
+  options.effects = vis::parse_paper_effects(a.effects);
   options.scene.view = vis::parse_view(a.view);
   options.scene.coarse = a.coarse;
   options.transparent = a.transparent;
@@ -92,7 +98,7 @@ void register_render_command(CLI::App& app, Runner& run) {
       "Render the meshed pattern with overlays offscreen to PNG, optionally after a solver run (needs an X "
       "display: use xvfb-run on a headless machine)");
   add_pattern_options(*cmd, args->pattern);
-  cmd->add_option("--overlay", args->overlay, overlay_help())->capture_default_str();
+  args->overlay_opt = cmd->add_option("--overlay", args->overlay, overlay_help())->capture_default_str();
   cmd->add_option("--view", args->view,
                   "3d: current positions seen from the front right, above; flat: the rest state seen from above; "
                   "side-by-side: fine (left) and coarse (right) meshes seen from above")
@@ -115,6 +121,15 @@ void register_render_command(CLI::App& app, Runner& run) {
                   "window_center; as the studio saves it) instead of the view's default camera");
   cmd->add_option("--out", args->out, "PNG file to write")->required();
   cmd->add_flag("--transparent", args->transparent, "transparent background");
+  cmd->add_option("--style", args->style,
+                  "standard: the debugging view (legends, caption, dots); paper: a figure for a publication (smooth "
+                  "paper-coloured surface, crease curves coloured by assignment, a light kit, antialiasing, no "
+                  "legends or caption; overlays: crease-curves unless --overlay says otherwise)")
+      ->check(CLI::IsMember({"standard", "paper"}))
+      ->capture_default_str();
+  cmd->add_option("--effects", args->effects,
+                  "paper style: comma-separated render effects, ambient-occlusion and/or shadows, or none")
+      ->capture_default_str();
   cmd->callback([args, &run]() { run = [args]() { render(*args); }; });
 }
 

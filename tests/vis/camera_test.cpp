@@ -3,6 +3,9 @@
 
 #include <vtkRenderer.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+
 #include "base/errors.h"
 #include "ui/vis/camera.h"
 #include "tests/vis/scene_fixture.h"
@@ -22,6 +25,38 @@ TEST(Camera, DefaultCamerasAreFixedFunctionsOfTheBounds) {
   EXPECT_FALSE(d3.parallel);
   const Eigen::Vector3d dir = (d3.position - d3.focal_point).normalized();
   EXPECT_NEAR((dir - Eigen::Vector3d(0.9, -1.2, 1).normalized()).norm(), 0, 1e-12);
+}
+
+// Projects p with the pose's perspective camera to viewport units [-1, 1]; the window centre w
+// moves the image by -w (a focal point at w = (0.25, 0) shows at x = -0.25).
+Eigen::Vector2d project(const vis::CameraPose& pose, const Eigen::Vector3d& p, double aspect) {
+  const Eigen::Vector3d back = (pose.position - pose.focal_point).normalized();
+  const Eigen::Vector3d right = pose.view_up.cross(back).normalized();
+  const Eigen::Vector3d up = back.cross(right);
+  const Eigen::Vector3d rel = p - pose.position;
+  const double depth = -rel.dot(back), t = std::tan(0.5 * pose.view_angle * M_PI / 180);
+  return {rel.dot(right) / (depth * t * aspect) - pose.window_center.x(), rel.dot(up) / (depth * t) - pose.window_center.y()};
+}
+
+TEST(Camera, TheThreeDCameraFitsEveryCornerTightly) {
+  const vis::Bounds b{0, 40, 0, 25, -3, 12};
+  for (bool legends : {true, false}) {
+    const double aspect = 1.6;
+    const vis::CameraPose pose = vis::three_d_camera(b, aspect, legends);
+    const double right_edge = legends ? 2 * 0.75 - 1 : 1;  // the legend column starts at 0.75 of the width
+    double widest = 0, tallest = 0;
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector2d q = project(pose, {b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]}, aspect);
+      EXPECT_GE(q.x(), -1) << k;
+      EXPECT_LE(q.x(), right_edge + 1e-9) << k;
+      EXPECT_GE(q.y(), -1) << k;
+      EXPECT_LE(q.y(), 1) << k;
+      widest = std::max(widest, std::abs(q.x() + pose.window_center.x()));
+      tallest = std::max(tallest, std::abs(q.y()));
+    }
+    // Tight: some corner reaches within 10% of the edge of the drawing area.
+    EXPECT_GT(std::max(widest / (0.5 * (right_edge + 1)), tallest), 0.9);
+  }
 }
 
 TEST(Camera, SavedCameraLoadsBackAndBadFilesSayWhy) {

@@ -153,6 +153,34 @@ TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
   EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
 }
 
+// The paper style: the folded sheet with its crease curves, ambient occlusion, no legend, title or
+// caption; the sheet fills the picture.
+TEST(OverlayRendering, ThePaperStyleMatchesItsBaselineAndDrawsNoLegend) {
+  vis::PictureOptions options;
+  options.layers = {Layer::CreaseCurves};
+  options.scene = {View::ThreeD, false, 0};
+  options.size = {640, 360};
+  options.paper = true;
+  options.caption = "a caption the paper style leaves out";
+  const std::string path = test::temp_dir("overlay_paper") + "/paper.png";
+  vis::render_picture(test::arcs_model(), test::arcs_standard_state(), options, path);
+  EXPECT_EQ(test::compare_with_baseline(path, "paper_style"), "");
+  const auto img = test::read_png(path);
+  // No dark text anywhere (caption, legends), and the sheet fills the picture's height or width.
+  int dims[3];
+  img->GetDimensions(dims);
+  int dark = 0, x0 = dims[0], x1 = -1, y0 = dims[1], y1 = -1;
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x) {
+      double r = img->GetScalarComponentAsDouble(x, y, 0, 0), g = img->GetScalarComponentAsDouble(x, y, 0, 1),
+             b = img->GetScalarComponentAsDouble(x, y, 0, 2);
+      dark += r < 40 && g < 40 && b < 40;
+      if (r < 250 || g < 250 || b < 250) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  EXPECT_LT(dark, 20);
+  EXPECT_GT(std::max(double(x1 - x0) / dims[0], double(y1 - y0) / dims[1]), 0.85);
+}
+
 TEST(OverlayRendering, KeepsTheBackgroundTransparentWhenAsked) {
   auto img = test::read_png(render(find_case("overlay_dog_residual"), "transparent.png", true));
   ASSERT_EQ(img->GetNumberOfScalarComponents(), 4);

@@ -1,5 +1,6 @@
 #include "ui/vis/camera.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -16,11 +17,15 @@ constexpr double kPi = 3.14159265358979323846;
 // The drawing area: the viewport left of the legend column, its centre in viewport units [-1, 1].
 constexpr double kDrawingWidth = kLegendColumnLeft;
 const Eigen::Vector2d kDrawingCentre{kDrawingWidth - 1, 0};
+// The share of the height a 3D view fills when a caption may sit at the top.
+constexpr double kCaptionFreeHeight = 0.88;
 
 Eigen::Vector3d centre(const Bounds& b) { return {0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])}; }
 
 // The camera's window centre that puts the focal point in the middle of the drawing area.
-Eigen::Vector2d drawing_window_center() { return -kDrawingCentre; }
+Eigen::Vector2d drawing_window_center(bool legend_column) {
+  return legend_column ? Eigen::Vector2d(-kDrawingCentre) : Eigen::Vector2d::Zero();
+}
 
 Eigen::Vector3d vector3(const nlohmann::json& json, const char* key, const std::string& source) {
   const auto& v = json.at(key);
@@ -31,30 +36,65 @@ Eigen::Vector3d vector3(const nlohmann::json& json, const char* key, const std::
 
 }  // namespace
 
-CameraPose top_view_camera(const Bounds& b, double aspect) {
+CameraPose top_view_camera(const Bounds& b, double aspect, bool legend_column) {
   CameraPose pose;
   const Eigen::Vector3d c = centre(b);
   const double w = std::max(b[1] - b[0], 1e-9), h = std::max(b[3] - b[2], 1e-9);
+  const double drawing_width = legend_column ? kDrawingWidth : 1.0;
   pose.parallel = true;
-  pose.parallel_scale = std::max(h / (2 * 0.85), w / (2 * 0.9 * aspect * kDrawingWidth));
+  pose.parallel_scale = std::max(h / (2 * 0.85), w / (2 * 0.9 * aspect * drawing_width));
   pose.focal_point = c;
   pose.position = c + Eigen::Vector3d(0, 0, 4 * std::max({w, h, b[5] - b[4]}));
   pose.view_up = {0, 1, 0};
-  pose.window_center = drawing_window_center();
+  pose.window_center = drawing_window_center(legend_column);
   return pose;
 }
 
-CameraPose three_d_camera(const Bounds& b, double aspect) {
+CameraPose three_d_camera(const Bounds& b, double aspect, bool legend_column) {
+  std::vector<Eigen::Vector3d> corners;
+  for (int k = 0; k < 8; ++k) corners.emplace_back(b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]);
+  return three_d_camera(corners, aspect, legend_column);
+}
+
+CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column) {
+  // The margin around the points' projection, as a factor of the distance.
+  constexpr double kMargin = 1.06;
   CameraPose pose;
-  const Eigen::Vector3d c = centre(b);
-  const double radius = std::max(0.5 * Eigen::Vector3d(b[1] - b[0], b[3] - b[2], b[5] - b[4]).norm(), 1e-9);
-  const double half_y = 0.5 * pose.view_angle * kPi / 180;
-  const double half_x = std::atan(std::tan(half_y) * aspect * kDrawingWidth);
-  const double distance = 1.02 * radius / std::sin(std::min(half_x, half_y));
-  pose.focal_point = c;
-  pose.position = c + distance * Eigen::Vector3d(0.9, -1.2, 1).normalized();
   pose.view_up = {0, 0, 1};
-  pose.window_center = drawing_window_center();
+  pose.window_center = drawing_window_center(legend_column);
+  if (points.empty()) return pose;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& p : points) c += p;
+  c /= static_cast<double>(points.size());
+  const Eigen::Vector3d towards_camera = Eigen::Vector3d(0.9, -1.2, 1).normalized();
+  const Eigen::Vector3d right = Eigen::Vector3d(0, 0, 1).cross(towards_camera).normalized();
+  const Eigen::Vector3d up = towards_camera.cross(right);
+  // With the legend column, the caption takes the top of the drawing area.
+  const double tan_y = std::tan(0.5 * pose.view_angle * kPi / 180) * (legend_column ? kCaptionFreeHeight : 1.0);
+  const double tan_x = std::tan(0.5 * pose.view_angle * kPi / 180) * aspect * (legend_column ? kDrawingWidth : 1.0);
+  // A point at lateral offsets (x, y) and depth z towards the camera lies inside the drawing area
+  // at distance d when |x| <= tan_x (d - z) and |y| <= tan_y (d - z). The focal point moves to
+  // the middle of the projection from the points' centroid, then the distance is found again.
+  double distance = 1e-9;
+  for (int pass = 0; pass < 2; ++pass) {
+    distance = 1e-9;
+    for (const auto& p : points) {
+      const Eigen::Vector3d rel = p - c;
+      const double z = rel.dot(towards_camera);
+      distance = std::max({distance, z + std::abs(rel.dot(right)) / tan_x, z + std::abs(rel.dot(up)) / tan_y});
+    }
+    if (pass == 1) break;
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (const auto& p : points) {
+      const Eigen::Vector3d rel = p - c;
+      const double depth = distance - rel.dot(towards_camera);
+      lo_x = std::min(lo_x, rel.dot(right) / depth), hi_x = std::max(hi_x, rel.dot(right) / depth);
+      lo_y = std::min(lo_y, rel.dot(up) / depth), hi_y = std::max(hi_y, rel.dot(up) / depth);
+    }
+    c += distance * (0.5 * (lo_x + hi_x) * right + 0.5 * (lo_y + hi_y) * up);
+  }
+  pose.focal_point = c;
+  pose.position = c + kMargin * distance * towards_camera;
   return pose;
 }
 

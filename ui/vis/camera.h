@@ -16,6 +16,7 @@
 #include <array>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace sdog::vis {
 
@@ -30,9 +31,15 @@ struct CameraPose {
 /// Bounds xmin, xmax, ymin, ymax, zmin, zmax (the vtkProp convention).
 using Bounds = std::array<double, 6>;
 
-/// The default cameras above for a viewport of aspect ratio width / height.
-CameraPose top_view_camera(const Bounds& bounds, double aspect);
-CameraPose three_d_camera(const Bounds& bounds, double aspect);
+/// The default cameras above for a viewport of aspect ratio width / height, framing the bounds
+/// in the drawing area: the viewport left of the legend column, or (legend_column false) the whole
+/// viewport. The 3D camera looks from the front right, above, from just far enough for every
+/// corner of the bounds to lie inside the drawing area.
+CameraPose top_view_camera(const Bounds& bounds, double aspect, bool legend_column = true);
+CameraPose three_d_camera(const Bounds& bounds, double aspect, bool legend_column = true);
+/// The 3D camera framing the points themselves (tighter than their bounds): every point inside
+/// the drawing area, their projection centred in it.
+CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column = true);
 
 CameraPose camera_pose(vtkCamera* camera);
 void apply_camera_pose(const CameraPose& pose, vtkCamera* camera);

@@ -166,6 +166,28 @@ void MeshView::set_cell_array(const char* name, const std::vector<double>& value
   set_double_array(trimmed_poly_->GetCellData(), name, trimmed_arrays(trimmed_surface_, arrays).cell[0].values);
 }
 
+void MeshView::set_paper(bool paper) {
+  vtkProperty* front = trimmed_actor_->GetProperty();
+  const Rgb colour = paper ? kPaperColor : kSurfaceColor;
+  front->SetColor(colour[0], colour[1], colour[2]);
+  front->SetAmbient(paper ? 0.15 : 0.35);
+  front->SetDiffuse(paper ? 0.8 : 0.65);
+  front->SetSpecular(paper ? 0.12 : 0.0);
+  front->SetSpecularPower(20);
+  if (paper) {
+    auto back = vtkSmartPointer<vtkProperty>::New();
+    back->DeepCopy(front);
+    back->SetColor(kPaperBackColor[0], kPaperBackColor[1], kPaperBackColor[2]);
+    trimmed_actor_->SetBackfaceProperty(back);
+  } else {
+    trimmed_actor_->SetBackfaceProperty(nullptr);
+  }
+}
+
+void MeshView::set_crease_line_width(double pixels) {
+  crease_line_actor_->GetProperty()->SetLineWidth(static_cast<float>(pixels));
+}
+
 void MeshView::set_trimmed(bool trimmed) {
   trimmed_on_ = trimmed;
   apply_visibility();

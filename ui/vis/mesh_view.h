@@ -49,6 +49,9 @@ class MeshView {
   void set_cell_array(const char* name, const std::vector<double>& values);
   /// The trimmed surface (default) or the full cells.
   void set_trimmed(bool trimmed);
+  /// The paper style's materials (paper_style.h): paper white in front, darker behind, a little
+  /// gloss; else the debugging view's plain grey.
+  void set_paper(bool paper);
   /// Draws everything moved by (dx, 0, 0) (side-by-side view).
   void set_offset(double dx);
   double offset() const { return offset_; }
@@ -67,6 +70,8 @@ class MeshView {
   void set_edges_visible(bool visible);
   /// Pixel size of the vertex and crease-point dots (crease lines follow).
   void set_dot_size(double pixels);
+  /// Pixel width of the crease lines (after set_dot_size, which sets it from the dots).
+  void set_crease_line_width(double pixels);
 
   vtkUnstructuredGrid* grid() const { return grid_; }
   vtkPolyData* crease_lines() const { return crease_lines_; }

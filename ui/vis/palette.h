@@ -39,6 +39,8 @@ inline Rgb fold_color(Fold fold) {
   return {0.40, 0.40, 0.40};
 }
 inline constexpr Rgb kSurfaceColor{0.94, 0.94, 0.94};
+inline constexpr Rgb kPaperColor{0.97, 0.96, 0.92};      // the paper style's front side
+inline constexpr Rgb kPaperBackColor{0.78, 0.82, 0.88};  // and its back side
 inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
 inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};
 inline constexpr Rgb kLinkLineColor{0.15, 0.15, 0.15};

@@ -3,6 +3,7 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/errors.h"
 
@@ -25,14 +26,21 @@ void render_picture(const DogModel& model, const SceneState& state, const Pictur
 
   SceneOptions scene_options = options.scene;
   if (scene_options.font_size <= 0) scene_options.font_size = picture_font_size(options.size);
+  scene_options.paper = options.paper;
   Scene scene(model, renderer, scene_options);
   scene.update(state);
   for (Layer l : options.layers) scene.set_layer(l, true);
-  scene.set_caption(options.caption);
+  if (!options.paper) scene.set_caption(options.caption);
   scene.reset_camera();
   if (options.camera) {
     apply_camera_pose(*options.camera, renderer->GetActiveCamera());
     renderer->ResetCameraClippingRange();
+  }
+  if (options.paper) {
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    apply_paper_lighting(renderer, diagonal, options.effects);
   }
   save_png(window, path, options.transparent);
 }

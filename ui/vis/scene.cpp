@@ -412,6 +412,8 @@ void Scene::apply_layers() {
     view->set_crease_lines_visible(creases);
     view->set_edges_visible(on_[Layer::Wireframe]);
     view->set_trimmed(!on_[Layer::FullCells]);
+    view->set_paper(options_.paper);
+    if (options_.paper) view->set_crease_points_visible(false);
   }
   switch (colour.value_or(Layer::Wireframe)) {  // wireframe: not a colour layer
     case Layer::Patches:
@@ -437,9 +439,9 @@ void Scene::apply_layers() {
   o.gap_actor->SetVisibility(on_[Layer::StitchGap]);
   for (vtkActor* a : {o.residual_actor.Get(), o.handle_actor.Get(), o.target_actor.Get(), o.angle_actor.Get()})
     a->SetVisibility(on_[Layer::Handles]);
-  o.fine_title->SetVisibility(options_.view == View::SideBySide);
-  o.coarse_title->SetVisibility(options_.view == View::SideBySide && coarse_);
-  for (const auto& [layer, legend] : o.legends) legend.set_visible(on_[layer]);
+  o.fine_title->SetVisibility(options_.view == View::SideBySide && !options_.paper);
+  o.coarse_title->SetVisibility(options_.view == View::SideBySide && coarse_ && !options_.paper);
+  for (const auto& [layer, legend] : o.legends) legend.set_visible(on_[layer] && !options_.paper);
   layout_legends();
 }
 
@@ -467,7 +469,24 @@ void Scene::reset_camera() {
   }
   if (on_[Layer::Handles] && o.handle_lines->GetNumberOfPoints() > 0) merge_bounds(b, o.handle_lines->GetBounds());
 
-  CameraPose pose = options_.view == View::ThreeD ? three_d_camera(b, width / height) : top_view_camera(b, width / height);
+  const bool legends = !options_.paper;
+  CameraPose pose;
+  if (options_.view == View::ThreeD) {  // framing what is drawn, point by point
+    std::vector<Eigen::Vector3d> points;
+    auto add = [&](vtkDataSet* data, double dx) {
+      for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+        double p[3];
+        data->GetPoint(i, p);
+        points.emplace_back(p[0] + dx, p[1], p[2]);
+      }
+    };
+    add(on_[Layer::FullCells] ? static_cast<vtkDataSet*>(fine_->grid()) : fine_->trimmed(), 0);
+    if (coarse_ && coarse_->surface_actor()->GetVisibility()) add(coarse_->grid(), coarse_->offset());
+    if (on_[Layer::Handles]) add(o.handle_lines, 0);
+    pose = three_d_camera(points, width / height, legends);
+  } else {
+    pose = top_view_camera(b, width / height, legends);
+  }
   apply_camera_pose(pose, renderer_->GetActiveCamera());
   renderer_->ResetCameraClippingRange();
 
@@ -477,8 +496,11 @@ void Scene::reset_camera() {
                                  : (pose.position - pose.focal_point).norm() * std::tan(0.5 * pose.view_angle * kPi / 180);
   const double ppu = 0.5 * height / half_height;
   const double dot = std::clamp(0.45 * ppu, 2.0, 14.0);
-  for (MeshView* view : {fine_.get(), coarse_.get()})
-    if (view) view->set_dot_size(dot);
+  for (MeshView* view : {fine_.get(), coarse_.get()}) {
+    if (!view) continue;
+    view->set_dot_size(dot);
+    if (options_.paper) view->set_crease_line_width(std::max(2.0, height / 350));  // print weight
+  }
   o.handle_actor->GetProperty()->SetPointSize(static_cast<float>(1.8 * dot));
   o.target_actor->GetProperty()->SetPointSize(static_cast<float>(1.5 * dot));
   o.angle_actor->GetProperty()->SetPointSize(static_cast<float>(1.6 * dot));

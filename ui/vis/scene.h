@@ -44,6 +44,9 @@ struct SceneOptions {
   View view = View::ThreeD;
   bool coarse = false;  ///< show the coarse mesh (side-by-side always does when the model has one)
   int font_size = 20;   ///< legends and titles (points)
+  /// The paper style (paper_style.h): no legends, titles or crease-point dots, a paper-coloured
+  /// surface and crease lines coloured by assignment.
+  bool paper = false;
 };
 
 class Legend;
