@@ -15,6 +15,7 @@
 #include "solver/experiments/case_rounds.h"
 #include "solver/experiments/pace.h"
 #include "solver/experiments/tables.h"
+#include "solver/experiments/trim_cost.h"
 
 namespace sdog::cli {
 namespace {
@@ -46,6 +47,7 @@ struct BenchArgs {
   std::string csv;
   std::string preset;
   bool pace = false;
+  bool trim = false;
   std::vector<int> ks{250, 50, 10, 1};
   int max_hold = 200;
 };
@@ -171,6 +173,12 @@ void bench(const BenchArgs& a) {
       print_row(r);
       csv += csv_line(bench_fields(r));
     }
+    if (a.trim && !results.empty()) {
+      const TrimCost t = measure_trim_cost(build_case_model(cases.front()).fine, 21);
+      std::printf("  trimmed surface: %d triangles, topology %.1f ms once, %.2f ms per state (%.2f%% of a %s iteration)\n",
+                  t.triangles, t.build_ms, t.state_ms, 100 * t.state_ms / results.front().median_ms,
+                  mode_name(cases.front().mode));
+    }
   }
   if (out) {
     out->write_text(csv_name, csv);
@@ -201,6 +209,9 @@ void register_bench_command(CLI::App& app, Runner& runner) {
       ->capture_default_str();
   cmd->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
   cmd->add_option("--csv", a->csv, "also write the table as CSV to this file");
+  cmd->add_flag("--trim", a->trim,
+                "also time the trimmed surface of each case's fine mesh (its topology, and each state: positions, "
+                "normals and a frame's arrays), against the first mode's median iteration");
   cmd->add_flag("--pace", a->pace,
                 "the pace benchmark: the standard mode's corners drag over each of --ks iterations, then held "
                 "until converged (at most --max-hold); per K the final objective and its ratio to the best K, "
