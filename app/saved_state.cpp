@@ -99,6 +99,17 @@ RunConfig saved_state_config(const SavedState& s, ScenarioKind scenario) {
   return config;
 }
 
+Workspace saved_workspace(const SavedState& s, const DogModel& model, const std::optional<std::string>& mode) {
+  Workspace w;
+  w.pattern = s.pattern.pattern;
+  w.resolution = model.fine_res.str();
+  w.iteration = s.iteration.value_or(0);
+  w.mode = mode ? *mode : s.run ? s.run->mode_at(w.iteration) : mode_name(ModeKind::kStandard);
+  w.config = saved_state_config(s, ScenarioKind::kCorners);
+  w.positions = to_dofs(s.data.positions);
+  return w;
+}
+
 vis::SceneState saved_scene_state(const SavedState& s, const DogModel& model, const RunConfig& config,
                                   bool constraints) {
   const DogProblem problem(model.fine, model.fine_topology, config.weights);

@@ -10,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/saved_run.h"
 #include "geometry/dog_model.h"
+#include "solver/session/workspace.h"
 #include "ui/vis/saved_frames.h"
 #include "ui/vis/scene_state.h"
 
@@ -46,6 +47,11 @@ DogModel saved_state_model(const SavedState& state);
 
 /// The run configuration of the state: the record's; without one the defaults with `scenario`.
 RunConfig saved_state_config(const SavedState& state, ScenarioKind scenario);
+
+/// The state as a studio workspace on `model` (saved_state_model): pattern, resolution, iteration
+/// (0 when unknown), configuration, positions, and the mode: `mode` when given, else the run's at
+/// the frame's iteration (without a record: standard).
+Workspace saved_workspace(const SavedState& state, const DogModel& model, const std::optional<std::string>& mode);
 
 /// What the run's pictures showed at the frame: its positions, the fields measured on the model
 /// with the configuration's weights (as the run and its frames measure them) and, with
