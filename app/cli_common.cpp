@@ -20,11 +20,11 @@ void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig&
   if (!name.empty()) apply_preset(config.preset = parse_preset(name, "--preset: "), config);
 }
 
-void add_pattern_options(CLI::App& cmd, PatternOptions& o) {
+void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required) {
   cmd.add_option("PATTERN", o.pattern,
                  "crease pattern: an SVG drawing (black strokes = sheet boundary, other colours = "
                  "creases) or a FOLD file (.fold)")
-      ->required();
+      ->required(required);
   cmd.add_option("--res", o.res,
                  "grid lines XxY such as 31x21 (odd numbers when a coarse mesh is built), or "
                  "'auto': 41 along the longer side")

@@ -18,8 +18,9 @@ struct PatternOptions {
   bool fine_only = false;
 };
 
-/// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand.
-void add_pattern_options(CLI::App& cmd, PatternOptions& o);
+/// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand
+/// (PATTERN `required` or not).
+void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required = true);
 
 /// Adds --preset NAME (the solver settings a run starts from: default or thesis).
 void add_preset_option(CLI::App& cmd, std::string& preset);

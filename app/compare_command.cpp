@@ -1,5 +1,6 @@
 // sdog compare: the thesis protocol for several solver modes on the same patterns and resolutions;
-// a table (compare.csv), the per-iteration series (series.csv), compare.json and PNG plots.
+// a table (compare.csv), the per-iteration series (series.csv), compare.json and PNG plots (those
+// only with an X display).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -177,7 +178,7 @@ nlohmann::json compare_json(const CompareArgs& a, const std::vector<ModeKind>& m
 
 void compare(const CompareArgs& a) {
   const auto start = std::chrono::steady_clock::now();
-  // Usage errors first (exit 2), then what cannot be written or drawn (exit 1), then the work.
+  // Usage errors first (exit 2), then what cannot be written (exit 1), then the work.
   const std::vector<ModeKind> modes = resolve_modes(a.modes);
   parse_scenario(a.scenario, "--scenario: ");
   const vis::ImageSize plot_size = vis::parse_image_size(a.plot_size);
@@ -185,7 +186,11 @@ void compare(const CompareArgs& a) {
   const std::vector<std::vector<Case>> places = make_places(a, modes);
   const size_t case_count = places.size() * modes.size();
   OutputSet out(a.out);
-  vis::require_display();
+  // The tables need no display; without one the plots are left out, which is said once.
+  const std::string no_display = vis::display_unavailable();
+  if (!no_display.empty())
+    std::cerr << "sdog compare: " << no_display << ": the plots are skipped (the tables are written); to draw them, "
+              << "run the command with an X display or under `xvfb-run -a`\n";
   set_thread_count(a.threads);
 
   std::vector<CaseResult> rows;
@@ -203,10 +208,11 @@ void compare(const CompareArgs& a) {
   out.write_text("series.csv", series);
   out.write_text("compare.json", compare_json(a, modes, config, rows).dump(2) + "\n");
   std::vector<std::string> plots;
-  for (const auto& [name, chart] : comparison_charts(rows)) {
-    vis::render_line_chart(chart, plot_size, out.temporary(name));
-    plots.push_back(name);
-  }
+  if (no_display.empty())
+    for (const auto& [name, chart] : comparison_charts(rows)) {
+      vis::render_line_chart(chart, plot_size, out.temporary(name));
+      plots.push_back(name);
+    }
   out.commit();
   const auto failed = std::count_if(rows.begin(), rows.end(), [](const CaseResult& r) { return !r.completed(); });
   if (failed > 0)
@@ -228,7 +234,8 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
       "Run the thesis protocol with several solver modes and compare them: compare.csv (final objective and "
       "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its "
       "speedup, DOG residuals, stitching gap), "
-      "series.csv, compare.json and PNG plots (needs an X display: use xvfb-run on a headless machine)");
+      "series.csv, compare.json and PNG plots (the plots need an X display: without one they are skipped; use "
+      "xvfb-run on a headless machine)");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");
   cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_modes() + ")")

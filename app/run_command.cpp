@@ -9,6 +9,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/progress.h"
+#include "app/saved_run.h"
 #include "app/threads.h"
 #include "app/versions.h"
 #include "base/atomic_output.h"
@@ -126,6 +127,7 @@ nlohmann::json run_json(const RunArgs& a, RunSetup& setup, const RunSummary& sum
                   {"dog_max_over_run", totals.worst_dog}, {"iterations_above_dog_tolerance", totals.dog_misses}}},
       {"final", diagnostics_json(summary.last)}};
   if (summary.failed()) j["failure"] = summary.failure;
+  add_model_record(j, a.pattern);
   return j;
 }
 

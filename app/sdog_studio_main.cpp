@@ -1,5 +1,6 @@
 // sdog-studio: the desktop application (Qt widgets around sdog::studio::MainWindow).
 //   sdog-studio [PATTERN.svg --res 31x21 --mode M --overlay L,... --view V]
+//   sdog-studio --frame DIR/frame_NNNN.vtu | --run DIR [--iteration N]   opens a state a run saved
 //   sdog-studio --screenshot FILE.png [PATTERN ... --iters N]   renders the window, saves it, exits
 //   sdog-studio --measure-fps SECONDS PATTERN ...   plays, turns the camera, prints the frame rate
 // Exit codes as sdog's: 0 success, 1 bad input or output, 2 usage error.
@@ -16,6 +17,7 @@
 #include <memory>
 
 #include "app/blas_kernels.h"
+#include "app/saved_state.h"
 #include "app/studio_options.h"
 #include "app/versions.h"
 #include "base/errors.h"
@@ -64,19 +66,53 @@ bool configure_window(sdog::studio::MainWindow& window, const StudioArgs& a) {
   return true;
 }
 
-// --measure-fps: once the first state is shown (and the iterations asked for are done), plays and
+// --frame or --run: the saved state on the model of its run, in the run's mode (at the frame's
+// iteration) unless --mode says otherwise. Returns the iteration it opens at, or nothing: after a
+// message on stderr when the saved state cannot be read (`exit_code` 1 or 2: the program ends), or
+// when the window reported why it cannot open it.
+std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const StudioArgs& a, const CLI::App& cli,
+                                    int& exit_code) {
+  sdog::cli::SavedStateRequest request;
+  request.frame = a.frame;
+  request.run = a.run;
+  if (a.iteration >= 0) request.iteration = a.iteration;
+  request.command_line.pattern = a.pattern;
+  request.command_line.res = a.res;
+  request.given = [&cli](const std::string& option) {
+    return (option == "PATTERN" || option == "--res") && cli.count(option) > 0;
+  };
+  try {
+    const sdog::cli::SavedState saved = sdog::cli::load_saved_state(request);
+    auto model = std::make_shared<const sdog::DogModel>(sdog::cli::saved_state_model(saved));
+    const sdog::Workspace state =
+        sdog::cli::saved_workspace(saved, *model, cli.count("--mode") ? std::optional<std::string>(a.mode) : std::nullopt);
+    const std::string source = saved.run ? saved.run->record : saved.frame;
+    if (window.open_state(model, state, QString::fromStdString(source))) return state.iteration;
+  } catch (const sdog::UsageError& e) {
+    std::cerr << "sdog-studio: " << e.what() << "\n";
+    exit_code = 2;
+  } catch (const std::exception& e) {
+    std::cerr << "sdog-studio: " << e.what() << "\n";
+    exit_code = 1;
+  }
+  return std::nullopt;
+}
+
+// --measure-fps: once the first state is shown (and the solver is at iteration `until`), plays and
 // turns the camera for the given time, prints the frame rate and quits.
-void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, QApplication& qt, const int& exit_code) {
+void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until, QApplication& qt,
+                        const int& exit_code) {
   auto measuring = std::make_shared<bool>(false);
-  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, measuring] {
-    if (*measuring || window.snapshot()->iteration < a.iterations) return;
+  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until, measuring] {
+    if (*measuring || window.snapshot()->iteration < until) return;
     *measuring = true;
     QTimer::singleShot(0, &window, [&] {
       const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
       const sdog::vis::ImageSize view{window.renderer()->GetSize()[0], window.renderer()->GetSize()[1]};
+      const sdog::DogModel& model = *window.model();
       std::printf("view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d pixels:\n",
-                  a.mode.c_str(), a.pattern.c_str(), a.res.c_str(), window.model()->fine.vertex_count(), view.width,
-                  view.height);
+                  window.snapshot()->mode.c_str(), model.pattern.source.c_str(), model.fine_res.str().c_str(),
+                  model.fine.vertex_count(), view.width, view.height);
       std::printf("  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max %.1f ms\n",
                   r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
       std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
@@ -86,11 +122,11 @@ void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, Q
   });
 }
 
-// --screenshot: saves the window once the state of the last iteration asked for is shown, and quits.
-void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, QApplication& qt,
+// --screenshot: saves the window once the state of iteration `until` is shown, and quits.
+void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until, QApplication& qt,
                            const int& exit_code) {
-  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&] {
-    if (window.snapshot()->iteration < a.iterations) return;
+  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until] {
+    if (window.snapshot()->iteration < until) return;
     QTimer::singleShot(300, &window, [&] {
       if (window.save_window_image(QString::fromStdString(a.screenshot))) {
         std::cout << "wrote " << a.screenshot << "\n";
@@ -140,12 +176,18 @@ int main(int argc, char** argv) {
     });
   if (!configure_window(window, a)) return 2;
   window.show();
-  if (!a.pattern.empty() &&
-      !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res), QString::fromStdString(a.mode)))
+  int until = a.iterations;  // the iteration the batch modes wait for
+  if (!a.frame.empty() || !a.run.empty()) {
+    const std::optional<int> start = open_saved_state(window, a, cli, exit_code);
+    if (!start && (exit_code || batch)) return exit_code ? exit_code : 1;
+    until += start.value_or(0);
+  } else if (!a.pattern.empty() && !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res),
+                                                        QString::fromStdString(a.mode))) {
     if (batch) return 1;
+  }
   if (a.iterations > 0) window.step(a.iterations);
-  if (a.measure_fps > 0) measure_when_shown(window, a, qt, exit_code);
-  if (!a.screenshot.empty()) screenshot_when_shown(window, a, qt, exit_code);
+  if (a.measure_fps > 0) measure_when_shown(window, a, until, qt, exit_code);
+  if (!a.screenshot.empty()) screenshot_when_shown(window, a, until, qt, exit_code);
   const int code = qt.exec();
   return exit_code ? exit_code : code;
 }

@@ -122,7 +122,6 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
 // --config: the same JSON as sdog run's for every run (iteration counts, weights, mode options);
 // the command line's --iters wins, and switches are refused (every mode runs on its own).
 TEST(CompareCommand, ConfigFileSetsEveryRunAndTheCommandLineWins) {
-  SDOG_REQUIRE_DISPLAY();
   const std::string dir = test::temp_dir("compare_config");
   const std::string config =
       test::write_file(dir, "c.json", R"({"iterations": 3, "hold": 1, "twolevel": {"fold_sharpness": 100}})");
@@ -170,15 +169,6 @@ TEST(CompareCommand, UnknownScenarioIsAUsageError) {
 TEST(CompareCommand, UnwritableOutputFailsBeforeTheWork) {
   const auto r = test::expect_unwritable_output_fails(kSmallCompare, "compare_unwritable");
   EXPECT_EQ(r.out, "");  // not even the table header: nothing ran
-}
-
-TEST(CompareCommand, NoDisplayFailsBeforeTheWorkAndWritesNothing) {
-  const std::string dir = test::temp_dir("compare_display");
-  const auto r = test::run_sdog(kSmallCompare + " --out " + dir + "/out", "env -u DISPLAY");
-  EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("xvfb-run"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
 }  // namespace

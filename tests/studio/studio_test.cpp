@@ -2,7 +2,8 @@
 // switched, the solver stepped and played on its thread, handles and angle constraints edited
 // and undone, a vertex inspected, a crease picked, reassigned, folded and undone, a screenshot, a
 // frame series and a workspace written and read back, a run configuration dropped for another
-// pattern, and the command line's --screenshot.
+// pattern, a frame saved by sdog run shown as sdog render draws it, and the command line's
+// --screenshot, also of a saved frame.
 #include <QAction>
 #include <QApplication>
 #include <QDir>
@@ -30,7 +31,9 @@
 #include <vtkRenderWindowInteractor.h>
 
 #include "app/blas_kernels.h"
+#include "app/saved_state.h"
 #include "solver/terms/term.h"
+#include "tests/vis/image_compare.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"
@@ -45,6 +48,8 @@ namespace {
 
 const QString kPattern = QString(SDOG_DATASETS_DIR) + "/four_corner_arcs.svg";
 constexpr int kWait = 120000;  // ms: the machine may be busy
+// Pictures of the same state: at most kPixels pixels differ by more than kLevel (0-255) in a channel.
+constexpr int kLevel = 2, kPixels = 16;
 
 }  // namespace
 
@@ -73,6 +78,24 @@ class StudioTest : public QObject {
     other->show();
     QVERIFY(other->open_workspace(path));
     QTRY_VERIFY_WITH_TIMEOUT(other->snapshot() && other->snapshot()->iteration == iteration, kWait);
+  }
+  /// `sdog run` of 20 iterations of the corners scenario and 5 held on the pattern at 21x21 into
+  /// DIR/run, with frames 0, 10, 20 and 25; returns DIR/run.
+  static QString saved_run(const QTemporaryDir& dir) {
+    const QString run = dir.filePath("run");
+    QProcess sdog;
+    sdog.start(SDOG_EXE, {"run", kPattern, "--res", "21x21", "--iters", "20", "--hold", "5", "--frames-every", "10",
+                          "-q", "--out", run});
+    if (!sdog.waitForFinished(kWait) || sdog.exitCode() != 0) qWarning() << sdog.readAllStandardError();
+    return run;
+  }
+  /// `sdog render` with `args`; false (after a warning with its messages) when it fails.
+  static bool sdog_render(const QStringList& args) {
+    QProcess sdog;
+    sdog.start(SDOG_EXE, QStringList{"render"} + args);
+    const bool done = sdog.waitForFinished(kWait) && sdog.exitCode() == 0;
+    if (!done) qWarning() << sdog.readAllStandardError();
+    return done;
   }
   /// The session's assignment and angle of crease k in the last state shown.
   static sdog::Fold fold_of(const MainWindow& w, int k) { return w.snapshot()->state.crease_folds.at(k); }
@@ -629,6 +652,46 @@ class StudioTest : public QObject {
     QCOMPARE(errors_.size(), 1);
   }
 
+  // A frame of a run opened as sdog-studio --frame opens it (the run's model, mode, configuration
+  // and the frame's iteration), exported (File > Export screenshot) and drawn by sdog render with
+  // the studio's saved camera, the same overlays, size and view: the same picture. Both are drawn
+  // by vis::render_picture offscreen on the same display without multisampling, with the camera
+  // read back exactly from its JSON, so the same state gives the same pixels (measured: none
+  // differ); the tolerance, 16 of the 256000 pixels off by more than 2 levels, leaves room for
+  // rounding in a colour map and no more: a handle's target drawn at another time of the scenario
+  // changes 189 pixels, another frame thousands (checked below).
+  void shows_a_saved_frame_as_sdog_render_draws_it() {
+    QTemporaryDir dir;
+    const QString run = saved_run(dir), frame = run + "/frame_0010.vtu";
+    sdog::cli::SavedStateRequest request;
+    request.frame = frame.toStdString();
+    request.given = [](const std::string&) { return false; };
+    const sdog::cli::SavedState saved = sdog::cli::load_saved_state(request);
+    auto model = std::make_shared<const sdog::DogModel>(sdog::cli::saved_state_model(saved));
+    QVERIFY(window_->open_state(model, sdog::cli::saved_workspace(saved, *model, std::nullopt), run + "/run.json"));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
+    QCOMPARE(iteration(), 10);  // half way: the handles' targets are those of t = 0.5
+    QCOMPARE(window_->snapshot()->mode, std::string("standard"));
+    for (vis::Layer l : vis::all_layers()) window_->set_layer(l, false);
+    for (vis::Layer l : {vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::CreaseCurves}) window_->set_layer(l, true);
+    window_->set_view(vis::View::ThreeD);
+    const QString camera = dir.filePath("camera.json"), studio = dir.filePath("studio.png");
+    QVERIFY(window_->save_camera(camera));
+    QVERIFY(window_->export_screenshot(studio, {640, 400}, false));
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join("\n")));
+
+    const QStringList same = {"--overlay", "dog-residual,handles,crease-curves", "--view", "3d", "--size", "640x400",
+                              "--camera", camera, "--caption", ""};
+    const QString drawn = dir.filePath("render.png"), other = dir.filePath("other.png");
+    QVERIFY(sdog_render(QStringList{"--frame", frame, "--out", drawn} + same));
+    QVERIFY(sdog_render(QStringList{"--frame", run + "/frame_0020.vtu", "--out", other} + same));
+    const auto expected = sdog::test::read_png(studio.toStdString());
+    const long differ = sdog::test::differing_pixels(sdog::test::read_png(drawn.toStdString()), expected, kLevel);
+    QVERIFY2(differ >= 0 && differ <= kPixels,
+             qPrintable(QString("sdog render differs from the studio's export in %1 pixels").arg(differ)));
+    QVERIFY(sdog::test::differing_pixels(sdog::test::read_png(other.toStdString()), expected, kLevel) > 1000);
+  }
+
   // docs/reference/studio.md lists the shortcut of every action of the window, as Qt writes it.
   void documents_every_shortcut() {
     QFile file(QString(SDOG_DOCS_DIR) + "/reference/studio.md");
@@ -661,6 +724,41 @@ class StudioTest : public QObject {
     QVERIFY(bad.waitForFinished(kWait));
     QCOMPARE(bad.exitCode(), 1);
     QVERIFY(bad.readAllStandardError().contains("/no/such.svg"));
+    QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
+  }
+
+  // sdog-studio --frame and --run: the saved state's screenshot, and bad input refused with one line
+  // naming the file (exit 1) or the options (exit 2), nothing written.
+  void command_line_opens_a_saved_frame() {
+    QTemporaryDir dir;
+    const QString run = saved_run(dir);
+    const QStringList shot = {"--size", "800x500", "--overlay", "dog-residual,handles"};
+    QProcess studio;
+    studio.start(SDOG_STUDIO_EXE, QStringList{"--frame", run + "/frame_0010.vtu", "--screenshot",
+                                              dir.filePath("frame.png")} + shot);
+    QVERIFY(studio.waitForFinished(kWait));
+    QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
+    QCOMPARE(QImage(dir.filePath("frame.png")).size(), QSize(800, 500));
+    studio.start(SDOG_STUDIO_EXE, QStringList{"--run", run, "--screenshot", dir.filePath("last.png")} + shot);
+    QVERIFY(studio.waitForFinished(kWait));
+    QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
+    QVERIFY(QImage(dir.filePath("last.png")) != QImage(dir.filePath("frame.png")));
+
+    const QList<std::pair<QStringList, QString>> bad = {
+        {{"--frame", dir.filePath("none.vtu")}, dir.filePath("none.vtu") + ": no such file"},
+        {{"--run", run, "--iteration", "15"}, "no frame of iteration 15; the saved iterations are 0 to 20 every 10, and 25"},
+        {{"--frame", run + "/frame_0010.vtu", "--res", "25x25"}, "is not a frame of"}};
+    for (const auto& [args, message] : bad) {
+      studio.start(SDOG_STUDIO_EXE, args + QStringList{"--screenshot", dir.filePath("bad.png")});
+      QVERIFY(studio.waitForFinished(kWait));
+      QCOMPARE(studio.exitCode(), 1);
+      const QString err = studio.readAllStandardError();
+      QVERIFY2(err.contains(message) && err.count("sdog-studio:") == 1, qPrintable(err));
+      QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
+    }
+    studio.start(SDOG_STUDIO_EXE, {"--iteration", "10", "--screenshot", dir.filePath("bad.png")});
+    QVERIFY(studio.waitForFinished(kWait));
+    QCOMPARE(studio.exitCode(), 2);
     QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
   }
 

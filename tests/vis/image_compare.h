@@ -52,6 +52,25 @@ struct ImageTolerance {
   double max_error_fraction = 5e-4;
 };
 
+/// Pixels with a channel that differs by more than `level` (0-255) between two images (-1 when
+/// their sizes or channels differ).
+inline long differing_pixels(vtkImageData* a, vtkImageData* b, int level = 0) {
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  const int channels = a->GetNumberOfScalarComponents();
+  if (da[0] != db[0] || da[1] != db[1] || channels != b->GetNumberOfScalarComponents()) return -1;
+  long count = 0;
+  for (int y = 0; y < da[1]; ++y)
+    for (int x = 0; x < da[0]; ++x) {
+      bool same = true;
+      for (int k = 0; k < channels; ++k)
+        same = same && std::abs(a->GetScalarComponentAsDouble(x, y, 0, k) - b->GetScalarComponentAsDouble(x, y, 0, k)) <= level;
+      count += !same;
+    }
+  return count;
+}
+
 /// Returns an empty string when the image matches baselines_dir/NAME.png within the tolerance,
 /// else a message saying where the new image and the difference are kept.
 inline std::string compare_with_baseline(const std::string& image, const std::string& name,

@@ -161,6 +161,12 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
     check_mode_usable(kind, *model);
   });
   if (!built) return false;
+  show_model(std::move(model), path, mode_name, std::nullopt);
+  return true;
+}
+
+void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString& path, const std::string& mode_name,
+                            const std::optional<Workspace>& state) {
   stop_frames();
   stop_worker();
   scene_.reset();
@@ -193,7 +199,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   camera_fitted_ = false;
   start_worker();
   const RunConfig config = config_;
-  post([config, mode_name](SolverWorker& w) { w.open(config, mode_name); });
+  post([config, mode_name, state](SolverWorker& w) { w.open(config, mode_name, state); });
   setWindowTitle(QFileInfo(path).fileName() + " " + resolution_ + " - Scalable DOGs studio");
   status_->setText(QString("%1 at %2: %3 fine vertices in %4 patches, %5; mode %6, scenario %7 (Solver > Step: S, "
                            "Play: Space)")
@@ -207,7 +213,6 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   update_actions();
   show_solver_state();
   render();
-  return true;
 }
 
 bool MainWindow::change_resolution(const QString& resolution) {
@@ -542,22 +547,23 @@ void MainWindow::redo() { post([](SolverWorker& w) { w.redo(); }); }
 
 bool MainWindow::open_workspace(const QString& path) {
   Workspace w;
-  if (!attempt([&] { w = load_workspace(path.toStdString()); })) return false;
-  const RunConfig previous = config_;
-  const QString previous_file = config_file_, previous_pattern = config_pattern_;
-  config_ = w.config;
-  config_file_ = path;
-  config_pattern_ = QString::fromStdString(w.pattern);
-  if (!open_pattern(QString::fromStdString(w.pattern), QString::fromStdString(w.resolution),
-                    QString::fromStdString(w.mode))) {
-    config_ = previous;
-    config_file_ = previous_file;
-    config_pattern_ = previous_pattern;
-    show_solver_state();
+  std::shared_ptr<const DogModel> model;
+  if (!attempt([&] {
+        w = load_workspace(path.toStdString());
+        model = load_model(w.pattern, w.resolution);
+      }))
     return false;
-  }
-  if (!w.camera.is_null()) pending_camera_ = w.camera;
-  post([w](SolverWorker& worker) { worker.restore(w); });
+  return open_state(std::move(model), w, path);
+}
+
+bool MainWindow::open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source) {
+  if (!attempt([&] { check_mode_usable(parse_mode(state.mode, "mode: "), *model); })) return false;
+  const QString pattern = QString::fromStdString(state.pattern);
+  config_ = state.config;
+  config_file_ = source;
+  config_pattern_ = pattern;
+  if (!state.camera.is_null()) pending_camera_ = state.camera;
+  show_model(std::move(model), pattern, state.mode, state);
   return true;
 }
 

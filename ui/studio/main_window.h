@@ -57,6 +57,9 @@ class MainWindow : public QMainWindow {
   /// The same pattern at another resolution (the mode stays if it can run there).
   bool change_resolution(const QString& resolution);
   bool open_workspace(const QString& path);
+  /// A workspace's state on a model built by the caller (sdog-studio --frame: a saved frame on the
+  /// model of its run, meshed with the run's options); `source` names the file it came from.
+  bool open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source);
   /// Saved by the solver thread; workspace_saved() follows.
   bool save_workspace(const QString& path);
   /// The current view rendered offscreen at the given size with the view's camera.
@@ -161,6 +164,10 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  /// Shows `model` (of the pattern at `path`) and starts a session on it in `mode` with the run
+  /// configuration, at `state` when given.
+  void show_model(std::shared_ptr<const DogModel> model, const QString& path, const std::string& mode,
+                  const std::optional<Workspace>& state);
   void build_menus();
   void build_file_menu();
   void build_edit_menu();

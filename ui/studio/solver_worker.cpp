@@ -60,11 +60,16 @@ void SolverWorker::send_snapshot() {
   Q_EMIT snapshot_ready(snap);
 }
 
-void SolverWorker::open(const RunConfig& config, const std::string& mode) {
+void SolverWorker::open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state) {
   pause();
   stop_frames();
   session_.reset();
   session_ = std::make_unique<Session>(*model_, config, parse_mode(mode));
+  if (state) {
+    if (!state->constraints.handles.empty() || !state->constraints.angles.empty())
+      session_->set_constraints(state->constraints);
+    if (state->positions.size() > 0) session_->set_positions(state->positions, state->iteration);
+  }
   send_snapshot();
 }
 
@@ -194,14 +199,6 @@ void SolverWorker::undo() {
 void SolverWorker::redo() {
   session().redo();
   play_on();
-  send_snapshot();
-}
-
-void SolverWorker::restore(const Workspace& w) {
-  Session& s = session();
-  if (mode_name(s.mode()) != w.mode) s.set_mode(parse_mode(w.mode, "workspace: "));
-  s.set_constraints(w.constraints);
-  if (w.positions.size() > 0) s.set_positions(w.positions, w.iteration);
   send_snapshot();
 }
 

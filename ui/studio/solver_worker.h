@@ -45,7 +45,8 @@ class SolverWorker : public QObject {
   void drag_handle(int handle, const Eigen::Vector3d& target, bool first);
 
   // Commands (call them through post()). Each sends a snapshot afterwards.
-  void open(const RunConfig& config, const std::string& mode);
+  /// A new session; with `state` (a workspace, a saved frame) at its constraints and positions.
+  void open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state = std::nullopt);
   /// One iteration. While playing, an iteration that reports the shape converged after the
   /// scenario's end stops the play (stopped_converged()); the next edit of the constraints plays
   /// on. A failed iteration pauses and throws SolverError with what the user can do.
@@ -64,8 +65,6 @@ class SolverWorker : public QObject {
   void fold();
   void undo();
   void redo();
-  /// A loaded workspace: its mode, constraints and positions.
-  void restore(const Workspace& workspace);
   void save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
                       const nlohmann::json& camera);
   /// Frames (.vtu of the fine mesh, every iteration from now on) into `dir`.

@@ -1,5 +1,7 @@
 #include "ui/vis/frame_writer.h"
 
+#include <vtkPointData.h>
+
 #include <cstdio>
 
 #include "geometry/mesh_arrays.h"
@@ -31,7 +33,9 @@ void FrameWriter::on_iteration(const IterationReport& report, const Dofs& x) {
 void FrameWriter::write(int iteration, const Dofs& x) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.vtu", iteration);
-  write_vtu(quad_grid(to_positions(x), model_.fine.F, frame_arrays(model_, problem_, x)), out_.temporary(name));
+  auto grid = quad_grid(to_positions(x), model_.fine.F, frame_arrays(model_, problem_, x));
+  grid->GetPointData()->AddArray(vector_array("rest_position", model_.fine.V));
+  write_vtu(grid, out_.temporary(name));
   frames_.emplace_back(iteration, name);
 }
 

@@ -2,7 +2,8 @@
 // Solver frames for ParaView: frame_NNNN.vtu (the fine mesh in its current state) every K
 // iterations, plus frame_0000 (the flat start) and the last iteration, tied together by
 // frames.pvd (time = iteration). Point arrays: the fine mesh arrays (vertex_type, patch, partner,
-// vertex_class) and dog_residual, bending, position_residual; cell arrays patch and edge_strain.
+// vertex_class), dog_residual, bending, position_residual and rest_position (the flat rest state,
+// 3-vectors: it ties the frame to its model, saved_frames.h); cell arrays patch and edge_strain.
 // Files go into an OutputSet, so a failed run leaves none behind.
 #include <string>
 #include <vector>

@@ -36,14 +36,28 @@ Display* x_display() {
   return display;
 }
 
+bool display_variable_set() {
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
 }  // namespace
 
+std::string display_unavailable() {
+  if (!display_variable_set()) return "no X display (DISPLAY is not set)";
+  try {
+    x_display();
+  } catch (const OutputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 void require_display() {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  if (!display_variable_set())
     throw OutputError(
         "rendering needs an X display (VTK 9.1 on Debian renders through X11); run the command "
-        "under xvfb-run, e.g. `xvfb-run -a sdog render ...` or `xvfb-run -a sdog compare ...`");
+        "under xvfb-run, e.g. `xvfb-run -a sdog render ...`");
   x_display();
 }
 

@@ -12,6 +12,10 @@ struct ImageSize {
   int width = 1600, height = 800;
 };
 
+/// Empty when there is an X display to render with; otherwise why there is none ("no X display
+/// (DISPLAY is not set)", or the failed connection), for commands whose pictures are optional.
+std::string display_unavailable();
+
 /// Throws OutputError (saying to use xvfb-run) when there is no X display to render with or no
 /// connection to it; commands that render at the end of a long computation call it before the
 /// work.

@@ -10,8 +10,10 @@
 #include <vtkPoints.h>
 #include <vtkPolyLine.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <filesystem>
 #include <mutex>
 
 #include "base/errors.h"
@@ -162,6 +164,32 @@ vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
   poly->SetLines(cells);
   for (const auto& a : cell_arrays) poly->GetCellData()->AddArray(to_vtk(a));
   return poly;
+}
+
+vtkSmartPointer<vtkDataArray> vector_array(const std::string& name, const Eigen::MatrixX3d& rows) {
+  auto out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->SetName(name.c_str());
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(rows.rows());
+  for (Eigen::Index i = 0; i < rows.rows(); ++i) out->SetTuple3(i, rows(i, 0), rows(i, 1), rows(i, 2));
+  return out;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(path + (std::filesystem::exists(path) ? ": not a file" : ": no such file"));
+  take_vtk_error();  // installs the capturing output window and forgets older messages
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(path.c_str());
+  // CanReadFile first: on a file that is not VTK XML at all, Update() only warns.
+  const bool readable = reader->CanReadFile(path.c_str()) != 0;
+  if (readable) reader->Update();
+  const std::string why = one_line(take_vtk_error());
+  if (!readable || reader->GetErrorCode() != 0 || !why.empty() || !reader->GetOutput())
+    throw InputError(path + ": not a readable VTK unstructured grid (.vtu) file" + (why.empty() ? "" : " (" + why + ")"));
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->ShallowCopy(reader->GetOutput());  // outlives the reader
+  return grid;
 }
 
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path) {

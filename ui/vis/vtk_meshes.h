@@ -1,5 +1,6 @@
 #pragma once
 // DOG meshes and curves as VTK data sets with named arrays, and VTK XML files.
+#include <vtkDataArray.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -32,9 +33,16 @@ vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
 /// Replaces (or adds) the double array `name` of the attributes, reusing its storage.
 void set_double_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values);
 
+/// A 3-component array with one tuple per row of `rows` (a point array of vectors).
+vtkSmartPointer<vtkDataArray> vector_array(const std::string& name, const Eigen::MatrixX3d& rows);
+
 /// VTK XML writers; throw OutputError with the path and VTK's reason on failure.
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path);
 void write_vtp(vtkPolyData* poly, const std::string& path);
+
+/// Reads a VTK XML unstructured grid (.vtu); throws InputError naming the path when the file is
+/// missing or not one (with VTK's reason).
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& path);
 
 /// Collects VTK's own error messages instead of letting VTK print them; returns and clears the
 /// last one. Installed on first use.
