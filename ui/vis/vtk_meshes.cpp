@@ -79,10 +79,7 @@ void write_xml(Data* data, const std::string& path) {
   writer->SetInputData(data);
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-    std::string why = one_line(take_vtk_error());
-    throw OutputError(path + ": cannot write the VTK file" + (why.empty() ? "" : " (" + why + ")"));
-  }
+  check_written(writer->Write() == 1 && writer->GetErrorCode() == 0, path, "the VTK file");
 }
 
 }  // namespace
@@ -149,6 +146,12 @@ vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
   poly->SetLines(cells);
   for (const auto& a : cell_arrays) poly->GetCellData()->AddArray(to_vtk(a));
   return poly;
+}
+
+void check_written(bool written, const std::string& path, const std::string& what) {
+  if (written) return;
+  const std::string why = one_line(take_vtk_error());
+  throw OutputError(path + ": cannot write " + what + (why.empty() ? "" : " (" + why + ")"));
 }
 
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path) {

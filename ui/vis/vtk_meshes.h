@@ -32,6 +32,9 @@ vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
 /// VTK XML writers; throw OutputError with the path and VTK's reason on failure.
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path);
 void write_vtp(vtkPolyData* poly, const std::string& path);
+/// After a VTK writer ran: unless it succeeded (`written`), throws OutputError "PATH: cannot write
+/// WHAT (VTK's reason)".
+void check_written(bool written, const std::string& path, const std::string& what);
 
 /// Collects VTK's own error messages instead of letting VTK print them; returns and clears the
 /// last one. Installed on first use.
