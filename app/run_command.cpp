@@ -1,4 +1,5 @@
-// sdog run: a deformation run (scenario, mode) with its run log, run.json and frames.
+// sdog run: a deformation run (scenario, mode) with its run log, run.json, frames and the trimmed
+// surface of each frame (VTK, and OBJ / PLY with --export).
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -23,6 +24,7 @@
 #include "solver/run/run_setup.h"
 #include "solver/run/run_totals.h"
 #include "ui/vis/frame_writer.h"
+#include "ui/vis/surface_series.h"
 
 namespace sdog::cli {
 namespace {
@@ -35,6 +37,8 @@ struct RunArgs {
   std::string config;
   std::string preset;
   std::string out;
+  std::string exports;  // --export obj,ply
+  std::string export_colour = "patches";
   double angle = 90;
   int iterations = 250;
   int hold = 50;
@@ -48,6 +52,7 @@ struct RunArgs {
   CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
   double rho = 1, gamma = 1;  // the ADMM modes
   CLI::Option *rho_opt = nullptr, *gamma_opt = nullptr;
+  CLI::Option *export_opt = nullptr, *export_colour_opt = nullptr;
 };
 
 std::atomic<bool> g_cancel{false};
@@ -85,6 +90,32 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
     out.push_back({k, parse_mode(t.substr(colon + 1), "--switch " + t + ": ")});
   }
   return out;
+}
+
+// --export and --export-colour; UsageError before any work.
+vis::SurfaceExport surface_export(const RunArgs& a) {
+  vis::SurfaceExport exports;
+  if (a.export_opt->count()) {
+    exports.formats = vis::parse_surface_formats(a.exports, "--export: ");
+    if (a.out.empty()) throw UsageError("--export writes into the --out directory: add --out DIR");
+  }
+  exports.colour = vis::parse_colour_layer(a.export_colour, "--export-colour: ");
+  const bool ply = std::find(exports.formats.begin(), exports.formats.end(), vis::SurfaceFormat::Ply) !=
+                   exports.formats.end();
+  if (a.export_colour_opt->count() && !ply)
+    throw UsageError("--export-colour colours the PLY files: add --export ply");
+  return exports;
+}
+
+// "surface.obj and 4 surface_NNNN.obj, ..." for the formats written.
+std::string export_files_text(const vis::SurfaceSeries& surfaces, bool with_frames) {
+  std::string text;
+  for (vis::SurfaceFormat f : surfaces.exports().formats) {
+    const std::string ext = vis::format_extension(f);
+    text += ", surface." + ext;
+    if (with_frames) text += " and " + std::to_string(surfaces.frame_count()) + " surface_NNNN." + ext;
+  }
+  return text;
 }
 
 RunConfig run_config(const RunArgs& a) {
@@ -159,6 +190,7 @@ void run(const RunArgs& a) {
   const ModeKind mode = parse_mode(a.mode, "--mode: ");
   set_thread_count(a.threads);
   const RunConfig config = run_config(a);
+  const vis::SurfaceExport exports = surface_export(a);
   // Fail on an unusable output directory before the work, not after it.
   std::unique_ptr<OutputSet> out;
   if (!a.out.empty()) out = std::make_unique<OutputSet>(a.out);
@@ -174,8 +206,12 @@ void run(const RunArgs& a) {
   ProgressBar progress(total, !a.quiet);
   std::vector<RunObserver*> observers{&csv, &patches, &totals, &progress};
   std::unique_ptr<vis::FrameWriter> frames;
+  std::unique_ptr<vis::SurfaceSeries> surfaces;
+  if (out && (a.frames_every > 0 || !exports.formats.empty()))
+    surfaces = std::make_unique<vis::SurfaceSeries>(model.fine, *out, exports);
   if (out && a.frames_every > 0) {
     frames = std::make_unique<vis::FrameWriter>(model, setup.problem(), *out, a.frames_every, total);
+    frames->add_surfaces(*surfaces);
     frames->write_start(setup.positions());
     observers.push_back(frames.get());
   }
@@ -194,6 +230,11 @@ void run(const RunArgs& a) {
     out->write_text("run.json", run_json(a, setup, summary, totals).dump(2) + "\n");
     out->write_text("creases.csv", creases_csv(model.fine, setup.scenario(), setup.positions()));
     if (frames) frames->finish();
+    if (surfaces) {
+      surfaces->write_final(to_positions(setup.positions()),
+                            vis::frame_arrays(model, setup.problem(), setup.positions()));
+      surfaces->finish();
+    }
     files = out->commit();
   }
   if (!completed) {
@@ -207,8 +248,10 @@ void run(const RunArgs& a) {
   report_success(a, setup, summary, totals, seconds_since(start));
   if (out)
     std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ") << "run.json, creases.csv"
-              << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu" : "")
-              << "\n";
+              << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) + " frame_NNNN.vtu, surface.pvd and " +
+                               std::to_string(surfaces->frame_count()) + " surface_NNNN.vtp"
+                         : "")
+              << (surfaces ? export_files_text(*surfaces, frames != nullptr) : "") << "\n";
 }
 
 }  // namespace
@@ -243,10 +286,18 @@ void register_run_command(CLI::App& app, Runner& runner) {
                   "JSON file with constraints, iteration counts, weights and solver options (command-line "
                   "options win); see docs/reference/configuration.md");
   add_preset_option(*cmd, a->preset);
-  cmd->add_option("--out", a->out, "directory for run.csv, run.json, creases.csv (the fold angle reached at each crease point), frames.pvd and frame_NNNN.vtu (and patches.csv, the per-patch timeline, in the patch modes)");
+  cmd->add_option("--out", a->out, "directory for run.csv, run.json, creases.csv (the fold angle reached at each crease point), frames.pvd and frame_NNNN.vtu, surface.pvd and surface_NNNN.vtp (the trimmed surface of each frame), and in the patch modes patches.csv (the per-patch timeline)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
+  a->export_opt = cmd->add_option(
+      "--export", a->exports,
+      "FORMATS: obj, ply or obj,ply: also write the trimmed surface of the final state (surface.obj, surface.ply) and "
+      "of every frame (surface_NNNN.obj, ...) into --out, with normals, in sheet units");
+  a->export_colour_opt = cmd->add_option("--export-colour", a->export_colour,
+                                         "the vertex colours of the PLY files: the colours of this overlay (" +
+                                             vis::known_colour_layers() + ")")
+                             ->capture_default_str();
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core); results do not depend on this (the standard factorisation uses SDOG_BLAS_THREADS, default 2, BLAS threads; patch factorisations one each)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

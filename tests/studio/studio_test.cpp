@@ -1,8 +1,8 @@
 // Smoke tests of the studio's main window (run under xvfb-run): a pattern opened, every overlay
 // switched, the solver stepped and played on its thread, handles and angle constraints edited
 // and undone, a vertex inspected, a crease picked, reassigned, folded and undone, a screenshot, a
-// frame series and a workspace written and read back, a run configuration dropped for another
-// pattern, a frame saved by sdog run shown as sdog render draws it, and the command line's
+// surface, a frame series and a workspace written and read back, a run configuration dropped for
+// another pattern, a frame saved by sdog run shown as sdog render draws it, and the command line's
 // --screenshot, also of a saved frame.
 #include <QAction>
 #include <QApplication>
@@ -28,6 +28,9 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
 
 #include "app/blas_kernels.h"
@@ -39,7 +42,9 @@
 #include "ui/studio/screen_picking.h"
 #include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
+#include "ui/vis/frame_writer.h"
 #include "ui/vis/mesh_view.h"
+#include "ui/vis/surface_colours.h"
 
 using sdog::studio::MainWindow;
 namespace vis = sdog::vis;
@@ -608,6 +613,37 @@ class StudioTest : public QObject {
     QVERIFY(errors_.isEmpty());
     QVERIFY(!window_->export_screenshot("/proc/no/such/dir/shot.png", {320, 200}, false));
     QCOMPARE(errors_.size(), 1);
+  }
+
+  // File > Export surface: the extension picks the format, .obj is added to a name without one;
+  // the PLY is coloured like the overlay that is on; the status bar names the file.
+  void exports_the_surface() {
+    open();
+    window_->step(2);
+    QTRY_COMPARE_WITH_TIMEOUT(iteration(), 2, kWait);
+    QTemporaryDir dir;
+    QVERIFY(window_->export_surface(dir.filePath("shape")));
+    QVERIFY(QFileInfo(dir.filePath("shape.obj")).size() > 1000);
+    QVERIFY(window_->status_text().contains(dir.filePath("shape.obj")));
+    window_->set_layer(vis::Layer::DogResidual, true);
+    QVERIFY(window_->export_surface(dir.filePath("shape.PLY")));
+    QVERIFY(window_->status_text().contains(dir.filePath("shape.PLY")));
+    auto reader = vtkSmartPointer<vtkPLYReader>::New();
+    reader->SetFileName(dir.filePath("shape.PLY").toStdString().c_str());
+    reader->Update();
+    vtkDataArray* rgb = reader->GetOutput()->GetPointData()->GetArray("RGB");
+    QVERIFY(rgb != nullptr);
+    const sdog::DogModel& m = *window_->model();
+    const sdog::TrimmedSurface surface = sdog::trimmed_surface(m.fine, window_->snapshot()->state.fine);
+    const auto colours =
+        vis::surface_colours(vis::Layer::DogResidual, surface, vis::frame_arrays(m, window_->snapshot()->state.fields));
+    QCOMPARE(rgb->GetNumberOfTuples(), static_cast<vtkIdType>(colours.size()));
+    for (size_t v = 0; v < colours.size(); ++v)
+      for (int k = 0; k < 3; ++k) QCOMPARE(rgb->GetComponent(static_cast<vtkIdType>(v), k), double(colours[v][k]));
+    QVERIFY(errors_.isEmpty());
+    QVERIFY(!window_->export_surface("/proc/no/such/dir/shape.obj"));
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY(errors_[0].contains("/proc/no/such/dir"));
   }
 
   void records_a_frame_series() {

@@ -64,6 +64,10 @@ class MainWindow : public QMainWindow {
   bool save_workspace(const QString& path);
   /// The current view rendered offscreen at the given size with the view's camera.
   bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent);
+  /// The trimmed surface of the current state in sheet units (vis/surface_files.h): OBJ or PLY as
+  /// the path's extension says (.obj appended when it names neither); a PLY is coloured by the
+  /// colour overlay that is on (patches when none is). The status bar names the file written.
+  bool export_surface(const QString& path);
   /// From now on every shown state is written to `dir` as frame_NNNN.png, and every iteration as
   /// frame_NNNN.vtu; stop_frames() writes frames.pvd and gives the files their final names.
   bool start_frames(const QString& dir);

@@ -1,4 +1,4 @@
-// MainWindow: pictures, frame series and the mouse in the 3D view.
+// MainWindow: pictures, surfaces, frame series and the mouse in the 3D view.
 #include <QAction>
 #include <QFileInfo>
 #include <QPixmap>
@@ -15,8 +15,11 @@
 #include "ui/studio/screen_picking.h"
 #include "ui/studio/selection_marks.h"
 #include "ui/studio/solver_worker.h"
+#include "geometry/trimmed_surface.h"
 #include "ui/vis/camera.h"
+#include "ui/vis/frame_writer.h"
 #include "ui/vis/picture.h"
+#include "ui/vis/surface_files.h"
 
 namespace sdog::studio {
 namespace {
@@ -47,6 +50,25 @@ bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& si
     write_file(path.toStdString(),
                [&](const std::string& tmp) { vis::render_picture(*model_, snapshot_->state, options, tmp); });
   });
+}
+
+bool MainWindow::export_surface(const QString& path) {
+  if (!snapshot_) {
+    report_error("Nothing to export yet: open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  const std::string file = vis::with_surface_extension(path.toStdString(), vis::SurfaceFormat::Obj);
+  const vis::SurfaceFormat format = vis::format_of_path(file).value_or(vis::SurfaceFormat::Obj);
+  const vis::Layer colour = scene_->colour_layer().value_or(vis::Layer::Patches);
+  const bool written = attempt([&] {
+    const TrimmedSurface surface = trimmed_surface(model_->fine, snapshot_->state.fine);
+    const MeshArrays arrays = vis::frame_arrays(*model_, snapshot_->state.fields);
+    write_file(file, [&](const std::string& tmp) {
+      vis::write_surface_file(format, surface, model_->fine, colour, arrays, tmp);
+    });
+  });
+  if (written) status_->setText("trimmed surface written to " + QString::fromStdString(file));
+  return written;
 }
 
 bool MainWindow::save_window_image(const QString& path) {

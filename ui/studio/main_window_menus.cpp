@@ -15,6 +15,7 @@
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
+#include "ui/vis/surface_files.h"
 
 namespace sdog::studio {
 namespace {
@@ -98,6 +99,18 @@ void MainWindow::build_file_menu() {
             const bool transparent =
                 QMessageBox::question(this, "Background", "Transparent background?") == QMessageBox::Yes;
             export_screenshot(path, image, transparent);
+          });
+  connect(add_action(m, "Export sur&face...", QKeySequence("Ctrl+Shift+E"),
+                     "Write the trimmed surface of the current state as OBJ or PLY (sheet units, normals; PLY "
+                     "coloured by the colour overlay that is on)"),
+          &QAction::triggered, this, [this] {
+            QString filter;
+            const QString path = QFileDialog::getSaveFileName(this, "Export surface", {},
+                                                              "OBJ files (*.obj);;PLY files (*.ply)", &filter);
+            if (path.isEmpty()) return;
+            // Without an extension of its own the path takes the chosen filter's.
+            const auto format = filter.contains("*.ply") ? vis::SurfaceFormat::Ply : vis::SurfaceFormat::Obj;
+            export_surface(QString::fromStdString(vis::with_surface_extension(path.toStdString(), format)));
           });
   frames_action_ = add_action(m, "Record &frames...", QKeySequence("Ctrl+Shift+F"),
                               "Write every iteration shown as PNG and .vtu (with frames.pvd for ParaView) into a "

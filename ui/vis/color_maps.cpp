@@ -39,6 +39,8 @@ vtkSmartPointer<vtkLookupTable> sequential_lut(double low, double high) {
                         low, high);
 }
 
+vtkSmartPointer<vtkLookupTable> dog_residual_lut() { return sequential_lut(-10, -2); }
+
 vtkSmartPointer<vtkLookupTable> heat_lut(double low, double high) {
   return lut_from_stops({{0.0, {1.00, 0.82, 0.55}}, {0.5, {0.93, 0.42, 0.14}}, {1.0, {0.55, 0.00, 0.05}}}, low,
                         high);

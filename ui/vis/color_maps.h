@@ -13,6 +13,10 @@ namespace sdog::vis {
 /// over [low, high]; NaN grey. The surface scalar layers (dog-residual, bending, edge-strain).
 vtkSmartPointer<vtkLookupTable> sequential_lut(double low, double high);
 
+/// The dog-residual layer: sequential_lut over the log10 of the residual from -10 to -2 (1e-10, the
+/// floor of log10_residuals in scene_state.h, to 1e-2).
+vtkSmartPointer<vtkLookupTable> dog_residual_lut();
+
 /// 256 colours from pale orange (low) to dark red (high) over [low, high]: the stitch-gap
 /// glyphs, told apart from a surface layer's colours.
 vtkSmartPointer<vtkLookupTable> heat_lut(double low, double high);

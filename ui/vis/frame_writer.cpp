@@ -11,8 +11,11 @@
 namespace sdog::vis {
 
 MeshArrays frame_arrays(const DogModel& model, const DogProblem& problem, const Dofs& x) {
+  return frame_arrays(model, fields(problem, x));
+}
+
+MeshArrays frame_arrays(const DogModel& model, Fields f) {
   MeshArrays arrays = fine_mesh_arrays(model);
-  Fields f = fields(problem, x);
   arrays.point.push_back({"dog_residual", std::move(f.dog_residual), false});
   arrays.point.push_back({"bending", std::move(f.bending), false});
   arrays.point.push_back({"position_residual", std::move(f.position_residual), false});
@@ -33,20 +36,15 @@ void FrameWriter::on_iteration(const IterationReport& report, const Dofs& x) {
 void FrameWriter::write(int iteration, const Dofs& x) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.vtu", iteration);
-  auto grid = quad_grid(to_positions(x), model_.fine.F, frame_arrays(model_, problem_, x));
+  const Eigen::MatrixX3d X = to_positions(x);
+  const MeshArrays arrays = frame_arrays(model_, problem_, x);
+  auto grid = quad_grid(X, model_.fine.F, arrays);
   grid->GetPointData()->AddArray(vector_array("rest_position", model_.fine.V));
   write_vtu(grid, out_.temporary(name));
   frames_.emplace_back(iteration, name);
+  if (surfaces_) surfaces_->write_frame(iteration, X, arrays);
 }
 
-void FrameWriter::finish() {
-  std::string pvd =
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <Collection>\n";
-  for (const auto& [iteration, name] : frames_)
-    pvd += "    <DataSet timestep=\"" + std::to_string(iteration) + "\" group=\"\" part=\"0\" file=\"" + name + "\"/>\n";
-  pvd += "  </Collection>\n</VTKFile>\n";
-  out_.write_text("frames.pvd", pvd);
-}
+void FrameWriter::finish() { out_.write_text("frames.pvd", pvd_collection(frames_)); }
 
 }  // namespace sdog::vis

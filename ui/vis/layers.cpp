@@ -46,6 +46,13 @@ const LayerInfo kLayers[] = {
 
 const LayerInfo& info(Layer layer) { return kLayers[static_cast<int>(layer)]; }
 
+std::string layer_names(bool colour_only) {
+  std::string out;
+  for (const auto& l : kLayers)
+    if (l.colour || !colour_only) out += (out.empty() ? "" : ", ") + std::string(l.name);
+  return out;
+}
+
 }  // namespace
 
 const std::vector<Layer>& all_layers() {
@@ -61,10 +68,13 @@ const char* layer_name(Layer layer) { return info(layer).name; }
 const char* layer_description(Layer layer) { return info(layer).description; }
 bool is_colour_layer(Layer layer) { return info(layer).colour; }
 
-std::string known_layers() {
-  std::string out;
-  for (const auto& l : kLayers) out += (out.empty() ? "" : ", ") + std::string(l.name);
-  return out;
+std::string known_layers() { return layer_names(false); }
+std::string known_colour_layers() { return layer_names(true); }
+
+Layer parse_colour_layer(const std::string& name, const std::string& context) {
+  for (const auto& l : kLayers)
+    if (l.colour && name == l.name) return l.layer;
+  throw UsageError(context + "'" + name + "' is not a colour layer (known: " + known_colour_layers() + ")");
 }
 
 std::vector<Layer> parse_layers(const std::string& text) {

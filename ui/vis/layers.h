@@ -34,6 +34,12 @@ std::string known_layers();
 /// bending.
 bool is_colour_layer(Layer layer);
 
+/// The names of the colour layers, comma separated.
+std::string known_colour_layers();
+/// Parses the name of one colour layer ("bending"). Throws UsageError, `context` followed by the
+/// bad name and the colour layers.
+Layer parse_colour_layer(const std::string& name, const std::string& context = "");
+
 /// Parses "dog-residual,handles" (comma separated, no duplicates, at most one colour layer).
 /// Throws UsageError naming the bad name and the known ones.
 std::vector<Layer> parse_layers(const std::string& text);

@@ -85,7 +85,7 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   rgb->SetName("vertex_type_color");
   rgb->SetNumberOfComponents(3);
   for (int v = 0; v < mesh.vertex_count(); ++v) {
-    const Rgb c = types ? vertex_type_color((*types)[v]) : Rgb{0.4, 0.4, 0.4};
+    const Rgb c = types ? vertex_type_color((*types)[v]) : kUntypedVertexColor;
     rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
   }
   vertices_poly_->GetPointData()->SetScalars(rgb);

@@ -22,6 +22,8 @@ inline Rgb vertex_type_color(VertexType t) {
   }
   return {0, 0, 0};
 }
+/// Vertices of a mesh without a fine/coarse map (no types).
+inline constexpr Rgb kUntypedVertexColor{0.4, 0.4, 0.4};
 inline constexpr Rgb kCreasePointColor{1.0, 0.45, 0.75};  // pink
 /// Crease lines by assignment (crease_pattern.h): mountain red, valley blue, unassigned grey,
 /// flat light grey (a crease that stays flat hardly matters to the shape).

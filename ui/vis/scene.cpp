@@ -28,7 +28,6 @@
 namespace sdog::vis {
 namespace {
 
-constexpr double kLogResidualLow = -10, kLogResidualHigh = -2;  // log10 of 1e-10 and 1e-2
 constexpr double kSideBySideShift = 1.12;                      // sheet widths
 constexpr double kPi = 3.14159265358979323846;
 
@@ -108,7 +107,7 @@ struct Scene::Overlays {
   vtkSmartPointer<vtkActor> target_actor = flat_actor(target_points, kTargetColor);
   vtkSmartPointer<vtkActor> angle_actor = flat_actor(angle_sites, kAngleSiteColor);
 
-  vtkSmartPointer<vtkLookupTable> residual_lut = sequential_lut(kLogResidualLow, kLogResidualHigh);
+  vtkSmartPointer<vtkLookupTable> residual_lut = dog_residual_lut();
   vtkSmartPointer<vtkLookupTable> bending_lut = sequential_lut(0, 1);
   vtkSmartPointer<vtkLookupTable> strain_lut = sequential_lut(0, 1);
   vtkSmartPointer<vtkLookupTable> patch_lut;
@@ -197,7 +196,7 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
              {"X: in a coarse quad", vertex_type_color(VertexType::X)},
              {"coarse-only", vertex_type_color(VertexType::CoarseOnly)}};
   else
-    types = {{"vertex (no coarse mesh)", {0.4, 0.4, 0.4}}};
+    types = {{"vertex (no coarse mesh)", kUntypedVertexColor}};
   types.push_back({"crease point", kCreasePointColor});
   std::vector<LegendEntry> patches;
   for (int p = 0; p < model.fine.patch_count(); ++p) patches.push_back({"patch " + std::to_string(p), patch_color(p)});

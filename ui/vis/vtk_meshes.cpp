@@ -81,10 +81,7 @@ void write_xml(Data* data, const std::string& path) {
   writer->SetInputData(data);
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-    std::string why = one_line(take_vtk_error());
-    throw OutputError(path + ": cannot write the VTK file" + (why.empty() ? "" : " (" + why + ")"));
-  }
+  check_written(writer->Write() == 1 && writer->GetErrorCode() == 0, path, "the VTK file");
 }
 
 }  // namespace
@@ -190,6 +187,12 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& path) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->ShallowCopy(reader->GetOutput());  // outlives the reader
   return grid;
+}
+
+void check_written(bool written, const std::string& path, const std::string& what) {
+  if (written) return;
+  const std::string why = one_line(take_vtk_error());
+  throw OutputError(path + ": cannot write " + what + (why.empty() ? "" : " (" + why + ")"));
 }
 
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path) {

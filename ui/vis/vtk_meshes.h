@@ -39,6 +39,9 @@ vtkSmartPointer<vtkDataArray> vector_array(const std::string& name, const Eigen:
 /// VTK XML writers; throw OutputError with the path and VTK's reason on failure.
 void write_vtu(vtkUnstructuredGrid* grid, const std::string& path);
 void write_vtp(vtkPolyData* poly, const std::string& path);
+/// After a VTK writer ran: unless it succeeded (`written`), throws OutputError "PATH: cannot write
+/// WHAT (VTK's reason)".
+void check_written(bool written, const std::string& path, const std::string& what);
 
 /// Reads a VTK XML unstructured grid (.vtu); throws InputError naming the path when the file is
 /// missing or not one (with VTK's reason).

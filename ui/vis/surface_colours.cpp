@@ -1,0 +1,108 @@
+#include "ui/vis/surface_colours.h"
+
+#include <vtkLookupTable.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/fine_coarse_map.h"
+#include "ui/vis/color_maps.h"
+#include "ui/vis/palette.h"
+#include "ui/vis/scene_state.h"
+
+namespace sdog::vis {
+namespace {
+
+Rgb8 bytes(const Rgb& c) {
+  return {static_cast<unsigned char>(std::lround(255 * c[0])),
+          static_cast<unsigned char>(std::lround(255 * c[1])),
+          static_cast<unsigned char>(std::lround(255 * c[2]))};
+}
+
+const NamedArray* find(const std::vector<NamedArray>& arrays, const std::string& name) {
+  for (const auto& a : arrays)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+const NamedArray& require(const std::vector<NamedArray>& arrays, const std::string& name) {
+  const NamedArray* a = find(arrays, name);
+  if (!a) throw std::invalid_argument("surface colours: the mesh has no array '" + name + "'");
+  return *a;
+}
+
+// The values of one point array of the mesh at the surface's vertices.
+std::vector<double> at_vertices(const TrimmedSurface& surface, NamedArray mesh_array) {
+  MeshArrays one;
+  one.point.push_back(std::move(mesh_array));
+  return trimmed_arrays(surface, one).point.front().values;
+}
+
+// Per surface vertex the mean of a quad array over the vertex's triangles.
+std::vector<double> cell_means_at_vertices(const TrimmedSurface& surface,
+                                           const std::vector<double>& quad_values) {
+  std::vector<double> sum(static_cast<size_t>(surface.vertex_count()), 0.0), count(sum.size(), 0.0);
+  for (int t = 0; t < surface.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = static_cast<size_t>(surface.T(t, k));
+      sum[v] += quad_values[static_cast<size_t>(surface.triangle_quad[static_cast<size_t>(t)])];
+      count[v] += 1;
+    }
+  for (size_t v = 0; v < sum.size(); ++v) sum[v] = count[v] > 0 ? sum[v] / count[v] : 0.0;
+  return sum;
+}
+
+std::vector<Rgb8> mapped(vtkLookupTable* lut, const std::vector<double>& values) {
+  std::vector<Rgb8> out;
+  out.reserve(values.size());
+  for (double v : values) {
+    const unsigned char* rgba = lut->MapValue(v);
+    out.push_back({rgba[0], rgba[1], rgba[2]});
+  }
+  return out;
+}
+
+// The renderer's colours of a linear layer: from 0 to the 95th percentile of the mesh's values.
+std::vector<Rgb8> robust_colours(const std::vector<double>& mesh_values,
+                                 const std::vector<double>& at_vertices) {
+  const auto range = robust_range(mesh_values);
+  return mapped(sequential_lut(range[0], range[1]), at_vertices);
+}
+
+}  // namespace
+
+std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
+                                  const MeshArrays& mesh_arrays) {
+  const auto n = static_cast<size_t>(surface.vertex_count());
+  std::vector<Rgb8> out;
+  switch (layer) {
+    case Layer::VertexTypes: {
+      const NamedArray* types = find(mesh_arrays.point, "vertex_type");
+      if (!types) return std::vector<Rgb8>(n, bytes(kUntypedVertexColor));
+      for (double type : at_vertices(surface, *types))
+        out.push_back(bytes(vertex_type_color(static_cast<VertexType>(std::lround(type)))));
+      return out;
+    }
+    case Layer::Patches:
+      for (int patch : surface.vertex_patch) out.push_back(bytes(patch_color(patch)));
+      return out;
+    case Layer::DogResidual: {
+      const NamedArray& residual = require(mesh_arrays.point, "dog_residual");
+      return mapped(dog_residual_lut(),
+                    at_vertices(surface, {"", log10_residuals(residual.values), false}));
+    }
+    case Layer::Bending: {
+      const NamedArray& bending = require(mesh_arrays.point, "bending");
+      return robust_colours(bending.values, at_vertices(surface, bending));
+    }
+    case Layer::EdgeStrain: {
+      const NamedArray& strain = require(mesh_arrays.cell, "edge_strain");
+      return robust_colours(strain.values, cell_means_at_vertices(surface, strain.values));
+    }
+    default:
+      throw std::invalid_argument(std::string("surface colours: '") + layer_name(layer) +
+                                  "' is not a colour layer");
+  }
+}
+
+}  // namespace sdog::vis
