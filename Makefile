@@ -72,6 +72,10 @@ previews: build
 	  $(XVFB) $(SDOG) render $$f --size 1200x600 --out docs/datasets/$$n.png || exit 1; done
 	$(XVFB) $(SDOG) render datasets/curved_pleats.svg --res 41x41 --scenario fold --iters 40 --view 3d \
 	  --overlay patches,crease-curves --size 1200x700 --out docs/curved_pleats_folded.png
+	$(SDOG) run datasets/curved_pleats.svg --res 41x41 --scenario fold --angle 60 --iters 40 --hold 20 \
+	  --out out/previews/pleats --export obj
+	$(XVFB) $(SDOG) render --run out/previews/pleats --view 3d --style paper --size 1800x1050 \
+	  --out docs/curved_pleats_paper.png
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 21x21 --size 1600x800 --out docs/vertex_types.png
 	$(XVFB) $(SDOG) render $(DEMO_PATTERN) --res 41x41 --iters 60 --overlay dog-residual,handles,crease-curves --view 3d --size 1600x900 --out docs/dog_residual.png
 	$(XVFB) $(BUILD)/app/sdog-studio --screenshot docs/studio_vertex_types.png $(DEMO_PATTERN) --res 21x21 \
