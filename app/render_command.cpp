@@ -204,7 +204,7 @@ void register_render_command(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"standard", "paper"}))
       ->capture_default_str();
   cmd->add_option("--effects", args->effects,
-                  "paper style: comma-separated render effects, ambient-occlusion and/or shadows, or none")
+                  "paper style: the render effect, ambient-occlusion (darkens the insides of folds), shadows (hard shadows of the key light) or none")
       ->capture_default_str();
   cmd->callback([args, &run]() { run = [args]() { render(*args); }; });
 }

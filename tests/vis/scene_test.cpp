@@ -13,6 +13,7 @@
 #include <vtkSmartPointer.h>
 
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "base/errors.h"
@@ -249,8 +250,26 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
   scene.set_layer(vis::Layer::FullCells, true);
   EXPECT_EQ(visible_surfaces(), 10);  // the quads alone
   scene.set_layer(vis::Layer::FullCells, false);
+  auto visible_lines = [&]() {  // visible actors drawing line cells: each quad edge once
+    vtkIdType n = 0;
+    vtkActorCollection* actors = renderer->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* a = actors->GetNextActor())
+      if (a->GetVisibility() && a->GetMapper())
+        if (auto* poly = vtkPolyData::SafeDownCast(a->GetMapper()->GetInput())) n += poly->GetNumberOfLines();
+    return n;
+  };
+  const vtkIdType lines_before = visible_lines();
   scene.set_layer(vis::Layer::Wireframe, true);
-  EXPECT_EQ(visible_surfaces(), 11);  // the trimmed surface with the quad edges over it
+  EXPECT_EQ(visible_surfaces(), 1);  // still the trimmed surface alone, with the quad edges as lines over it
+  // The fine quads' edges, each once.
+  std::set<std::pair<int, int>> edges;
+  for (int q = 0; q < m.fine.quad_count(); ++q)
+    for (int k = 0; k < 4; ++k) {
+      const int a = m.fine.F(q, k), b = m.fine.F(q, (k + 1) % 4);
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  EXPECT_EQ(visible_lines() - lines_before, static_cast<vtkIdType>(edges.size()));
 }
 
 TEST_F(SceneTest, UpdateKeepsTheActorsAndMovesThePoints) {

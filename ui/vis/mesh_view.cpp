@@ -8,7 +8,9 @@
 #include <vtkProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "ui/vis/palette.h"
 #include "ui/vis/vtk_meshes.h"
@@ -92,6 +94,26 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   vertex_actor_ = flat_actor(vertices_poly_, {0.4, 0.4, 0.4});
   vertex_actor_->GetProperty()->RenderPointsAsSpheresOn();
 
+  // The quad edges over the trimmed surface: each edge once, on the grid's points.
+  {
+    std::set<std::pair<vtkIdType, vtkIdType>> edges;
+    for (int q = 0; q < mesh.quad_count(); ++q)
+      for (int k = 0; k < 4; ++k) {
+        const vtkIdType a = mesh.F(q, k), b = mesh.F(q, (k + 1) % 4);
+        edges.insert({std::min(a, b), std::max(a, b)});
+      }
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    lines->AllocateExact(static_cast<vtkIdType>(edges.size()), 2 * static_cast<vtkIdType>(edges.size()));
+    for (const auto& [a, b] : edges) {
+      const vtkIdType ids[2] = {a, b};
+      lines->InsertNextCell(2, ids);
+    }
+    quad_edges_ = vtkSmartPointer<vtkPolyData>::New();
+    quad_edges_->SetPoints(points_);
+    quad_edges_->SetLines(lines);
+    quad_edge_actor_ = flat_actor(quad_edges_, kEdgeColor);
+  }
+
   // Crease lines and crease points share the crease points' coordinates.
   crease_point_coords_ = vtkSmartPointer<vtkPoints>::New();
   crease_point_coords_->SetDataTypeToDouble();
@@ -126,7 +148,7 @@ MeshView::~MeshView() {
 }
 
 std::vector<vtkActor*> MeshView::actors() const {
-  return {trimmed_actor_, surface_, crease_line_actor_, vertex_actor_, crease_point_actor_};
+  return {trimmed_actor_, surface_, quad_edge_actor_, crease_line_actor_, vertex_actor_, crease_point_actor_};
 }
 
 void MeshView::set_positions(const Eigen::MatrixX3d& X) {
@@ -228,7 +250,7 @@ void MeshView::apply_colours() {
     mapper->UseLookupTableScalarRangeOn();
   };
   configure(trimmed_mapper_, coloured);
-  configure(surface_mapper_, coloured && !trimmed_on_);  // with the trimmed surface the grid draws plain edges
+  configure(surface_mapper_, coloured);
 }
 
 void MeshView::set_vertices_visible(bool visible) {
@@ -275,13 +297,9 @@ void MeshView::apply_visibility() {
   const bool trimmed = trimmed_on_ && filled_;
   trimmed_actor_->SetVisibility(visible_ && trimmed);
   vtkProperty* p = surface_->GetProperty();
-  if (trimmed) {  // the quad grid shows only its edges, as lines over the trimmed surface
-    surface_->SetVisibility(visible_ && edges_);
-    p->SetRepresentationToWireframe();
-    p->SetColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
-    p->SetLineWidth(1);
-    p->SetLighting(false);
-    p->SetEdgeVisibility(false);
+  quad_edge_actor_->SetVisibility(visible_ && trimmed && edges_);
+  if (trimmed) {  // the quad edges are their own lines over the trimmed surface
+    surface_->SetVisibility(false);
   } else if (filled_) {
     surface_->SetVisibility(visible_);
     p->SetRepresentationToSurface();

@@ -7,7 +7,7 @@
 // creases, smooth shaded) or, as the debugging view of the DOG itself, the full cells: every quad
 // whole, overhanging its patch's creases. The quad grid holds the arrays that colour the surface;
 // set_point_array and set_cell_array carry them over to the trimmed surface. With the trimmed
-// surface the quad edges (set_edges_visible) are drawn as lines over it.
+// surface the quad edges (set_edges_visible) are drawn as lines over it, each edge once.
 #include <vtkActor.h>
 #include <vtkDataSetMapper.h>
 #include <vtkPoints.h>
@@ -103,6 +103,8 @@ class MeshView {
   vtkScalarsToColors* colour_lut_ = nullptr;
   vtkSmartPointer<vtkActor> trimmed_actor_, surface_, vertex_actor_, crease_line_actor_, crease_point_actor_;
   vtkSmartPointer<vtkPolyData> vertices_poly_, crease_lines_, crease_points_poly_;
+  vtkSmartPointer<vtkPolyData> quad_edges_;  ///< each quad edge once, on the grid's points
+  vtkSmartPointer<vtkActor> quad_edge_actor_;
   std::vector<Eigen::Vector3d> crease_positions_;
 };
 
