@@ -31,7 +31,12 @@
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
 
 #include "app/blas_kernels.h"
 #include "app/saved_state.h"
@@ -266,6 +271,37 @@ class StudioTest : public QObject {
     QCOMPARE(window_->snapshot()->constraints.handles[1].target, target);
     const Eigen::Vector3d at = window_->snapshot()->state.fine.row(last).transpose();
     QVERIFY2((at - target).norm() < 0.5, qPrintable(QString::number((at - target).norm())));
+    QVERIFY(errors_.isEmpty());
+  }
+
+  // VTK's own key bindings are off in the 3D view: 3 (stereo), w and s (wireframe, surface), e (exit),
+  // f (fly to), j and t (joystick, trackball), r (reset), p (pick) and u change nothing.
+  void ignores_vtks_own_keys() {
+    open();
+    window_->reset_camera();
+    vtkRenderer* renderer = window_->renderer();
+    auto representations = [&]() {
+      std::vector<int> out;
+      vtkActorCollection* actors = renderer->GetActors();
+      actors->InitTraversal();
+      while (vtkActor* a = actors->GetNextActor()) out.push_back(a->GetVisibility() * 10 + a->GetProperty()->GetRepresentation());
+      return out;
+    };
+    const std::vector<int> before = representations();
+    const vis::CameraPose camera = vis::camera_pose(renderer->GetActiveCamera());
+    vtkRenderWindowInteractor* keys = window_->interactor();
+    for (char key : std::string("3wsefjtrpu")) {
+      const char sym[2] = {key, 0};
+      keys->SetKeyEventInformation(0, 0, key, 1, sym);
+      keys->InvokeEvent(vtkCommand::KeyPressEvent);
+      keys->InvokeEvent(vtkCommand::CharEvent);
+      keys->InvokeEvent(vtkCommand::KeyReleaseEvent);
+      QVERIFY2(!renderer->GetRenderWindow()->GetStereoRender(), sym);
+      QVERIFY2(representations() == before, sym);
+      const vis::CameraPose now = vis::camera_pose(renderer->GetActiveCamera());
+      QVERIFY2((now.position - camera.position).norm() < 1e-9 && (now.focal_point - camera.focal_point).norm() < 1e-9, sym);
+      QVERIFY2(window_->isVisible(), sym);
+    }
     QVERIFY(errors_.isEmpty());
   }
 

@@ -3,6 +3,8 @@
 // that picks, Shift + left drag that moves what the press grabbed (a handle) instead of the
 // camera, and Ctrl + left drag that spans a rubber band (with Shift as well: added to the
 // selection); moves without a button report hovering. Positions are VTK display coordinates.
+// VTK's own key bindings (3 stereo, w/s wireframe/surface, e/q exit, f fly to, r reset, p pick, u
+// user) are off: the studio's menus own the keyboard.
 #include <vtkInteractorStyleTrackballCamera.h>
 
 #include <functional>
@@ -29,6 +31,8 @@ class ClickDragStyle : public vtkInteractorStyleTrackballCamera {
   void OnLeftButtonDown() override;
   void OnMouseMove() override;
   void OnLeftButtonUp() override;
+  /// Ignores every key (vtkInteractorStyle::OnChar would switch stereo, wireframe, exit, ...).
+  void OnChar() override {}
 
  private:
   int press_x_ = 0, press_y_ = 0;
