@@ -140,30 +140,35 @@ void place_trimmed_surface(TrimmedSurface& s, const Eigen::MatrixX3d& X) {
   }
 }
 
+std::vector<double> trimmed_point_values(const TrimmedSurface& s, const std::vector<double>& values, bool integral) {
+  const Eigen::Index n = s.source.rows();
+  std::vector<double> out(static_cast<size_t>(n));
+  for (Eigen::Index r = 0; r < n; ++r) {
+    double value = 0;
+    if (integral) {
+      Eigen::Index k;
+      s.weight.row(r).maxCoeff(&k);
+      value = values[s.source(r, k)];
+    } else {
+      for (int k = 0; k < 4; ++k) value += s.weight(r, k) * values[s.source(r, k)];
+    }
+    out[static_cast<size_t>(r)] = value;
+  }
+  return out;
+}
+
+std::vector<double> trimmed_cell_values(const TrimmedSurface& s, const std::vector<double>& values) {
+  std::vector<double> out;
+  out.reserve(s.triangle_quad.size());
+  for (int q : s.triangle_quad) out.push_back(values[q]);
+  return out;
+}
+
 MeshArrays trimmed_arrays(const TrimmedSurface& s, const MeshArrays& mesh_arrays) {
   MeshArrays out;
-  const Eigen::Index n = s.source.rows();
-  for (const auto& a : mesh_arrays.point) {
-    NamedArray b{a.name, std::vector<double>(static_cast<size_t>(n)), a.integral};
-    for (Eigen::Index r = 0; r < n; ++r) {
-      double value = 0;
-      if (a.integral) {
-        Eigen::Index k;
-        s.weight.row(r).maxCoeff(&k);
-        value = a.values[s.source(r, k)];
-      } else {
-        for (int k = 0; k < 4; ++k) value += s.weight(r, k) * a.values[s.source(r, k)];
-      }
-      b.values[static_cast<size_t>(r)] = value;
-    }
-    out.point.push_back(std::move(b));
-  }
-  for (const auto& a : mesh_arrays.cell) {
-    NamedArray b{a.name, {}, a.integral};
-    b.values.reserve(s.triangle_quad.size());
-    for (int q : s.triangle_quad) b.values.push_back(a.values[q]);
-    out.cell.push_back(std::move(b));
-  }
+  for (const auto& a : mesh_arrays.point)
+    out.point.push_back({a.name, trimmed_point_values(s, a.values, a.integral), a.integral});
+  for (const auto& a : mesh_arrays.cell) out.cell.push_back({a.name, trimmed_cell_values(s, a.values), a.integral});
   return out;
 }
 

@@ -39,6 +39,13 @@ TrimmedSurface trimmed_surface(const DogMesh& mesh, const Eigen::MatrixX3d& X);
 /// Moves the surface to positions X of its mesh: new V and N, same topology.
 void place_trimmed_surface(TrimmedSurface& surface, const Eigen::MatrixX3d& X);
 
+/// One per-vertex array of the mesh at the surface's vertices: interpolated with the vertices'
+/// weights, or (integral) the value of the source with the largest weight.
+std::vector<double> trimmed_point_values(const TrimmedSurface& surface, const std::vector<double>& values,
+                                         bool integral = false);
+/// One per-quad array of the mesh on the surface's triangles (each its quad's value).
+std::vector<double> trimmed_cell_values(const TrimmedSurface& surface, const std::vector<double>& values);
+
 /// The mesh's arrays carried over to the surface: a point array interpolated with the vertices'
 /// weights (an integral one takes the value of the source with the largest weight), a cell array
 /// copied from each triangle's quad.

@@ -176,16 +176,12 @@ void MeshView::set_offset(double dx) {
 
 void MeshView::set_point_array(const char* name, const std::vector<double>& values) {
   set_double_array(grid_->GetPointData(), name, values);
-  MeshArrays arrays;
-  arrays.point.push_back({name, values, false});
-  set_double_array(trimmed_poly_->GetPointData(), name, trimmed_arrays(trimmed_surface_, arrays).point[0].values);
+  set_double_array(trimmed_poly_->GetPointData(), name, trimmed_point_values(trimmed_surface_, values));
 }
 
 void MeshView::set_cell_array(const char* name, const std::vector<double>& values) {
   set_double_array(grid_->GetCellData(), name, values);
-  MeshArrays arrays;
-  arrays.cell.push_back({name, values, false});
-  set_double_array(trimmed_poly_->GetCellData(), name, trimmed_arrays(trimmed_surface_, arrays).cell[0].values);
+  set_double_array(trimmed_poly_->GetCellData(), name, trimmed_cell_values(trimmed_surface_, values));
 }
 
 void MeshView::set_paper(bool paper) {

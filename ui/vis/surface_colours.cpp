@@ -31,13 +31,6 @@ const NamedArray& require(const std::vector<NamedArray>& arrays, const std::stri
   return *a;
 }
 
-// The values of one point array of the mesh at the surface's vertices.
-std::vector<double> at_vertices(const TrimmedSurface& surface, NamedArray mesh_array) {
-  MeshArrays one;
-  one.point.push_back(std::move(mesh_array));
-  return trimmed_arrays(surface, one).point.front().values;
-}
-
 // Per surface vertex the mean of a quad array over the vertex's triangles.
 std::vector<double> cell_means_at_vertices(const TrimmedSurface& surface,
                                            const std::vector<double>& quad_values) {
@@ -64,9 +57,9 @@ std::vector<Rgb8> mapped(vtkLookupTable* lut, const std::vector<double>& values)
 
 // The renderer's colours of a linear layer: from 0 to the 95th percentile of the mesh's values.
 std::vector<Rgb8> robust_colours(const std::vector<double>& mesh_values,
-                                 const std::vector<double>& at_vertices) {
+                                 const std::vector<double>& surface_values) {
   const auto range = robust_range(mesh_values);
-  return mapped(sequential_lut(range[0], range[1]), at_vertices);
+  return mapped(sequential_lut(range[0], range[1]), surface_values);
 }
 
 }  // namespace
@@ -79,7 +72,7 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
     case Layer::VertexTypes: {
       const NamedArray* types = find(mesh_arrays.point, "vertex_type");
       if (!types) return std::vector<Rgb8>(n, bytes(kUntypedVertexColor));
-      for (double type : at_vertices(surface, *types))
+      for (double type : trimmed_point_values(surface, types->values, types->integral))
         out.push_back(bytes(vertex_type_color(static_cast<VertexType>(std::lround(type)))));
       return out;
     }
@@ -89,11 +82,11 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
     case Layer::DogResidual: {
       const NamedArray& residual = require(mesh_arrays.point, "dog_residual");
       return mapped(dog_residual_lut(),
-                    at_vertices(surface, {"", log10_residuals(residual.values), false}));
+                    trimmed_point_values(surface, log10_residuals(residual.values)));
     }
     case Layer::Bending: {
       const NamedArray& bending = require(mesh_arrays.point, "bending");
-      return robust_colours(bending.values, at_vertices(surface, bending));
+      return robust_colours(bending.values, trimmed_point_values(surface, bending.values));
     }
     case Layer::EdgeStrain: {
       const NamedArray& strain = require(mesh_arrays.cell, "edge_strain");
