@@ -1,6 +1,7 @@
 #include "solver/session/session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "base/errors.h"
@@ -39,6 +40,14 @@ void Session::apply_creases() {
 
 void Session::rebuild() {
   scenario_ = base_;
+  // A handle on a vertex replaces the base scenario's target for it.
+  auto& base = scenario_.positions;
+  base.erase(std::remove_if(base.begin(), base.end(),
+                            [&](const auto& p) {
+                              return std::any_of(user_.handles.begin(), user_.handles.end(),
+                                                 [&](const UserConstraints::Handle& h) { return h.vertex == p.vertex; });
+                            }),
+             base.end());
   for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
   for (const auto& a : user_.angles)
     scenario_.angles.push_back(angle_constraint(model_.fine, a.crease_point, a.degrees, a.degrees));
@@ -79,8 +88,8 @@ void Session::check_vertex(int vertex) const {
                      std::to_string(model_.fine.vertex_count()) + " vertices)");
 }
 
-void Session::edit(const UserConstraints& next, bool merge) {
-  if (!merge || undo_.empty()) undo_.push_back({user_, config_.creases});
+void Session::edit(const UserConstraints& next, const std::string& name, bool merge) {
+  if (!merge || undo_.empty()) undo_.push_back({user_, config_.creases, name});
   redo_.clear();
   user_ = next;
   rebuild();
@@ -94,8 +103,17 @@ int Session::add_handles(const std::vector<int>& vertices) {
   const int first = static_cast<int>(user_.handles.size());
   UserConstraints next = user_;
   for (int v : vertices) next.handles.push_back({v, Eigen::Vector3d(vertex_of(x_, v))});
-  edit(next);
+  edit(next, vertices.size() == 1 ? "make handle" : "make " + std::to_string(vertices.size()) + " handles");
   return first;
+}
+
+int Session::add_handle_at(int vertex, const Eigen::Vector3d& target) {
+  check_vertex(vertex);
+  if (!target.allFinite()) throw InputError("a handle target that is not finite");
+  UserConstraints next = user_;
+  next.handles.push_back({vertex, target});
+  edit(next, "take the scenario's target of vertex " + std::to_string(vertex));
+  return static_cast<int>(user_.handles.size()) - 1;
 }
 
 void Session::move_handle(int handle, const Eigen::Vector3d& target, bool merge) {
@@ -104,7 +122,7 @@ void Session::move_handle(int handle, const Eigen::Vector3d& target, bool merge)
   if (!target.allFinite()) throw InputError("a handle target that is not finite");
   UserConstraints next = user_;
   next.handles[handle].target = target;
-  edit(next, merge);
+  edit(next, "move handle " + std::to_string(handle), merge);
 }
 
 void Session::remove_handle(int handle) {
@@ -112,7 +130,7 @@ void Session::remove_handle(int handle) {
     throw InputError("handle " + std::to_string(handle) + " does not exist");
   UserConstraints next = user_;
   next.handles.erase(next.handles.begin() + handle);
-  edit(next);
+  edit(next, "remove handle " + std::to_string(handle));
 }
 
 int Session::add_angle(int crease_point, double degrees) {
@@ -136,7 +154,7 @@ int Session::add_angle(int crease_point, double degrees) {
   }
   UserConstraints next = user_;
   next.angles.push_back({crease_point, degrees});
-  edit(next);
+  edit(next, "add angle constraint");
   return static_cast<int>(user_.angles.size()) - 1;
 }
 
@@ -145,12 +163,12 @@ void Session::remove_angle(int angle) {
     throw InputError("angle constraint " + std::to_string(angle) + " does not exist");
   UserConstraints next = user_;
   next.angles.erase(next.angles.begin() + angle);
-  edit(next);
+  edit(next, "remove angle constraint");
 }
 
 void Session::set_constraints(const UserConstraints& constraints) {
   for (const auto& h : constraints.handles) check_vertex(h.vertex);
-  edit(constraints);
+  edit(constraints, "set the constraints");
 }
 
 void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle) {
@@ -162,7 +180,10 @@ void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fo
                        std::to_string(existing.size()) + " creases after cleaning)");
   if (angle && !(*angle >= 0 && *angle <= 180)) throw InputError("a fold angle must be in [0, 180] degrees");
   if (!fold && !angle) return;
-  undo_.push_back({user_, config_.creases});
+  const std::string what = fold ? fold_name(*fold) : std::to_string(static_cast<int>(std::lround(*angle))) + " degrees";
+  undo_.push_back({user_, config_.creases,
+                   (curves.size() == 1 ? "set crease " + std::to_string(curves[0]) : "set " + std::to_string(curves.size()) + " creases") +
+                       " " + what});
   redo_.clear();
   for (int k : curves) {
     // The crease's whole state after the edit, as apply_crease_settings would leave it.
@@ -204,7 +225,7 @@ bool Session::redo() { return travel(redo_, undo_); }
 
 bool Session::travel(std::vector<EditState>& from, std::vector<EditState>& to) {
   if (from.empty()) return false;
-  to.push_back({user_, config_.creases});
+  to.push_back({user_, config_.creases, from.back().name});
   user_ = from.back().user;
   const bool creases_change = config_.creases != from.back().creases;
   config_.creases = from.back().creases;

@@ -88,6 +88,10 @@ class Session {
   /// Several vertices made handles at once (rubber-band selection), as one edit; returns the
   /// index of the first new handle.
   int add_handles(const std::vector<int>& vertices);
+  /// A handle on `vertex` with the given target, as one edit: what dragging a target of the base
+  /// scenario (a corner of the corners scenario) does first. A handle on a vertex replaces the base
+  /// scenario's target for it. Returns its index.
+  int add_handle_at(int vertex, const Eigen::Vector3d& target);
   /// `merge`: the move continues the last edit (a drag in progress) and is undone with it.
   void move_handle(int handle, const Eigen::Vector3d& target, bool merge = false);
   void remove_handle(int handle);
@@ -109,6 +113,10 @@ class Session {
   void fold();
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
+  /// What undo() and redo() would undo or redo ("move handle 2", "assign 3 creases valley", ...;
+  /// empty when there is nothing).
+  std::string undo_name() const { return undo_.empty() ? std::string() : undo_.back().name; }
+  std::string redo_name() const { return redo_.empty() ? std::string() : redo_.back().name; }
   bool undo();
   bool redo();
 
@@ -117,8 +125,10 @@ class Session {
   struct EditState {
     UserConstraints user;
     std::vector<CreaseSetting> creases;
+    std::string name;  // of the edit that left this state
   };
-  void edit(const UserConstraints& next, bool merge = false);  // records the undo step and rebuilds
+  // Records the undo step (named `name`) and rebuilds.
+  void edit(const UserConstraints& next, const std::string& name, bool merge = false);
   // Undo (from undo_ to redo_) or redo (the other way).
   bool travel(std::vector<EditState>& from, std::vector<EditState>& to);
   void rebuild();

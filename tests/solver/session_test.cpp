@@ -98,6 +98,51 @@ TEST(Session, ADragIsOneEditAndSeveralHandlesAreAddedAtOnce) {
   EXPECT_TRUE(s.constraints().handles.empty());  // nothing added when one vertex is wrong
 }
 
+TEST(Session, UndoAndRedoNameTheirEdits) {
+  Session s(model(), interactive(), ModeKind::kStandard);
+  EXPECT_EQ(s.undo_name(), "");
+  s.add_handles({0, 1});
+  EXPECT_EQ(s.undo_name(), "make 2 handles");
+  s.move_handle(1, Eigen::Vector3d(0, 0, 1));
+  s.move_handle(1, Eigen::Vector3d(0, 0, 2), /*merge=*/true);
+  EXPECT_EQ(s.undo_name(), "move handle 1");
+  s.set_creases({0, 1}, Fold::kValley, std::nullopt);
+  EXPECT_EQ(s.undo_name(), "set 2 creases valley");
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.redo_name(), "set 2 creases valley");
+  EXPECT_EQ(s.undo_name(), "move handle 1");
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.undo_name(), "make 2 handles");
+  EXPECT_EQ(s.redo_name(), "move handle 1");
+  s.remove_handle(0);
+  EXPECT_EQ(s.undo_name(), "remove handle 0");
+  EXPECT_EQ(s.redo_name(), "");
+}
+
+TEST(Session, AHandleTakesOverTheScenariosTargetOfItsVertex) {
+  Session s(model(), RunConfig{}, ModeKind::kStandard);  // the corners scenario
+  const size_t corners = s.scenario().positions.size();
+  ASSERT_GE(corners, 2u);
+  for (int k = 0; k < 3; ++k) ASSERT_FALSE(s.step().step.failed);
+  const PositionConstraint corner = s.scenario().positions.front();
+  const Eigen::Vector3d dragged = corner.end + Eigen::Vector3d(1, 2, 3);
+  EXPECT_EQ(s.add_handle_at(corner.vertex, dragged), 0);
+  // Still one target per corner: the handle's replaces the scenario's.
+  ASSERT_EQ(s.scenario().positions.size(), corners);
+  int on_vertex = 0;
+  for (const auto& p : s.scenario().positions)
+    if (p.vertex == corner.vertex) {
+      ++on_vertex;
+      EXPECT_EQ(p.start, dragged);
+      EXPECT_EQ(p.end, dragged);
+    }
+  EXPECT_EQ(on_vertex, 1);
+  EXPECT_EQ(s.undo_name(), "take the scenario's target of vertex " + std::to_string(corner.vertex));
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.scenario().positions.front().end, corner.end);
+  EXPECT_THROW(s.add_handle_at(-1, dragged), InputError);
+}
+
 TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
   const auto& points = model().fine.stitching.points;
   int site = -1;
