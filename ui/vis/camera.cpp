@@ -57,21 +57,54 @@ CameraPose three_d_camera(const Bounds& b, double aspect, bool legend_column) {
 }
 
 CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column) {
-  // The margin around the points' projection, as a factor of the distance.
-  constexpr double kMargin = 1.06;
   CameraPose pose;
   pose.view_up = {0, 0, 1};
+  pose.position = pose.focal_point + Eigen::Vector3d(0.9, -1.2, 1);
+  return framed_camera(points, pose, aspect, legend_column);
+}
+
+CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from, double aspect,
+                         bool legend_column) {
+  // The margin around the points' projection, as a factor of the distance (of the extent in a
+  // parallel projection).
+  constexpr double kMargin = 1.06;
+  CameraPose pose = from;
   pose.window_center = drawing_window_center(legend_column);
   if (points.empty()) return pose;
+  Eigen::Vector3d towards_camera = from.position - from.focal_point;
+  if (towards_camera.norm() < 1e-12) towards_camera = Eigen::Vector3d(0, 0, 1);
+  towards_camera.normalize();
+  Eigen::Vector3d right = from.view_up.cross(towards_camera);
+  if (right.norm() < 1e-9) {  // view up along the view direction: any perpendicular one
+    right = Eigen::Vector3d(1, 0, 0).cross(towards_camera);
+    if (right.norm() < 1e-9) right = Eigen::Vector3d(0, 1, 0).cross(towards_camera);
+    pose.view_up = towards_camera.cross(right.normalized());
+  }
+  right.normalize();
+  const Eigen::Vector3d up = towards_camera.cross(right);
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& p : points) c += p;
   c /= static_cast<double>(points.size());
-  const Eigen::Vector3d towards_camera = Eigen::Vector3d(0.9, -1.2, 1).normalized();
-  const Eigen::Vector3d right = Eigen::Vector3d(0, 0, 1).cross(towards_camera).normalized();
-  const Eigen::Vector3d up = towards_camera.cross(right);
   // With the legend column, the caption takes the top of the drawing area.
-  const double tan_y = std::tan(0.5 * pose.view_angle * kPi / 180) * (legend_column ? kCaptionFreeHeight : 1.0);
-  const double tan_x = std::tan(0.5 * pose.view_angle * kPi / 180) * aspect * (legend_column ? kDrawingWidth : 1.0);
+  const double height_share = legend_column ? kCaptionFreeHeight : 1.0;
+  const double width_share = aspect * (legend_column ? kDrawingWidth : 1.0);
+  if (from.parallel) {
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300, depth = 0;
+    for (const auto& p : points) {
+      const Eigen::Vector3d rel = p - c;
+      lo_x = std::min(lo_x, rel.dot(right)), hi_x = std::max(hi_x, rel.dot(right));
+      lo_y = std::min(lo_y, rel.dot(up)), hi_y = std::max(hi_y, rel.dot(up));
+      depth = std::max(depth, std::abs(rel.dot(towards_camera)));
+    }
+    c += 0.5 * (lo_x + hi_x) * right + 0.5 * (lo_y + hi_y) * up;
+    const double half_w = std::max(0.5 * (hi_x - lo_x), 1e-9), half_h = std::max(0.5 * (hi_y - lo_y), 1e-9);
+    pose.parallel_scale = kMargin * std::max(half_h / height_share, half_w / width_share);
+    pose.focal_point = c;
+    pose.position = c + (4 * std::max({half_w, half_h, depth}) + 1) * towards_camera;
+    return pose;
+  }
+  const double tan_half = std::tan(0.5 * pose.view_angle * kPi / 180);
+  const double tan_y = tan_half * height_share, tan_x = tan_half * width_share;
   // A point at lateral offsets (x, y) and depth z towards the camera lies inside the drawing area
   // at distance d when |x| <= tan_x (d - z) and |y| <= tan_y (d - z). The focal point moves to
   // the middle of the projection from the points' centroid, then the distance is found again.

@@ -40,6 +40,10 @@ CameraPose three_d_camera(const Bounds& bounds, double aspect, bool legend_colum
 /// The 3D camera framing the points themselves (tighter than their bounds): every point inside
 /// the drawing area, their projection centred in it.
 CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column = true);
+/// The camera `from` (its direction, view up and projection) moved so that every point lies
+/// inside the drawing area, their projection centred in it: View > Frame all.
+CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from, double aspect,
+                         bool legend_column = true);
 
 CameraPose camera_pose(vtkCamera* camera);
 void apply_camera_pose(const CameraPose& pose, vtkCamera* camera);

@@ -23,6 +23,12 @@ MeshArrays frame_arrays(const DogModel& model, Fields f) {
   return arrays;
 }
 
+void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays, const std::string& path) {
+  auto grid = quad_grid(X, model.fine.F, arrays);
+  grid->GetPointData()->AddArray(vector_array("rest_position", model.fine.V));
+  write_vtu(grid, path);
+}
+
 FrameWriter::FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out, int every,
                          int last_iteration)
     : model_(model), problem_(problem), out_(out), every_(std::max(1, every)), last_(last_iteration) {}
@@ -38,9 +44,7 @@ void FrameWriter::write(int iteration, const Dofs& x) {
   std::snprintf(name, sizeof name, "frame_%04d.vtu", iteration);
   const Eigen::MatrixX3d X = to_positions(x);
   const MeshArrays arrays = frame_arrays(model_, problem_, x);
-  auto grid = quad_grid(X, model_.fine.F, arrays);
-  grid->GetPointData()->AddArray(vector_array("rest_position", model_.fine.V));
-  write_vtu(grid, out_.temporary(name));
+  write_frame_vtu(model_, X, arrays, out_.temporary(name));
   frames_.emplace_back(iteration, name);
   if (surfaces_) surfaces_->write_frame(iteration, X, arrays);
 }

@@ -23,6 +23,10 @@ MeshArrays frame_arrays(const DogModel& model, const DogProblem& problem, const 
 /// The same from the fields of a state (diagnostics.h).
 MeshArrays frame_arrays(const DogModel& model, Fields fields);
 
+/// Writes the fine mesh at positions X (mesh units) with `arrays` and rest_position as a .vtu
+/// file: one frame (throws OutputError).
+void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays, const std::string& path);
+
 class FrameWriter : public RunObserver {
  public:
   /// `every` >= 1; `last_iteration` is the run's final iteration (always written).

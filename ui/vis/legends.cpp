@@ -2,6 +2,8 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCoordinate.h>
+#include <vtkPolyDataMapper2D.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -23,24 +25,6 @@ void style_text(vtkTextProperty* p, int font, bool bold = false) {
   p->SetBold(bold);
   p->SetItalic(false);
   p->SetShadow(false);
-}
-
-// A square symbol carrying its colour as cell scalars: the legend box then draws the label in
-// the entry colour (the text colour) and the square in its own.
-vtkSmartPointer<vtkPolyData> colored_square(const Rgb& c) {
-  auto square = vtkSmartPointer<vtkPolyData>::New();
-  auto pts = vtkSmartPointer<vtkPoints>::New();
-  for (const auto& [x, y] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) pts->InsertNextPoint(x, y, 0);
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  const vtkIdType ids[4] = {0, 1, 2, 3};
-  polys->InsertNextCell(4, ids);
-  square->SetPoints(pts);
-  square->SetPolys(polys);
-  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  rgb->SetNumberOfComponents(3);
-  rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
-  square->GetCellData()->SetScalars(rgb);
-  return square;
 }
 
 }  // namespace
@@ -66,65 +50,96 @@ Legend Legend::categories(const std::string& title, const std::vector<LegendEntr
   l.title_->SetInput(title.c_str());
   l.title_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   l.title_->GetTextProperty()->SetVerticalJustificationToTop();
-  l.box_ = vtkSmartPointer<vtkLegendBoxActor>::New();
-  l.box_->SetNumberOfEntries(static_cast<int>(entries.size()));
+  // The squares: one quad per entry (placed by place()), coloured by cell scalars.
+  l.squares_ = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetNumberOfPoints(4 * static_cast<vtkIdType>(entries.size()));
+  auto quads = vtkSmartPointer<vtkCellArray>::New();
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetNumberOfComponents(3);
   for (size_t k = 0; k < entries.size(); ++k) {
-    double text[3] = {kTextColor[0], kTextColor[1], kTextColor[2]};
-    // The box draws the symbol over the start of its label: a leading space keeps the letter free.
-    const std::string label = " " + entries[k].label;
-    l.box_->SetEntry(static_cast<int>(k), colored_square(entries[k].color), label.c_str(), text);
+    const vtkIdType first = 4 * static_cast<vtkIdType>(k);
+    const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
+    quads->InsertNextCell(4, ids);
+    const Rgb& c = entries[k].color;
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+    auto label = vtkSmartPointer<vtkTextActor>::New();
+    label->SetInput(entries[k].label.c_str());
+    label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    label->GetTextProperty()->SetVerticalJustificationToCentered();
+    l.labels_.push_back(label);
   }
-  l.box_->ScalarVisibilityOn();
-  l.box_->BorderOff();
-  l.box_->SetPadding(1);
-  l.box_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  l.box_->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
-  l.entries_ = static_cast<int>(entries.size());
+  l.squares_->SetPoints(points);
+  l.squares_->SetPolys(quads);
+  l.squares_->GetCellData()->SetScalars(rgb);
+  auto coordinate = vtkSmartPointer<vtkCoordinate>::New();
+  coordinate->SetCoordinateSystemToNormalizedViewport();
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+  mapper->SetInputData(l.squares_);
+  mapper->SetTransformCoordinate(coordinate);
+  mapper->SetColorModeToDirectScalars();
+  mapper->SetScalarModeToUseCellData();
+  l.squares_actor_ = vtkSmartPointer<vtkActor2D>::New();
+  l.squares_actor_->SetMapper(mapper);
   return l;
 }
 
 void Legend::add_to(vtkRenderer* renderer) const {
   if (bar_) renderer->AddActor2D(bar_);
   if (title_) renderer->AddActor2D(title_);
-  if (box_) renderer->AddActor2D(box_);
+  if (squares_actor_) renderer->AddActor2D(squares_actor_);
+  for (vtkTextActor* label : labels_) renderer->AddActor2D(label);
 }
 
 void Legend::remove_from(vtkRenderer* renderer) const {
   if (bar_) renderer->RemoveActor2D(bar_);
   if (title_) renderer->RemoveActor2D(title_);
-  if (box_) renderer->RemoveActor2D(box_);
+  if (squares_actor_) renderer->RemoveActor2D(squares_actor_);
+  for (vtkTextActor* label : labels_) renderer->RemoveActor2D(label);
 }
 
 void Legend::set_visible(bool visible) const {
   if (bar_) bar_->SetVisibility(visible);
   if (title_) title_->SetVisibility(visible);
-  if (box_) box_->SetVisibility(visible);
+  if (squares_actor_) squares_actor_->SetVisibility(visible);
+  for (vtkTextActor* label : labels_) label->SetVisibility(visible);
 }
 
-bool Legend::visible() const { return bar_ ? bar_->GetVisibility() : box_->GetVisibility(); }
+bool Legend::visible() const { return bar_ ? bar_->GetVisibility() : title_->GetVisibility(); }
 
 double Legend::height_pixels(int font) const {
   if (bar_) return 12.0 * font;
-  return 1.6 * font + 1.3 * font * entries_;
+  return 1.6 * font + 1.3 * font * static_cast<double>(labels_.size());
 }
 
-void Legend::place(double top, int viewport_height, int font) const {
+void Legend::place(double top, int viewport_width, int viewport_height, int font) const {
   const double h = height_pixels(font) / viewport_height;
+  const int label_font = std::max(6, static_cast<int>(std::lround(kLabelScale * font)));
   if (bar_) {
     style_text(bar_->GetTitleTextProperty(), font, true);
-    style_text(bar_->GetLabelTextProperty(), static_cast<int>(0.85 * font));
+    style_text(bar_->GetLabelTextProperty(), label_font);
     bar_->GetPositionCoordinate()->SetValue(kLegendColumnLeft, top - h);
     bar_->GetPosition2Coordinate()->SetValue(kColumnWidth, h);
     return;
   }
   style_text(title_->GetTextProperty(), font, true);
   title_->SetPosition(kLegendColumnLeft + 0.005, top);
-  const double title_h = 1.6 * font / viewport_height;
-  style_text(box_->GetEntryTextProperty(), font);
-  // The box scales its text to fit; entries 1.3 em high in the whole column width make the height
-  // decide (the same text size in every legend) unless a label is long.
-  box_->GetPositionCoordinate()->SetValue(kLegendColumnLeft, top - h);
-  box_->GetPosition2Coordinate()->SetValue(kColumnWidth, h - title_h);
+  // Rows 1.3 em high under the title: a square of 0.8 em, then the label.
+  const double row = 1.3 * font / viewport_height;
+  const double side_x = 0.8 * font / viewport_width, side_y = 0.8 * font / viewport_height;
+  const double x0 = kLegendColumnLeft + 0.008;
+  vtkPoints* points = squares_->GetPoints();
+  for (size_t k = 0; k < labels_.size(); ++k) {
+    const double y = top - 1.6 * font / viewport_height - (static_cast<double>(k) + 0.5) * row;  // the row's middle
+    const vtkIdType first = 4 * static_cast<vtkIdType>(k);
+    points->SetPoint(first, x0, y - side_y / 2, 0);
+    points->SetPoint(first + 1, x0 + side_x, y - side_y / 2, 0);
+    points->SetPoint(first + 2, x0 + side_x, y + side_y / 2, 0);
+    points->SetPoint(first + 3, x0, y + side_y / 2, 0);
+    style_text(labels_[k]->GetTextProperty(), label_font);
+    labels_[k]->SetPosition(x0 + 1.5 * side_x, y);
+  }
+  points->Modified();
 }
 
 double Legend::title_width_pixels(int font) const {
@@ -132,12 +147,42 @@ double Legend::title_width_pixels(int font) const {
   return 0.62 * font * (text ? std::strlen(text) : 0);
 }
 
+double Legend::entry_width_pixels(int font) const {
+  size_t longest = 0;
+  for (vtkTextActor* label : labels_) longest = std::max(longest, std::strlen(label->GetInput()));
+  // The square and the gap after it (1.2 em), then the label.
+  return labels_.empty() ? 0.0 : 1.2 * font + 0.55 * static_cast<double>(longest) * kLabelScale * font;
+}
+
+std::vector<LegendEntry> patch_legend_entries(int patch_count) {
+  std::vector<LegendEntry> entries;
+  if (patch_count <= kPatchColors) {
+    for (int p = 0; p < patch_count; ++p) entries.push_back({"patch " + std::to_string(p), patch_color(p)});
+    return entries;
+  }
+  constexpr int kNamed = 3;  // patch numbers named per colour before "..."
+  for (int c = 0; c < kPatchColors; ++c) {
+    std::string numbers;
+    int named = 0;
+    for (int p = c; p < patch_count; p += kPatchColors) {
+      if (named == kNamed) {
+        numbers += ", ...";
+        break;
+      }
+      numbers += (named ? ", " : "") + std::to_string(p);
+      ++named;
+    }
+    entries.push_back({(named == 1 ? "patch " : "patches ") + numbers, patch_color(c)});
+  }
+  return entries;
+}
+
 void stack_legends(const std::vector<const Legend*>& legends, int viewport_width, int viewport_height, int font) {
   double total = 0, widest = 0;
   for (const Legend* l : legends)
     if (l->visible()) {
       total += l->height_pixels(font) + 0.8 * font;
-      widest = std::max(widest, l->title_width_pixels(font));
+      widest = std::max({widest, l->title_width_pixels(font), l->entry_width_pixels(font)});
     }
   const double room = (kTop - 0.02) * viewport_height, column = kColumnWidth * viewport_width;
   const double scale = std::min({1.0, total > 0 ? room / total : 1.0, widest > 0 ? column / widest : 1.0});
@@ -145,7 +190,7 @@ void stack_legends(const std::vector<const Legend*>& legends, int viewport_width
   double top = kTop;
   for (const Legend* l : legends) {
     if (!l->visible()) continue;
-    l->place(top, viewport_height, f);
+    l->place(top, viewport_width, viewport_height, f);
     top -= (l->height_pixels(f) + 0.8 * f) / viewport_height;
   }
 }

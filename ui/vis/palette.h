@@ -47,18 +47,21 @@ inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
 inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};
 inline constexpr Rgb kLinkLineColor{0.15, 0.15, 0.15};
 inline constexpr Rgb kHandleColor{0.95, 0.55, 0.05};       // orange
+inline constexpr Rgb kSelectionColor{0.05, 0.05, 0.05};    // the studio's selected vertices: black
 inline constexpr Rgb kTargetColor{0.10, 0.20, 0.60};       // dark blue
 inline constexpr Rgb kResidualLineColor{0.85, 0.10, 0.10}; // red
 inline constexpr Rgb kAngleSiteColor{0.00, 0.75, 0.80};    // cyan
 inline constexpr Rgb kCoarseEdgeColor{0.20, 0.30, 0.75};   // the coarse mesh over the fine one
 
-/// Light, distinct colours of the patches (the vertex and handle colours stay readable on them);
-/// then again from the start.
+/// The number of patch colours: light, distinct colours (the vertex and handle colours stay
+/// readable on them); patches beyond it take them again from the start.
+inline constexpr int kPatchColors = 12;
 inline Rgb patch_color(int index) {
-  static constexpr Rgb colors[] = {{0.99, 0.80, 0.60}, {0.70, 0.85, 0.95}, {0.78, 0.92, 0.70}, {0.95, 0.75, 0.85},
-                                   {0.85, 0.80, 0.95}, {0.98, 0.93, 0.62}, {0.72, 0.90, 0.88}, {0.90, 0.82, 0.72}};
-  constexpr int n = sizeof colors / sizeof colors[0];
-  return colors[((index % n) + n) % n];
+  static constexpr Rgb colors[kPatchColors] = {
+      {0.99, 0.80, 0.60}, {0.70, 0.85, 0.95}, {0.78, 0.92, 0.70}, {0.95, 0.75, 0.85},
+      {0.85, 0.80, 0.95}, {0.98, 0.93, 0.62}, {0.72, 0.90, 0.88}, {0.90, 0.82, 0.72},
+      {0.96, 0.66, 0.62}, {0.86, 0.95, 0.56}, {0.66, 0.74, 0.92}, {0.88, 0.68, 0.92}};
+  return colors[((index % kPatchColors) + kPatchColors) % kPatchColors];
 }
 
 /// Colours of the lines of a chart, told apart also by colour-blind readers (the Okabe-Ito

@@ -35,6 +35,7 @@ void render_picture(const DogModel& model, const SceneState& state, const Pictur
   if (options.camera) {
     apply_camera_pose(*options.camera, renderer->GetActiveCamera());
     renderer->ResetCameraClippingRange();
+    if (options.frame) scene.frame_all();
   }
   if (options.paper) {
     double b[6];

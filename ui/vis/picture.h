@@ -21,6 +21,7 @@ struct PictureOptions {
   bool transparent = false;  ///< transparent background (RGBA PNG)
   std::string caption;       ///< top-left text (empty: none)
   std::optional<CameraPose> camera;  ///< instead of the view's default camera (dots keep the default's size)
+  bool frame = false;                ///< with `camera`: looking its way, framing the drawing (Scene::frame_all)
   bool paper = false;                ///< the paper style (paper_style.h); no caption
   PaperEffects effects;              ///< of the paper style
 };

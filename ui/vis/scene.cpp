@@ -15,6 +15,7 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 
@@ -198,11 +199,14 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   else
     types = {{"vertex (no coarse mesh)", kUntypedVertexColor}};
   types.push_back({"crease point", kCreasePointColor});
-  std::vector<LegendEntry> patches;
-  for (int p = 0; p < model.fine.patch_count(); ++p) patches.push_back({"patch " + std::to_string(p), patch_color(p)});
+  const std::vector<LegendEntry> patches = patch_legend_entries(model.fine.patch_count());
   o.legends.emplace(Layer::VertexTypes, Legend::categories("vertex type", types));
   o.legends.emplace(Layer::Links, Legend::categories("links", {{"link to coarse twin", kLinkLineColor}}));
-  o.legends.emplace(Layer::Patches, Legend::categories("patches", patches));
+  o.legends.emplace(Layer::Patches,
+                    Legend::categories(model.fine.patch_count() > kPatchColors
+                                           ? std::to_string(model.fine.patch_count()) + " patches"
+                                           : std::string("patches"),
+                                       patches));
   o.legends.emplace(Layer::DogResidual, Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
   o.legends.emplace(Layer::EdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
   o.legends.emplace(Layer::StitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
@@ -452,6 +456,18 @@ void Scene::layout_legends() {
     if (o.legends.count(l)) stack.push_back(&o.legends.at(l));
   stack_legends(stack, size && size[0] > 0 ? size[0] : 1600, size && size[1] > 0 ? size[1] : 800, options_.font_size);
   for (vtkTextActor* t : o.texts()) t->GetTextProperty()->SetFontSize(options_.font_size);
+  // The side-by-side titles: each no wider than the distance between the panels' centres (an
+  // estimate: 0.55 em per character), so that they never run into each other.
+  if (options_.view == View::SideBySide && coarse_ && size) {
+    const double a = o.fine_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
+    const double b = o.coarse_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
+    const double chars = static_cast<double>(
+        std::max(std::strlen(o.fine_title->GetInput()), std::strlen(o.coarse_title->GetInput())));
+    const int fitting = static_cast<int>(0.9 * std::abs(b - a) / (0.55 * chars));
+    const int font = std::max(6, std::min(options_.font_size, fitting));
+    o.fine_title->GetTextProperty()->SetFontSize(font);
+    o.coarse_title->GetTextProperty()->SetFontSize(font);
+  }
 }
 
 void Scene::reset_camera() {
@@ -471,18 +487,7 @@ void Scene::reset_camera() {
   const bool legends = !options_.paper;
   CameraPose pose;
   if (options_.view == View::ThreeD) {  // framing what is drawn, point by point
-    std::vector<Eigen::Vector3d> points;
-    auto add = [&](vtkDataSet* data, double dx) {
-      for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
-        double p[3];
-        data->GetPoint(i, p);
-        points.emplace_back(p[0] + dx, p[1], p[2]);
-      }
-    };
-    add(on_[Layer::FullCells] ? static_cast<vtkDataSet*>(fine_->grid()) : fine_->trimmed(), 0);
-    if (coarse_ && coarse_->surface_actor()->GetVisibility()) add(coarse_->grid(), coarse_->offset());
-    if (on_[Layer::Handles]) add(o.handle_lines, 0);
-    pose = three_d_camera(points, width / height, legends);
+    pose = three_d_camera(drawn_points(), width / height, legends);
   } else {
     pose = top_view_camera(b, width / height, legends);
   }
@@ -512,6 +517,33 @@ void Scene::reset_camera() {
   layout_legends();
 }
 
+std::vector<Eigen::Vector3d> Scene::drawn_points() const {
+  std::vector<Eigen::Vector3d> points;
+  auto add = [&](vtkDataSet* data, double dx) {
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+      double p[3];
+      data->GetPoint(i, p);
+      points.emplace_back(p[0] + dx, p[1], p[2]);
+    }
+  };
+  add(on_.at(Layer::FullCells) ? static_cast<vtkDataSet*>(fine_->grid()) : fine_->trimmed(), 0);
+  if (coarse_ && coarse_->surface_actor()->GetVisibility()) add(coarse_->grid(), coarse_->offset());
+  if (on_.at(Layer::Handles)) add(overlays_->handle_lines, 0);
+  return points;
+}
+
+void Scene::frame_all() {
+  if (options_.view != View::ThreeD) {  // the top views show the rest state: their default frames it
+    reset_camera();
+    return;
+  }
+  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
+  const double width = size && size[0] > 0 ? size[0] : 1600, height = size && size[1] > 0 ? size[1] : 800;
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  apply_camera_pose(framed_camera(drawn_points(), camera_pose(camera), width / height, !options_.paper), camera);
+  renderer_->ResetCameraClippingRange();
+}
+
 vtkDataSet* Scene::layer_data(Layer layer) const {
   switch (layer) {
     case Layer::Links:
@@ -532,7 +564,16 @@ vtkPolyData* Scene::trimmed_surface() const { return fine_->trimmed(); }
 vtkProp* Scene::legend_prop(Layer layer) const {
   const auto it = overlays_->legends.find(layer);
   if (it == overlays_->legends.end()) return nullptr;
-  return it->second.bar() ? static_cast<vtkProp*>(it->second.bar()) : it->second.box();
+  return it->second.bar() ? static_cast<vtkProp*>(it->second.bar()) : it->second.title();
+}
+
+std::pair<vtkTextActor*, vtkTextActor*> Scene::panel_titles() const {
+  return {overlays_->fine_title, overlays_->coarse_title};
+}
+
+const Legend* Scene::legend(Layer layer) const {
+  const auto it = overlays_->legends.find(layer);
+  return it == overlays_->legends.end() ? nullptr : &it->second;
 }
 
 }  // namespace sdog::vis

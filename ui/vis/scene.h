@@ -20,16 +20,19 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
 
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/dog_model.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
+#include "ui/vis/legends.h"
 #include "ui/vis/scene_state.h"
 
 namespace sdog::vis {
@@ -82,6 +85,12 @@ class Scene {
   /// The view's default camera (camera.h) fitted to what is drawn now, for the renderer's current
   /// aspect ratio; also sizes the dots to the zoom. Call it after the render window has its size.
   void reset_camera();
+  /// The 3D view's camera, kept looking the way it looks, moved so that everything drawn now lies
+  /// inside the drawing area (View > Frame all); the top views get their default camera.
+  void frame_all();
+  /// The points of what is drawn in the 3D view: the sheet (trimmed or its full cells), the coarse
+  /// mesh when shown, the handles and targets when on.
+  std::vector<Eigen::Vector3d> drawn_points() const;
   /// Re-places the legends for the renderer's current size (after a resize).
   void layout_legends();
 
@@ -97,6 +106,10 @@ class Scene {
   /// The legend actor of a layer (a vtkScalarBarActor or vtkLegendBoxActor), nullptr for
   /// wireframe.
   vtkProp* legend_prop(Layer layer) const;
+  /// The legend of a layer (nullptr: none).
+  const Legend* legend(Layer layer) const;
+  /// The titles over the fine and the coarse panel of the side-by-side view.
+  std::pair<vtkTextActor*, vtkTextActor*> panel_titles() const;
 
  private:
   struct Overlays;

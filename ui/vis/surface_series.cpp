@@ -12,14 +12,17 @@ SurfaceSeries::SurfaceSeries(const DogMesh& mesh, OutputSet& out, SurfaceExport 
       exports_(std::move(exports)),
       surface_(trimmed_surface(mesh, mesh.V)) {}
 
+void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays, const std::string& path) {
+  write_vtp(triangle_surface(surface, trimmed_arrays(surface, mesh_arrays)), path);
+}
+
 void SurfaceSeries::write_frame(int iteration, const Eigen::MatrixX3d& X,
                                 const MeshArrays& mesh_arrays) {
   char stem[32];
   std::snprintf(stem, sizeof stem, "surface_%04d", iteration);
   place_trimmed_surface(surface_, X);
   const std::string name = std::string(stem) + ".vtp";
-  write_vtp(triangle_surface(surface_, trimmed_arrays(surface_, mesh_arrays)),
-            out_.temporary(name));
+  write_surface_vtp(surface_, mesh_arrays, out_.temporary(name));
   frames_.emplace_back(iteration, name);
   write_exports(stem, mesh_arrays);
 }

@@ -28,6 +28,10 @@ struct SurfaceExport {
   Layer colour = Layer::Patches;       ///< the colour layer of the PLY files' vertex colours
 };
 
+/// Writes the surface (placed at a state) as a .vtp file with normals and the state's fine mesh
+/// arrays carried over (throws OutputError).
+void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays, const std::string& path);
+
 class SurfaceSeries {
  public:
   /// `mesh` (the fine mesh) and `out` must outlive the series.
