@@ -7,6 +7,21 @@
 
 namespace sdog::studio {
 
+const std::vector<std::pair<const char*, const char*>>& mouse_actions() {
+  static const std::vector<std::pair<const char*, const char*>> actions = {
+      {"left drag", "rotates the camera"},
+      {"right drag, wheel", "zooms"},
+      {"middle drag", "pans"},
+      {"Shift + left drag on empty space", "pans"},
+      {"click", "picks a crease (crease-curves overlay on) or the nearest vertex"},
+      {"pointing", "shows the vertex under the mouse in the Inspector"},
+      {"Ctrl + left drag", "selects the vertices in a rubber band"},
+      {"Ctrl + Shift + left drag", "adds the vertices in a rubber band to the selection"},
+      {"Shift + left drag on a target", "moves a handle's target, or takes over a scenario target as a handle"},
+  };
+  return actions;
+}
+
 vtkStandardNewMacro(ClickDragStyle);
 
 void ClickDragStyle::OnLeftButtonDown() {

@@ -8,8 +8,14 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace sdog::studio {
+
+/// What the mouse does in the 3D view: (action, effect) pairs, as Help > Keyboard shortcuts and
+/// the view's tooltip list them.
+const std::vector<std::pair<const char*, const char*>>& mouse_actions();
 
 class ClickDragStyle : public vtkInteractorStyleTrackballCamera {
  public:

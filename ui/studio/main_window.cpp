@@ -5,6 +5,9 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QPushButton>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QMimeData>
@@ -17,6 +20,7 @@
 #include "base/errors.h"
 #include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
+#include "ui/studio/click_drag_style.h"
 #include "ui/studio/crease_inspector.h"
 #include "ui/studio/model_loader.h"
 #include "ui/studio/objective_chart.h"
@@ -28,6 +32,28 @@
 #include "ui/vis/mesh_view.h"
 
 namespace sdog::studio {
+namespace {
+
+// Grid lines (along the longer side) above which a new window shows no wireframe.
+constexpr int kWireframeLines = 60;
+
+// Whether the session changed between two of its snapshots (what a workspace would save).
+bool changed(const Snapshot& a, const Snapshot& b) {
+  if (a.iteration != b.iteration || a.mode != b.mode || a.scenario != b.scenario ||
+      a.crease_settings.size() != b.crease_settings.size() || a.undo_name != b.undo_name ||
+      a.constraints.handles.size() != b.constraints.handles.size() ||
+      a.constraints.angles.size() != b.constraints.angles.size())
+    return true;
+  for (size_t k = 0; k < a.constraints.handles.size(); ++k)
+    if (a.constraints.handles[k].target != b.constraints.handles[k].target) return true;
+  return false;
+}
+
+}  // namespace
+
+QString with_extension(const QString& path, const QString& extension) {
+  return QFileInfo(path).suffix().isEmpty() ? path + "." + extension : path;
+}
 
 MainWindow::MainWindow(const QString& about, QWidget* parent)
     : QMainWindow(parent),
@@ -39,6 +65,20 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   setWindowTitle("Scalable DOGs studio");
   setAcceptDrops(true);
   error_sink_ = [this](const QString& message) { QMessageBox::critical(this, "Scalable DOGs studio", message); };
+  question_sink_ = [this](const QString& question, const QStringList& answers) {
+    QMessageBox box(QMessageBox::Question, "Scalable DOGs studio", question, QMessageBox::NoButton, this);
+    std::vector<QPushButton*> buttons;
+    for (int k = 0; k < answers.size(); ++k)
+      buttons.push_back(box.addButton(answers[k], k + 1 == answers.size() ? QMessageBox::RejectRole
+                                                                           : QMessageBox::AcceptRole));
+    box.setDefaultButton(buttons.front());
+    box.exec();
+    const auto chosen = std::find(buttons.begin(), buttons.end(), box.clickedButton());
+    return chosen == buttons.end() ? static_cast<int>(answers.size()) - 1 : static_cast<int>(chosen - buttons.begin());
+  };
+  save_path_sink_ = [this](const QString& title, const QString& filter) {
+    return QFileDialog::getSaveFileName(this, title, {}, filter);
+  };
 
   view_ = new QVTKOpenGLNativeWidget(this);
   renderer_->SetBackground(1, 1, 1);
@@ -48,9 +88,9 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   // View > Smooth edges turns FXAA on instead.
   render_window_->SetMultiSamples(0);
   view_->setRenderWindow(render_window_);
-  view_->setToolTip("Left drag: rotate, right drag or wheel: zoom, middle drag: pan; click: pick a vertex; "
-                    "Ctrl + drag: select the vertices in a rubber band (with Shift: add them); "
-                    "Shift + drag a handle's target: move it");
+  QString mouse_tip;
+  for (const auto& [action, effect] : mouse_actions()) mouse_tip += QString("%1%2: %3").arg(mouse_tip.isEmpty() ? "" : "\n", action, effect);
+  view_->setToolTip(mouse_tip);
   view_->setMinimumSize(300, 240);
   setCentralWidget(view_);
 
@@ -73,9 +113,15 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
 
   status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG or FOLD file here).");
   statusBar()->addWidget(status_, 1);
+  recording_label_ = new QLabel;
+  recording_label_->setStyleSheet("QLabel { color: #c00000; font-weight: bold; }");
+  recording_label_->setToolTip("Recording frames (File > Record frames: uncheck to stop)");
+  recording_label_->hide();
+  statusBar()->addPermanentWidget(recording_label_);
 
   marks_ = std::make_unique<SelectionMarks>(renderer_);
   build_menus();
+  wireframe_chosen_ = false;  // the menu's initial check is the default, not the user's choice
   build_solver_panel();
   set_up_mouse();
   update_actions();
@@ -112,10 +158,7 @@ void MainWindow::stop_worker() {
   if (!worker_) return;
   QMetaObject::invokeMethod(
       worker_,
-      [w = worker_] {
-        w->pause();
-        w->stop_frames();
-      },
+      [w = worker_] { w->pause(); },
       Qt::BlockingQueuedConnection);
   solver_thread_.quit();
   solver_thread_.wait();
@@ -144,11 +187,16 @@ void MainWindow::start_worker() {
     update_actions();
   });
   connect(worker_, &SolverWorker::stopped_converged, this, [this, generation] {
-    if (generation == generation_)
-      status_->setText(status_->text() + " - stopped: nothing left to do (edit a constraint or press Play to go on)");
+    if (generation != generation_) return;
+    status_->setText(status_->text() + " - done: the targets no longer move and the shape has converged "
+                                       "(edit a constraint or press Play to go on)");
+    if (snapshot_) chart_->add_mark(snapshot_->iteration, "done");
   });
-  connect(worker_, &SolverWorker::workspace_saved, this, &MainWindow::workspace_saved);
-  connect(worker_, &SolverWorker::frames_written, this, &MainWindow::frames_written);
+  connect(worker_, &SolverWorker::workspace_saved, this, [this](const QString& path) {
+    modified_ = false;
+    status_->setText("workspace saved to " + QFileInfo(path).absoluteFilePath());
+    Q_EMIT workspace_saved(path);
+  });
   solver_thread_.start();
 }
 
@@ -173,6 +221,7 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   snapshot_.reset();
   chart_->clear();
   reports_received_ = 0;
+  modified_ = false;
   select_vertex(-1);
   selected_creases_.clear();
   // A run configuration names vertices, crease points and creases of its pattern: another pattern
@@ -195,6 +244,10 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   resolution_ = QString::fromStdString(Resolution{model_->fine.nx(), model_->fine.ny()}.str());  // "auto" resolved
   mode_ = mode_name;
   scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
+  if (!wireframe_chosen_) {  // from about 60 grid lines on, the quad edges hide the surface
+    const QSignalBlocker block(layer_actions_.at(vis::Layer::Wireframe));
+    layer_actions_.at(vis::Layer::Wireframe)->setChecked(std::max(model_->fine.nx(), model_->fine.ny()) <= kWireframeLines);
+  }
   for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
   camera_fitted_ = false;
   start_worker();
@@ -226,6 +279,11 @@ bool MainWindow::change_resolution(const QString& resolution) {
 void MainWindow::show_snapshot(const Snapshot& s) {
   const bool updated = attempt([&] { scene_->update(s.state); });
   if (updated) {
+    if (snapshot_) {
+      if (changed(*snapshot_, s)) modified_ = true;
+      if (snapshot_->mode != s.mode) chart_->add_mark(s.iteration, "mode " + QString::fromStdString(s.mode));
+    }
+    if (!s.scenario_done) scenario_end_marked_ = false;
     snapshot_ = s;
     // The session's crease edits and Creases > Fold change its configuration: the next session
     // (another scenario, new settings) starts with them.
@@ -245,9 +303,11 @@ void MainWindow::show_snapshot(const Snapshot& s) {
         pending_camera_.reset();
       }
       camera_fitted_ = true;
+    } else if (keep_framed_) {
+      scene_->frame_all();
     }
     refresh_selection_marks();  // renders
-    if (png_frames_) write_png_frame();
+    record_frame();
     show_in_inspector(hovered_vertex_);
   }
   if (worker_) worker_->acknowledge();
@@ -258,6 +318,10 @@ void MainWindow::show_snapshot(const Snapshot& s) {
 void MainWindow::show_report(const IterationReport& r) {
   ++reports_received_;
   chart_->add(r);
+  if (snapshot_ && !snapshot_->scenario_done && r.t >= 1 && !scenario_end_marked_) {
+    chart_->add_mark(r.iteration, "scenario end");
+    scenario_end_marked_ = true;
+  }
   QString progress;
   if (r.step.converged) {
     progress = *r.step.converged ? ", converged"
@@ -416,6 +480,7 @@ QString MainWindow::inspector_text() const { return inspector_->text(); }
 QString MainWindow::status_text() const { return status_->text(); }
 
 void MainWindow::set_layer(vis::Layer layer, bool on) {
+  if (layer == vis::Layer::Wireframe) wireframe_chosen_ = true;
   QAction* action = layer_actions_.at(layer);
   if (action->isChecked() != on) action->setChecked(on);  // toggled() applies it
   if (!scene_) return;
@@ -457,10 +522,26 @@ void MainWindow::reset_camera() {
   render();
 }
 
+void MainWindow::frame_all() {
+  if (!scene_) return;
+  scene_->frame_all();
+  render();
+}
+
+void MainWindow::set_keep_framed(bool on) {
+  keep_framed_ = on;
+  if (keep_framed_action_ && keep_framed_action_->isChecked() != on) keep_framed_action_->setChecked(on);
+  if (on) frame_all();
+}
+
 nlohmann::json MainWindow::camera_json() const { return vis::to_json(vis::camera_pose(renderer_->GetActiveCamera())); }
 
 bool MainWindow::save_camera(const QString& path) {
-  return attempt([&] { vis::save_camera(vis::camera_pose(renderer_->GetActiveCamera()), path.toStdString()); });
+  const QString file = with_extension(path, "json");
+  const bool saved =
+      attempt([&] { vis::save_camera(vis::camera_pose(renderer_->GetActiveCamera()), file.toStdString()); });
+  if (saved) status_->setText("camera saved to " + QFileInfo(file).absoluteFilePath());
+  return saved;
 }
 
 bool MainWindow::load_camera(const QString& path) {
@@ -506,6 +587,27 @@ bool MainWindow::set_scenario(const QString& scenario) {
   return set_run_config(config);
 }
 
+bool MainWindow::choose_scenario(const QString& scenario) {
+  if (snapshot_ && scenario.toStdString() != scenario_name(config_.scenario) && left_start()) {
+    const int answer = question_sink_(
+        QString("Another scenario starts a new session from its start state: the current shape (iteration %1) and "
+                "the handles and angle constraints go. Start the %2 scenario?")
+            .arg(snapshot_->iteration)
+            .arg(scenario),
+        {"Start it", "Cancel"});
+    if (answer != 0) {
+      update_actions();
+      return false;
+    }
+  }
+  return set_scenario(scenario);
+}
+
+bool MainWindow::left_start() const {
+  return snapshot_ && (snapshot_->iteration > 0 || !snapshot_->constraints.handles.empty() ||
+                       !snapshot_->constraints.angles.empty());
+}
+
 bool MainWindow::load_run_config(const QString& path) {
   RunConfig config;
   if (!attempt([&] { read_run_config(path.toStdString(), config); })) return false;
@@ -515,16 +617,60 @@ bool MainWindow::load_run_config(const QString& path) {
   return true;
 }
 
-bool MainWindow::set_run_config(const RunConfig& config) {
+bool MainWindow::set_run_config(const RunConfig& config, bool keep_shape) {
   if (!attempt([&] { validate_run_config(config, "solver settings"); })) return false;
   config_ = config;
   update_actions();
   show_solver_state();
   if (!worker_) return true;
-  chart_->clear();
+  modified_ = true;
+  if (!keep_shape) chart_->clear();
   const std::string mode = mode_;
-  post([config, mode](SolverWorker& w) { w.open(config, mode); });
+  post([config, mode, keep_shape](SolverWorker& w) { w.reopen(config, mode, keep_shape); });
   return true;
+}
+
+bool MainWindow::apply_settings(const RunConfig& config) {
+  bool keep = false;
+  if (left_start()) {
+    const int answer = question_sink_(
+        QString("New solver settings start a new session. Apply them to the current shape (iteration %1, with its "
+                "handles and angle constraints), or start again from the scenario's start state?")
+            .arg(snapshot_->iteration),
+        {"Keep the shape", "Start again", "Cancel"});
+    if (answer == 2 || answer < 0) {
+      status_->setText("settings not applied (Apply again to choose)");
+      return false;
+    }
+    keep = answer == 0;
+  }
+  if (!set_run_config(config, keep)) return false;
+  status_->setText(keep ? QString("settings applied to the shape of iteration %1").arg(snapshot_->iteration)
+                        : QString("settings applied: started again from the scenario's start state"));
+  return true;
+}
+
+bool MainWindow::settle_unsaved(const QString& action) {
+  if (!modified_ || !worker_) return true;
+  const int answer = question_sink_(
+      QString("The session has changes that are not saved in a workspace. Save them before %1?").arg(action),
+      {"Save...", "Discard", "Cancel"});
+  if (answer == 1) return true;
+  if (answer != 0) return false;
+  const QString path = save_path_sink_("Save workspace", "Workspaces (*.json)");
+  if (path.isEmpty()) return false;
+  // Waits for the solver thread to write it.
+  QEventLoop wait;
+  bool saved = false;
+  const auto on_saved = connect(this, &MainWindow::workspace_saved, &wait, [&] {
+    saved = true;
+    wait.quit();
+  });
+  const auto on_failed = connect(worker_, &SolverWorker::failed, &wait, [&] { wait.quit(); });
+  if (save_workspace(path)) wait.exec();
+  disconnect(on_saved);
+  disconnect(on_failed);
+  return saved;
 }
 
 void MainWindow::add_handle(int vertex) { add_handles({vertex}); }
@@ -572,7 +718,7 @@ bool MainWindow::save_workspace(const QString& path) {
     report_error("Open a crease pattern first (File > Open pattern).");
     return false;
   }
-  const std::string file = path.toStdString(), pattern = QFileInfo(pattern_path_).absoluteFilePath().toStdString(),
+  const std::string file = with_extension(path, "json").toStdString(), pattern = QFileInfo(pattern_path_).absoluteFilePath().toStdString(),
                     res = resolution_.toStdString();
   const nlohmann::json camera = camera_json();
   post([file, pattern, res, camera](SolverWorker& w) { w.save_workspace(file, pattern, res, camera); });
@@ -591,6 +737,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::open_file(const QString& path) {
+  if (!settle_unsaved("opening " + QFileInfo(path).fileName())) return;
   if (path.endsWith(".json", Qt::CaseInsensitive))
     open_workspace(path);
   else if (path.endsWith(".svg", Qt::CaseInsensitive) || path.endsWith(".fold", Qt::CaseInsensitive))
@@ -600,6 +747,10 @@ void MainWindow::open_file(const QString& path) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!settle_unsaved("closing")) {
+    event->ignore();
+    return;
+  }
   stop_frames();
   stop_worker();
   event->accept();

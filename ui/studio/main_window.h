@@ -8,6 +8,7 @@
 // default); operations that can fail return false after reporting.
 #include <QLabel>
 #include <QMainWindow>
+#include <QStringList>
 #include <QThread>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
@@ -22,9 +23,11 @@
 #include "base/atomic_output.h"
 #include "solver/run/run_config.h"
 #include "solver/session/workspace.h"
+#include "ui/studio/recorder.h"
 #include "ui/studio/snapshot.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/offscreen.h"
+#include "ui/vis/picture.h"
 #include "ui/vis/scene.h"
 
 class QAction;
@@ -38,6 +41,10 @@ class SelectionMarks;
 class SolverPanel;
 class SolverWorker;
 
+/// `path` with `.extension` appended when its file name has no extension (what the save dialogs
+/// do with a name typed without one).
+QString with_extension(const QString& path, const QString& extension);
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
@@ -48,6 +55,16 @@ class MainWindow : public QMainWindow {
 
   /// Where error messages go (default: a modal message box).
   void set_error_sink(std::function<void(const QString&)> sink) { error_sink_ = std::move(sink); }
+  /// How the window asks a question: the index of the answer chosen in `answers` (the last one is
+  /// the cancelling one, also when the question is dismissed). Default: a message box.
+  void set_question_sink(std::function<int(const QString& question, const QStringList& answers)> sink) {
+    question_sink_ = std::move(sink);
+  }
+  /// How the window asks for a file to save to (dialog title, file filter; empty: cancelled).
+  /// Default: a file dialog.
+  void set_save_path_sink(std::function<QString(const QString& title, const QString& filter)> sink) {
+    save_path_sink_ = std::move(sink);
+  }
 
   // File
   /// Meshes the pattern and starts a session on it with the current run configuration. A run
@@ -57,23 +74,35 @@ class MainWindow : public QMainWindow {
   /// The same pattern at another resolution (the mode stays if it can run there).
   bool change_resolution(const QString& resolution);
   bool open_workspace(const QString& path);
+  /// The session has changed (an iteration, an edit, new settings) since it was opened or saved.
+  bool modified() const { return modified_; }
+  /// Before `action` ("closing", "opening another pattern", ...) that would end a modified
+  /// session: asks whether to save it (Save..., Discard, Cancel) and saves it when asked. False:
+  /// the user cancelled, or the save failed (the action should not happen).
+  bool settle_unsaved(const QString& action);
   /// A workspace's state on a model built by the caller (sdog-studio --frame: a saved frame on the
   /// model of its run, meshed with the run's options); `source` names the file it came from.
   bool open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source);
-  /// Saved by the solver thread; workspace_saved() follows.
+  /// Saved by the solver thread (`.json` appended to a name without an extension);
+  /// workspace_saved() follows, and the status bar names the file.
   bool save_workspace(const QString& path);
-  /// The current view rendered offscreen at the given size with the view's camera.
-  bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent);
+  /// The current view rendered offscreen at the given size (`.png` appended to a name without an
+  /// extension) with the view's camera, or (`frame`) its direction with the sheet framed to fill
+  /// the picture. The status bar names the file.
+  bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent, bool frame = false);
   /// The trimmed surface of the current state in sheet units (vis/surface_files.h): OBJ or PLY as
   /// the path's extension says (.obj appended when it names neither); a PLY is coloured by the
   /// colour overlay that is on (patches when none is). The status bar names the file written.
   bool export_surface(const QString& path);
-  /// From now on every shown state is written to `dir` as frame_NNNN.png, and every iteration as
-  /// frame_NNNN.vtu; stop_frames() writes frames.pvd and gives the files their final names.
-  bool start_frames(const QString& dir);
+  /// Records into `dir` (recorder.h): the current state, then the iterations that are multiples of
+  /// `options.every`, as they are shown. `frame`: every picture frames the sheet (the view's
+  /// direction). The status bar shows the count and size while recording.
+  bool start_frames(const QString& dir, const RecordingOptions& options = {}, bool frame = true);
+  /// Ends the recording; frames_written() follows.
   void stop_frames();
-  bool recording_frames() const { return png_frames_ != nullptr; }
-  int png_frames_written() const { return png_frame_count_; }
+  bool recording_frames() const { return recorder_ != nullptr; }
+  int frames_recorded() const;
+  QString recording_indicator() const;
   /// The whole window as it is on screen (sdog-studio --screenshot).
   bool save_window_image(const QString& path);
 
@@ -85,6 +114,10 @@ class MainWindow : public QMainWindow {
   void set_smooth_edges(bool on);
   bool smooth_edges() const { return renderer_->GetUseFXAA(); }
   void reset_camera();
+  /// The camera, looking the way it looks, moved to frame the sheet as it is now (View > Frame all).
+  void frame_all();
+  /// Every new state shown is framed (View > Keep the sheet framed; off by default).
+  void set_keep_framed(bool on);
   /// Draws the 3D view now (what the mouse's camera moves do).
   void render();
   bool save_camera(const QString& path);
@@ -97,9 +130,17 @@ class MainWindow : public QMainWindow {
   void reset_solver();
   bool set_mode(const QString& mode);
   bool set_scenario(const QString& scenario);
+  /// What Solver > Scenario does: asks first when the session has left its start state (the
+  /// shape would be lost), then set_scenario.
+  bool choose_scenario(const QString& scenario);
   bool load_run_config(const QString& path);
-  /// Another run configuration (Solver > Settings): checked, then the session starts again.
-  bool set_run_config(const RunConfig& config);
+  /// Another run configuration (Solver > Settings): checked, then a new session starts, from the
+  /// scenario's start state or (`keep_shape`) at the current positions, iteration and constraints.
+  bool set_run_config(const RunConfig& config, bool keep_shape = false);
+  /// What Apply in the Solver panel does: when the session has left its start state, asks
+  /// whether the new settings act on the current shape or start again (or cancels), then
+  /// set_run_config. The status bar says which.
+  bool apply_settings(const RunConfig& config);
   const RunConfig& run_config() const { return config_; }
   void add_handle(int vertex);
   /// Every vertex of the list a handle, as one edit (Edit > Make handle on a selection).
@@ -154,6 +195,11 @@ class MainWindow : public QMainWindow {
   /// The 3D view's interactor (its style picks on click and drags handles with Shift).
   vtkRenderWindowInteractor* interactor() const;
   const ObjectiveChart* chart() const { return chart_; }
+  /// The text of Help > Keyboard shortcuts: every menu entry with a shortcut, and the mouse.
+  QString keyboard_shortcuts() const;
+  /// Starts dragging the handle or base-scenario target drawn within 15 pixels of display
+  /// position (x, y) (the Shift + drag of the mouse); a scenario target becomes a handle first.
+  bool grab_target(double x, double y);
   SolverPanel* solver_panel() const { return solver_panel_; }
   QAction* layer_action(vis::Layer layer) const { return layer_actions_.at(layer); }
 
@@ -172,6 +218,8 @@ class MainWindow : public QMainWindow {
   /// configuration, at `state` when given.
   void show_model(std::shared_ptr<const DogModel> model, const QString& path, const std::string& mode,
                   const std::optional<Workspace>& state);
+  /// The session has left its start state: an iteration, a handle or an angle constraint.
+  bool left_start() const;
   void build_menus();
   void build_file_menu();
   void build_edit_menu();
@@ -193,7 +241,11 @@ class MainWindow : public QMainWindow {
   void start_worker();
   void show_snapshot(const Snapshot& snapshot);
   void show_report(const IterationReport& report);
-  void write_png_frame();
+  /// How exported pictures and recorded frames draw the view: its layers, options and camera.
+  vis::PictureOptions picture_options(const vis::ImageSize& size) const;
+  /// Records the state shown when the recording is due for it.
+  void record_frame();
+  void update_recording_indicator();
   /// Sends a crease edit of the selection to the session (false: nothing selected, said).
   bool edit_creases(std::optional<Fold> fold, std::optional<double> angle);
   /// The hovered vertex (-1: none, then the picked vertex or creases) in the inspector.
@@ -208,6 +260,12 @@ class MainWindow : public QMainWindow {
 
   QString about_;
   std::function<void(const QString&)> error_sink_;
+  std::function<int(const QString&, const QStringList&)> question_sink_;
+  std::function<QString(const QString&, const QString&)> save_path_sink_;
+  bool modified_ = false;
+  bool keep_framed_ = false;
+  bool scenario_end_marked_ = false;  // the chart marks the iteration the scenario's targets stop
+  bool wireframe_chosen_ = false;  // the user set the wireframe: no default by mesh size
 
   // The open pattern; the scene and the worker refer to the model.
   QString pattern_path_, resolution_;
@@ -238,9 +296,11 @@ class MainWindow : public QMainWindow {
   double drag_depth_ = 0;
   bool drag_moved_ = false;  // the drag in progress has sent a target (its later ones merge)
 
-  std::unique_ptr<OutputSet> png_frames_;
-  int png_frame_count_ = 0;
-  int last_png_iteration_ = -1;
+  std::unique_ptr<Recorder> recorder_;
+  bool record_framed_ = true;
+  QString last_recording_dir_, last_screenshot_;  // what the dialogs offer next time
+  vis::ImageSize last_screenshot_size_{1600, 900};
+  QLabel* recording_label_ = nullptr;
 
   QVTKOpenGLNativeWidget* view_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> render_window_;
@@ -253,7 +313,7 @@ class MainWindow : public QMainWindow {
   std::map<std::string, QAction*> mode_actions_, scenario_actions_;
   std::map<vis::View, QAction*> view_actions_;
   QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr, *coarse_action_ = nullptr;
-  QAction *frames_action_ = nullptr, *smooth_action_ = nullptr;
+  QAction *frames_action_ = nullptr, *smooth_action_ = nullptr, *keep_framed_action_ = nullptr;
   QAction *step_action_ = nullptr, *step10_action_ = nullptr, *reset_action_ = nullptr;
   SolverPanel* solver_panel_ = nullptr;
   QDockWidget* solver_dock_ = nullptr;

@@ -1,6 +1,8 @@
 // MainWindow: pictures, surfaces, frame series and the mouse in the 3D view.
 #include <QAction>
 #include <QFileInfo>
+#include <QLabel>
+#include <algorithm>
 #include <QPixmap>
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkRenderWindowInteractor.h>
@@ -34,22 +36,25 @@ void write_file(const std::string& path, const std::function<void(const std::str
 
 }  // namespace
 
-bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent) {
+bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent, bool frame) {
   if (!snapshot_) {
     report_error("Nothing to export yet: open a crease pattern first (File > Open pattern).");
     return false;
   }
-  vis::PictureOptions options;
-  options.layers = scene_->layers_on();
-  options.scene = scene_options_;
-  options.scene.font_size = 0;
-  options.size = size;
+  const QString file = with_extension(path, "png");
+  vis::PictureOptions options = picture_options({size.width, size.height});
   options.transparent = transparent;
-  options.camera = vis::camera_pose(renderer_->GetActiveCamera());
-  return attempt([&] {
-    write_file(path.toStdString(),
+  options.frame = frame;
+  const bool written = attempt([&] {
+    write_file(file.toStdString(),
                [&](const std::string& tmp) { vis::render_picture(*model_, snapshot_->state, options, tmp); });
   });
+  if (written)
+    status_->setText(QString("screenshot (%1x%2) written to %3")
+                         .arg(size.width)
+                         .arg(size.height)
+                         .arg(QFileInfo(file).absoluteFilePath()));
+  return written;
 }
 
 bool MainWindow::export_surface(const QString& path) {
@@ -67,7 +72,7 @@ bool MainWindow::export_surface(const QString& path) {
       vis::write_surface_file(format, surface, model_->fine, colour, arrays, tmp);
     });
   });
-  if (written) status_->setText("trimmed surface written to " + QString::fromStdString(file));
+  if (written) status_->setText("trimmed surface written to " + QFileInfo(QString::fromStdString(file)).absoluteFilePath());
   return written;
 }
 
@@ -82,48 +87,95 @@ bool MainWindow::save_window_image(const QString& path) {
   });
 }
 
-bool MainWindow::start_frames(const QString& dir) {
-  if (!worker_) {
-    report_error("Open a crease pattern first (File > Open pattern).");
-    return false;
-  }
-  stop_frames();
-  if (!attempt([&] { png_frames_ = std::make_unique<OutputSet>(dir.toStdString()); })) return false;
-  png_frame_count_ = 0;
-  last_png_iteration_ = -1;
-  const std::string d = dir.toStdString();
-  post([d](SolverWorker& w) { w.start_frames(d); });
-  if (frames_action_) frames_action_->setChecked(true);
-  write_png_frame();
-  return true;
-}
-
-void MainWindow::stop_frames() {
-  if (!png_frames_) return;
-  attempt([&] { png_frames_->commit(); });
-  png_frames_.reset();
-  if (frames_action_) frames_action_->setChecked(false);
-  if (worker_) post([](SolverWorker& w) { w.stop_frames(); });
-}
-
-void MainWindow::write_png_frame() {
-  // One picture per iteration shown (edits without an iteration add none).
-  if (!snapshot_ || snapshot_->iteration == last_png_iteration_) return;
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d.png", snapshot_->iteration);
+vis::PictureOptions MainWindow::picture_options(const vis::ImageSize& size) const {
   vis::PictureOptions options;
   options.layers = scene_->layers_on();
   options.scene = scene_options_;
   options.scene.font_size = 0;
-  options.size = {std::max(64, view_->width()), std::max(64, view_->height())};
+  options.size = size;
   options.camera = vis::camera_pose(renderer_->GetActiveCamera());
-  if (!attempt([&] { vis::render_picture(*model_, snapshot_->state, options, png_frames_->temporary(name)); })) {
-    png_frames_.reset();  // drops the frames written so far
-    if (frames_action_) frames_action_->setChecked(false);
+  return options;
+}
+
+bool MainWindow::start_frames(const QString& dir, const RecordingOptions& options, bool frame) {
+  if (!worker_ || !snapshot_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    return false;
+  }
+  stop_frames();
+  if (!attempt([&] { recorder_ = std::make_unique<Recorder>(*model_, dir.toStdString(), options); })) return false;
+  record_framed_ = frame;
+  const int every = options.every;
+  post([every](SolverWorker& w) { w.set_recording(every); });
+  if (frames_action_) frames_action_->setChecked(true);
+  record_frame();  // the state shown now is frame 0
+  update_recording_indicator();
+  return recorder_ != nullptr;
+}
+
+void MainWindow::stop_frames() {
+  if (!recorder_) return;
+  const auto recorder = std::move(recorder_);
+  if (frames_action_) frames_action_->setChecked(false);
+  if (worker_) post([](SolverWorker& w) { w.set_recording(0); });
+  update_recording_indicator();
+  const QString dir = QFileInfo(QString::fromStdString(recorder->dir())).absoluteFilePath();
+  status_->setText(QString("recording stopped: %1 frames (%2 MB) in %3 (frames.csv lists their iterations)")
+                       .arg(recorder->frame_count())
+                       .arg(recorder->bytes() / 1e6, 0, 'f', 1)
+                       .arg(dir));
+  Q_EMIT frames_written(dir, recorder->frame_count());
+}
+
+int MainWindow::frames_recorded() const { return recorder_ ? recorder_->frame_count() : 0; }
+
+QString MainWindow::recording_indicator() const { return recording_label_->isVisible() ? recording_label_->text() : QString(); }
+
+void MainWindow::update_recording_indicator() {
+  if (!recorder_) {
+    recording_label_->hide();
     return;
   }
-  last_png_iteration_ = snapshot_->iteration;
-  ++png_frame_count_;
+  recording_label_->setText(QString("\u25CF REC %1 frames, %2 MB").arg(recorder_->frame_count()).arg(recorder_->bytes() / 1e6, 0, 'f', 1));
+  recording_label_->show();
+}
+
+void MainWindow::record_frame() {
+  if (!recorder_ || !snapshot_ || !recorder_->due(snapshot_->iteration)) return;
+  vis::PictureOptions options =
+      picture_options({std::max(64, view_->width() / 2 * 2), std::max(64, view_->height() / 2 * 2)});
+  options.frame = record_framed_;
+  if (!attempt([&] { recorder_->record(snapshot_->state, snapshot_->iteration, snapshot_->time, options); })) {
+    stop_frames();  // the frames written so far stay
+    return;
+  }
+  update_recording_indicator();
+}
+
+bool MainWindow::grab_target(double x, double y) {
+  if (!snapshot_ || !scene_ || !scene_->layer_on(vis::Layer::Handles)) return false;
+  const auto& drawn = snapshot_->state.constraints.handles;  // the scenario's and the user's
+  if (drawn.empty()) return false;
+  Eigen::MatrixX3d targets(drawn.size(), 3);
+  for (size_t i = 0; i < drawn.size(); ++i) targets.row(i) = drawn[i].target.transpose();
+  const int picked = pick_point(renderer_, targets, x, y, 15);
+  if (picked < 0) return false;
+  const auto& handles = snapshot_->constraints.handles;
+  const auto user = std::find_if(handles.begin(), handles.end(),
+                                 [&](const UserConstraints::Handle& h) { return h.vertex == drawn[picked].vertex; });
+  drag_depth_ = to_display(renderer_, drawn[picked].target).z();
+  if (user != handles.end()) {
+    dragged_handle_ = static_cast<int>(user - handles.begin());
+    drag_moved_ = false;
+  } else {  // a target of the scenario: a handle takes it over, and the drag continues that edit
+    const int vertex = drawn[picked].vertex;
+    const Eigen::Vector3d target = drawn[picked].target;
+    post([vertex, target](SolverWorker& w) { w.add_handle_at(vertex, target); });
+    dragged_handle_ = static_cast<int>(handles.size());
+    drag_moved_ = true;
+    status_->setText(QString("the scenario's target of vertex %1 is now a handle (Edit > Undo takes it back)").arg(vertex));
+  }
+  return true;
 }
 
 vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->interactor(); }
@@ -144,17 +196,7 @@ void MainWindow::set_up_mouse() {
     select_in_rectangle(x0, y0, x1, y1, add);  // renders
     status_->setText(QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.size()));
   };
-  style->on_grab = [this](int x, int y) {
-    if (!snapshot_ || snapshot_->constraints.handles.empty()) return false;
-    const auto& handles = snapshot_->constraints.handles;
-    Eigen::MatrixX3d targets(handles.size(), 3);
-    for (size_t i = 0; i < handles.size(); ++i) targets.row(i) = handles[i].target.transpose();
-    dragged_handle_ = pick_point(renderer_, targets, x, y, 15);
-    if (dragged_handle_ < 0) return false;
-    drag_depth_ = to_display(renderer_, handles[dragged_handle_].target).z();
-    drag_moved_ = false;
-    return true;
-  };
+  style->on_grab = [this](int x, int y) { return grab_target(x, y); };
   // The target follows the mouse while the button is down; the solver gets the newest target
   // whenever it is ready for one (SolverWorker::drag_handle), and the whole drag is one edit.
   auto drag_to = [this](int x, int y) {

@@ -11,8 +11,11 @@
 #include <cmath>
 
 #include "solver/modes/mode_kind.h"
+#include "ui/studio/click_drag_style.h"
+#include "ui/studio/export_dialog.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
+#include "ui/studio/record_dialog.h"
 #include "ui/studio/solver_panel.h"
 #include "ui/studio/solver_settings.h"
 #include "ui/vis/surface_files.h"
@@ -56,6 +59,7 @@ void MainWindow::build_file_menu() {
   QMenu* m = menuBar()->addMenu("&File");
   connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG or FOLD) at a resolution"),
           &QAction::triggered, this, [this] {
+            if (!settle_unsaved("opening another pattern")) return;
             const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg *.fold)");
             if (path.isEmpty()) return;
             bool ok = false;
@@ -67,6 +71,7 @@ void MainWindow::build_file_menu() {
   connect(add_action(m, "Change &resolution...", QKeySequence("Ctrl+R"),
                      "Mesh the open pattern again at another resolution (odd values for the coarse modes)"),
           &QAction::triggered, this, [this] {
+            if (!settle_unsaved("meshing the pattern again")) return;
             bool ok = false;
             const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY, or auto:", QLineEdit::Normal,
                                                       resolution_, &ok);
@@ -76,29 +81,29 @@ void MainWindow::build_file_menu() {
   connect(add_action(m, "Open &workspace...", QKeySequence("Ctrl+Shift+O"),
                      "Open a saved workspace: pattern, resolution, mode, settings, constraints, camera, positions"),
           &QAction::triggered, this, [this] {
+            if (!settle_unsaved("opening a workspace")) return;
             const QString path = QFileDialog::getOpenFileName(this, "Open workspace", {}, "Workspaces (*.json)");
             if (!path.isEmpty()) open_workspace(path);
           });
   connect(add_action(m, "&Save workspace...", QKeySequence::Save, "Save the session as a workspace (JSON)"),
           &QAction::triggered, this, [this] {
-            const QString path = QFileDialog::getSaveFileName(this, "Save workspace", {}, "Workspaces (*.json)");
+            const QString path = save_path_sink_("Save workspace", "Workspaces (*.json)");
             if (!path.isEmpty()) save_workspace(path);
           });
   m->addSeparator();
   connect(add_action(m, "Export &screenshot...", QKeySequence("Ctrl+E"),
-                     "Render the view at a chosen size to PNG, optionally with a transparent background"),
+                     "Render the view to PNG: file, size, transparent background, and the sheet framed to fill "
+                     "the picture or the view's camera as it is"),
           &QAction::triggered, this, [this] {
-            const QString path = QFileDialog::getSaveFileName(this, "Export screenshot", {}, "PNG images (*.png)");
-            if (path.isEmpty()) return;
-            bool ok = false;
-            const QString size = QInputDialog::getText(this, "Image size", "WIDTHxHEIGHT in pixels:", QLineEdit::Normal,
-                                                       "1600x900", &ok);
-            if (!ok) return;
-            vis::ImageSize image;
-            if (!attempt([&] { image = vis::parse_image_size(size.toStdString()); })) return;
-            const bool transparent =
-                QMessageBox::question(this, "Background", "Transparent background?") == QMessageBox::Yes;
-            export_screenshot(path, image, transparent);
+            ExportDialog dialog(last_screenshot_, last_screenshot_size_, this);
+            if (dialog.exec() != QDialog::Accepted) return;
+            if (dialog.path().isEmpty()) {
+              report_error("No file named for the screenshot.");
+              return;
+            }
+            last_screenshot_ = dialog.path();
+            last_screenshot_size_ = dialog.size();
+            export_screenshot(dialog.path(), dialog.size(), dialog.transparent(), dialog.frame());
           });
   connect(add_action(m, "Export sur&face...", QKeySequence("Ctrl+Shift+E"),
                      "Write the trimmed surface of the current state as OBJ or PLY (sheet units, normals; PLY "
@@ -113,8 +118,8 @@ void MainWindow::build_file_menu() {
             export_surface(QString::fromStdString(vis::with_surface_extension(path.toStdString(), format)));
           });
   frames_action_ = add_action(m, "Record &frames...", QKeySequence("Ctrl+Shift+F"),
-                              "Write every iteration shown as PNG and .vtu (with frames.pvd for ParaView) into a "
-                              "folder; uncheck to finish");
+                              "Write states as they are shown into a folder, numbered from frame_0000: pictures, "
+                              ".vtu meshes and/or trimmed surfaces, every N iterations; uncheck to stop");
   frames_action_->setCheckable(true);
   connect(frames_action_, &QAction::triggered, this, [this](bool on) {
     if (!on) {
@@ -122,8 +127,14 @@ void MainWindow::build_file_menu() {
       return;
     }
     frames_action_->setChecked(false);
-    const QString dir = QFileDialog::getExistingDirectory(this, "Folder for the frames");
-    if (!dir.isEmpty()) start_frames(dir);
+    RecordDialog dialog(last_recording_dir_, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    if (dialog.dir().isEmpty()) {
+      report_error("No folder named for the frames.");
+      return;
+    }
+    last_recording_dir_ = dialog.dir();
+    start_frames(dialog.dir(), dialog.options(), dialog.frame());
   });
   m->addSeparator();
   connect(add_action(m, "&Quit", QKeySequence::Quit, "Close the studio"), &QAction::triggered, this, &QWidget::close);
@@ -220,11 +231,20 @@ void MainWindow::build_view_menu() {
   smooth_action_->setCheckable(true);
   connect(smooth_action_, &QAction::toggled, this, &MainWindow::set_smooth_edges);
   m->addSeparator();
-  connect(add_action(m, "&Reset camera", QKeySequence("Home"), "The view's default camera"), &QAction::triggered,
-          this, &MainWindow::reset_camera);
+  connect(add_action(m, "&Reset camera", QKeySequence("Home"), "The view's default camera, framing the sheet as it is"),
+          &QAction::triggered, this, &MainWindow::reset_camera);
+  connect(add_action(m, "&Frame all", QKeySequence("F"),
+                     "Keep looking the way the camera looks, and move it so that the whole sheet as it is now fills "
+                     "the view"),
+          &QAction::triggered, this, &MainWindow::frame_all);
+  keep_framed_action_ = add_action(m, "&Keep the sheet framed", QKeySequence("Shift+F"),
+                                   "Checkable: frame the sheet again at every new state (while playing the camera "
+                                   "follows the sheet)");
+  keep_framed_action_->setCheckable(true);
+  connect(keep_framed_action_, &QAction::toggled, this, &MainWindow::set_keep_framed);
   connect(add_action(m, "Save camera...", QKeySequence(), "Save the camera pose (JSON, as sdog render --camera reads it)"),
           &QAction::triggered, this, [this] {
-            const QString path = QFileDialog::getSaveFileName(this, "Save camera", {}, "Cameras (*.json)");
+            const QString path = save_path_sink_("Save camera", "Cameras (*.json)");
             if (!path.isEmpty()) save_camera(path);
           });
   connect(add_action(m, "Load camera...", QKeySequence(), "Load a saved camera pose"), &QAction::triggered, this, [this] {
@@ -299,7 +319,7 @@ void MainWindow::build_solver_menu() {
   add_choices(m->addMenu("&Mode"), mode_names(), mode_actions_, &MainWindow::set_mode);
   for (auto& [name, a] : mode_actions_)
     if (mode_needs_coarse(parse_mode(name))) a->setToolTip("needs the coarse mesh (odd resolution)");
-  add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::set_scenario);
+  add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::choose_scenario);
   connect(add_action(m, "Se&ttings", QKeySequence("Ctrl+T"),
                      "Show the Solver panel: weights, tolerances, mode options and iteration counts"),
           &QAction::triggered, this, [this] {
@@ -329,13 +349,13 @@ void MainWindow::build_solver_panel() {
     if (!set_mode(mode)) show_solver_state();
   });
   connect(solver_panel_, &SolverPanel::scenario_chosen, this, [this](const QString& scenario) {
-    if (!set_scenario(scenario)) show_solver_state();
+    if (!choose_scenario(scenario)) show_solver_state();
   });
   connect(solver_panel_, &SolverPanel::config_file_wanted, this, &MainWindow::ask_for_run_config);
   // The panel does not show the crease settings: those of the session stay.
   connect(solver_panel_, &SolverPanel::apply_wanted, this, [this](RunConfig config) {
     config.creases = config_.creases;
-    set_run_config(config);
+    if (!apply_settings(config)) show_solver_state();
   });
   show_solver_state();
 }
@@ -344,10 +364,38 @@ void MainWindow::show_solver_state() { solver_panel_->show_state(mode_, config_,
 
 void MainWindow::build_help_menu() {
   QMenu* m = menuBar()->addMenu("&Help");
-  connect(add_action(m, "&About", QKeySequence::HelpContents, "Versions of the studio and its libraries"),
-          &QAction::triggered, this, [this] { QMessageBox::about(this, "About Scalable DOGs studio", about_); });
+  connect(add_action(m, "&Keyboard shortcuts", QKeySequence::HelpContents,
+                     "Every shortcut of the menus and what the mouse does in the view"),
+          &QAction::triggered, this, [this] {
+            QMessageBox box(QMessageBox::NoIcon, "Keyboard shortcuts and mouse", keyboard_shortcuts(), QMessageBox::Close,
+                            this);
+            box.setTextFormat(Qt::RichText);
+            box.exec();
+          });
+  connect(add_action(m, "&About", QKeySequence(), "Versions of the studio and its libraries"), &QAction::triggered,
+          this, [this] { QMessageBox::about(this, "About Scalable DOGs studio", about_); });
   connect(add_action(m, "About &Qt", QKeySequence(), "Qt's version and license"), &QAction::triggered, qApp,
           &QApplication::aboutQt);
+}
+
+QString MainWindow::keyboard_shortcuts() const {
+  QString text = "<table cellspacing=2><tr><th align=left>keys</th><th align=left>menu entry</th></tr>";
+  for (const QMenu* menu : menuBar()->findChildren<QMenu*>()) {
+    if (menu->parent() != menuBar()) continue;  // submenus hold no shortcuts
+    for (const QAction* a : menu->actions()) {
+      if (a->shortcut().isEmpty()) continue;
+      QString entry = a->text();
+      entry.remove('&');
+      QString menu_name = menu->title();
+      menu_name.remove('&');
+      text += QString("<tr><td><b>%1</b></td><td>%2 &gt; %3</td></tr>")
+                  .arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(), menu_name, entry.toHtmlEscaped());
+    }
+  }
+  text += "</table><p><b>Mouse in the 3D view</b></p><table cellspacing=2>";
+  for (const auto& [action, effect] : mouse_actions())
+    text += QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(QString(action).toHtmlEscaped(), QString(effect).toHtmlEscaped());
+  return text + "</table>";
 }
 
 void MainWindow::update_actions() {
@@ -360,6 +408,11 @@ void MainWindow::update_actions() {
   play_action_->setText(playing_ ? "&Pause" : "&Play");
   undo_action_->setEnabled(snapshot_ && snapshot_->can_undo);
   redo_action_->setEnabled(snapshot_ && snapshot_->can_redo);
+  const auto named = [](const char* verb, const std::string& what) {
+    return what.empty() ? QString(verb) : QString("%1 %2").arg(verb, QString::fromStdString(what));
+  };
+  undo_action_->setText(named("&Undo", snapshot_ ? snapshot_->undo_name : std::string()));
+  redo_action_->setText(named("&Redo", snapshot_ ? snapshot_->redo_name : std::string()));
 }
 
 }  // namespace sdog::studio

@@ -38,11 +38,18 @@ void ObjectiveChart::add(const IterationReport& report) {
   p.ms = report.iteration_ms;
   points_.push_back(p);
   while (static_cast<int>(points_.size()) > kMaxIterations) points_.pop_front();
+  while (!marks_.empty() && marks_.front().iteration < points_.front().iteration) marks_.pop_front();
+  update();
+}
+
+void ObjectiveChart::add_mark(int iteration, const QString& label) {
+  marks_.push_back({iteration, label});
   update();
 }
 
 void ObjectiveChart::clear() {
   points_.clear();
+  marks_.clear();
   update();
 }
 
@@ -105,6 +112,20 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
     painter.drawLine(QPointF(area.right() + 6, y - 4), QPointF(area.right() + 20, y - 4));
     painter.setPen(series_pen(s).color());
     painter.drawText(QPointF(area.right() + 24, y), s < kTermCount ? term_name(s) : "dog residual");
+  }
+  // Marks: a dotted line through both boxes, the label at its top (staggered when they crowd).
+  double last_label_end = -1e9;
+  int row = 0;
+  for (const Mark& m : marks_) {
+    const double x = x_of(m.iteration);
+    if (x < area.left() - 0.5 || x > area.right() + 0.5) continue;
+    painter.setPen(QPen(QColor(90, 90, 90), 1.0, Qt::DotLine));
+    painter.drawLine(QPointF(x, top.top()), QPointF(x, bottom.bottom()));
+    row = x < last_label_end ? row + 1 : 0;
+    const double text_width = painter.fontMetrics().horizontalAdvance(m.label);
+    painter.setPen(QColor(60, 60, 60));
+    painter.drawText(QPointF(std::min(x + 3, area.right() - text_width), top.top() + 12 + 13 * (row % 3)), m.label);
+    last_label_end = x + 3 + text_width;
   }
   painter.setPen(Qt::black);
   if (!used.empty()) {

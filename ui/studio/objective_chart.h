@@ -1,7 +1,9 @@
 #pragma once
 // A live chart of the solver's iterations, drawn with QPainter: above, log10 of each objective term
 // (unweighted sums of squares, Diagnostics::terms) and of the DOG residual; below, the time per
-// iteration in milliseconds. Keeps the last kMaxIterations iterations.
+// iteration in milliseconds; marks (a mode switch, the end of the scenario, done) as labelled
+// vertical lines. Keeps the last kMaxIterations iterations.
+#include <QString>
 #include <QWidget>
 #include <array>
 #include <deque>
@@ -17,8 +19,15 @@ class ObjectiveChart : public QWidget {
   static constexpr int kMaxIterations = 400;
   explicit ObjectiveChart(QWidget* parent = nullptr);
   void add(const IterationReport& report);
+  /// A vertical line at `iteration` labelled `label` (dropped with the iterations it lies before).
+  void add_mark(int iteration, const QString& label);
   void clear();
   int point_count() const { return static_cast<int>(points_.size()); }
+  struct Mark {
+    int iteration;
+    QString label;
+  };
+  const std::deque<Mark>& marks() const { return marks_; }
   QSize sizeHint() const override { return {360, 320}; }
 
  protected:
@@ -31,6 +40,7 @@ class ObjectiveChart : public QWidget {
     double ms;
   };
   std::deque<Point> points_;
+  std::deque<Mark> marks_;
 };
 
 }  // namespace sdog::studio

@@ -7,11 +7,13 @@
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
 
+#include "ui/vis/palette.h"
+
 namespace sdog::studio {
 namespace {
 
-// RGB of the selection.
-constexpr double kRed = 1.0, kGreen = 0.55, kBlue = 0.0;
+// RGB of the selection (not the handles' orange).
+constexpr double kRed = vis::kSelectionColor[0], kGreen = vis::kSelectionColor[1], kBlue = vis::kSelectionColor[2];
 
 }  // namespace
 

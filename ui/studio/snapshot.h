@@ -26,6 +26,9 @@ struct Snapshot {
   std::vector<CreaseSetting> crease_settings;
   ScenarioKind scenario = ScenarioKind::kCorners;
   bool can_undo = false, can_redo = false;
+  std::string undo_name, redo_name;  ///< what Undo and Redo would undo or redo (Session::undo_name)
+  double time = 0;                   ///< scenario time of the iteration (Session::time)
+  bool scenario_done = false;        ///< the base scenario's targets no longer move
 };
 
 }  // namespace sdog::studio

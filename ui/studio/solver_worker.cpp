@@ -1,6 +1,8 @@
 #include "ui/studio/solver_worker.h"
 
 #include <QMetaObject>
+#include <QThread>
+#include <algorithm>
 #include <exception>
 
 #include "base/errors.h"
@@ -11,6 +13,11 @@ SolverWorker::SolverWorker(std::shared_ptr<const DogModel> model)
     : model_(std::move(model)), play_timer_(new QTimer(this)) {
   play_timer_->setInterval(0);
   connect(play_timer_, &QTimer::timeout, this, [this] {
+    if (hold_ && !snapshot_taken_) {  // a state to record is not shown yet
+      QThread::msleep(1);
+      return;
+    }
+    hold_ = false;
     try {
       step();
     } catch (const std::exception& e) {
@@ -56,13 +63,16 @@ void SolverWorker::send_snapshot() {
   snap.scenario = s.config().scenario;
   snap.can_undo = s.can_undo();
   snap.can_redo = s.can_redo();
+  snap.undo_name = s.undo_name();
+  snap.redo_name = s.redo_name();
+  snap.time = s.time();
+  snap.scenario_done = s.scenario_done();
   snapshot_taken_ = false;
   Q_EMIT snapshot_ready(snap);
 }
 
 void SolverWorker::open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state) {
   pause();
-  stop_frames();
   session_.reset();
   session_ = std::make_unique<Session>(*model_, config, parse_mode(mode));
   if (state) {
@@ -75,7 +85,6 @@ void SolverWorker::open(const RunConfig& config, const std::string& mode, const 
 
 void SolverWorker::step() {
   const IterationReport report = session().step();
-  if (frame_writer_) frame_writer_->on_iteration(report, session_->positions());
   Q_EMIT iterated(report);
   if (report.step.failed) {
     pause();
@@ -90,8 +99,24 @@ void SolverWorker::step() {
     Q_EMIT stopped_converged();
     return;
   }
-  // While playing, a state the window has not taken yet is replaced by the next one.
-  if (!play_timer_->isActive() || snapshot_taken_) send_snapshot();
+  // While playing, a state the window has not taken yet is replaced by the next one, unless the
+  // window records this one.
+  const bool record = record_every_ > 0 && session_->iteration() % record_every_ == 0;
+  if (!play_timer_->isActive() || snapshot_taken_ || record) {
+    send_snapshot();
+    hold_ = record;
+  }
+}
+
+void SolverWorker::set_recording(int every) {
+  record_every_ = std::max(0, every);
+  hold_ = false;
+}
+
+void SolverWorker::reopen(const RunConfig& config, const std::string& mode, bool keep_shape) {
+  std::optional<Workspace> state;
+  if (keep_shape && session_) state = workspace_of(*session_, "", "", nlohmann::json());
+  open(config, mode, state);
 }
 
 void SolverWorker::play() {
@@ -126,6 +151,12 @@ void SolverWorker::set_mode(const std::string& mode) {
 
 void SolverWorker::add_handles(const std::vector<int>& vertices) {
   session().add_handles(vertices);
+  play_on();
+  send_snapshot();
+}
+
+void SolverWorker::add_handle_at(int vertex, const Eigen::Vector3d& target) {
+  session().add_handle_at(vertex, target);
   play_on();
   send_snapshot();
 }
@@ -206,26 +237,6 @@ void SolverWorker::save_workspace(const std::string& path, const std::string& pa
                                   const nlohmann::json& camera) {
   sdog::save_workspace(workspace_of(session(), pattern, resolution, camera), path);
   Q_EMIT workspace_saved(QString::fromStdString(path));
-}
-
-void SolverWorker::start_frames(const std::string& dir) {
-  stop_frames();
-  Session& s = session();
-  auto files = std::make_unique<OutputSet>(dir);
-  // Every iteration is written; the last one is whichever comes before stop_frames().
-  auto writer = std::make_unique<vis::FrameWriter>(*model_, s.problem(), *files, 1, -1);
-  if (s.iteration() == 0) writer->write_start(s.positions());  // frame_0000 is the start state
-  frame_files_ = std::move(files);
-  frame_writer_ = std::move(writer);
-}
-
-void SolverWorker::stop_frames() {
-  if (!frame_writer_) return;
-  auto writer = std::move(frame_writer_);
-  auto files = std::move(frame_files_);
-  writer->finish();
-  files->commit();
-  Q_EMIT frames_written(QString::fromStdString(files->dir()), writer->frame_count());
 }
 
 }  // namespace sdog::studio

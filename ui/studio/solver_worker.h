@@ -22,7 +22,6 @@
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
 #include "ui/studio/snapshot.h"
-#include "ui/vis/frame_writer.h"
 
 namespace sdog::studio {
 
@@ -47,6 +46,9 @@ class SolverWorker : public QObject {
   // Commands (call them through post()). Each sends a snapshot afterwards.
   /// A new session; with `state` (a workspace, a saved frame) at its constraints and positions.
   void open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state = std::nullopt);
+  /// A new session with another configuration; `keep_shape`: at the current session's positions,
+  /// iteration and constraints (new weights and tolerances act on the current shape).
+  void reopen(const RunConfig& config, const std::string& mode, bool keep_shape);
   /// One iteration. While playing, an iteration that reports the shape converged after the
   /// scenario's end stops the play (stopped_converged()); the next edit of the constraints plays
   /// on. A failed iteration pauses and throws SolverError with what the user can do.
@@ -56,6 +58,8 @@ class SolverWorker : public QObject {
   void reset();
   void set_mode(const std::string& mode);
   void add_handles(const std::vector<int>& vertices);
+  /// Session::add_handle_at: a target of the base scenario taken over by a handle (a drag starts).
+  void add_handle_at(int vertex, const Eigen::Vector3d& target);
   void move_handle(int handle, const Eigen::Vector3d& target);
   void remove_handle(int handle);
   void add_angle(int crease_point, double degrees);
@@ -67,10 +71,9 @@ class SolverWorker : public QObject {
   void redo();
   void save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
                       const nlohmann::json& camera);
-  /// Frames (.vtu of the fine mesh, every iteration from now on) into `dir`.
-  void start_frames(const std::string& dir);
-  /// Writes frames.pvd and renames the frames to their final names.
-  void stop_frames();
+  /// While the window records (every >= 1; 0: not recording), the state of every iteration that
+  /// is a multiple of `every` is sent, and playing waits until the window has taken it.
+  void set_recording(int every);
 
  Q_SIGNALS:
   void snapshot_ready(const sdog::studio::Snapshot& snapshot);
@@ -78,7 +81,6 @@ class SolverWorker : public QObject {
   void failed(const QString& message);
   void playing_changed(bool playing);
   void workspace_saved(const QString& path);
-  void frames_written(const QString& dir, int count);
   /// Playing stopped by itself: the shape has converged and nothing moves.
   void stopped_converged();
 
@@ -100,8 +102,8 @@ class SolverWorker : public QObject {
   QTimer* play_timer_;
   bool stopped_converged_ = false;  ///< the play stopped by itself; an edit resumes it
   std::atomic<bool> snapshot_taken_{true};
-  std::unique_ptr<OutputSet> frame_files_;
-  std::unique_ptr<vis::FrameWriter> frame_writer_;
+  int record_every_ = 0;
+  bool hold_ = false;  ///< playing waits for the window to take the snapshot sent (one to record)
 };
 
 }  // namespace sdog::studio
