@@ -128,8 +128,7 @@ void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a
   QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until] {
     if (window.snapshot()->iteration < until) return;
     QTimer::singleShot(300, &window, [&] {
-      window.frame_all();  // the whole sheet as it is now
-      if (window.save_window_image(QString::fromStdString(a.screenshot))) {
+      if (window.save_window_image(QString::fromStdString(a.screenshot), /*frame_sheet=*/true)) {
         std::cout << "wrote " << a.screenshot << "\n";
         qt.exit(exit_code);
       }

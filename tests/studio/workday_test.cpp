@@ -195,7 +195,7 @@ class WorkdayTest : public QObject {
   }
 
   // View > Frame all: the deformed sheet, zoomed out of view, is put back inside it from the same
-  // direction, filling it; the window picture then shows the whole sheet.
+  // direction, filling it; the window picture of sdog-studio --screenshot shows the whole sheet.
   void frames_the_deformed_sheet() {
     open();
     steps(40);  // the corners scenario lifts the sheet
@@ -213,14 +213,17 @@ class WorkdayTest : public QObject {
     QTemporaryDir dir;
     const QString cut = dir.filePath("cut.png"), whole = dir.filePath("whole.png");
     QVERIFY(window_->save_window_image(cut));
-    window_->frame_all();
+    window_->frame_all();  // View > Frame all
     const Framing f = framing_of(renderer, sheet);
     QVERIFY(f.inside);
     QVERIFY2(f.fill > 0.6, qPrintable(QString::number(f.fill)));
     double after[3];
     camera->GetDirectionOfProjection(after);
     QVERIFY(before[0] * after[0] + before[1] * after[1] + before[2] * after[2] > 0.99999);
-    QVERIFY(window_->save_window_image(whole));
+    // What sdog-studio --screenshot saves: the window with the sheet framed first.
+    camera->Dolly(3);
+    renderer->ResetCameraClippingRange();
+    QVERIFY(window_->save_window_image(whole, /*frame_sheet=*/true));
     // Keep the sheet framed: every new state is framed as it comes.
     camera->Dolly(3);
     renderer->ResetCameraClippingRange();

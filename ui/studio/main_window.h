@@ -103,8 +103,9 @@ class MainWindow : public QMainWindow {
   bool recording_frames() const { return recorder_ != nullptr; }
   int frames_recorded() const;
   QString recording_indicator() const;
-  /// The whole window as it is on screen (sdog-studio --screenshot).
-  bool save_window_image(const QString& path);
+  /// The whole window as it is on screen; `frame_sheet`: the view frames the sheet first (View >
+  /// Frame all), as sdog-studio --screenshot does.
+  bool save_window_image(const QString& path, bool frame_sheet = false);
 
   // View
   void set_layer(vis::Layer layer, bool on);

@@ -76,7 +76,8 @@ bool MainWindow::export_surface(const QString& path) {
   return written;
 }
 
-bool MainWindow::save_window_image(const QString& path) {
+bool MainWindow::save_window_image(const QString& path, bool frame_sheet) {
+  if (frame_sheet) frame_all();
   render();
   const QPixmap picture = grab();
   return attempt([&] {
