@@ -191,6 +191,9 @@ class WorkdayTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, kWait);
     QVERIFY(QFileInfo::exists(dir.filePath("ws2.json")));
     QVERIFY(other->status_text().contains("ws2.json"));
+    QVERIFY(other->save_camera(dir.filePath("view")));  // View > Save camera too
+    QVERIFY(QFileInfo::exists(dir.filePath("view.json")));
+    QVERIFY(other->status_text().contains(dir.filePath("view.json")));
     QVERIFY(errors_.isEmpty());
   }
 
