@@ -28,6 +28,9 @@ const OptionTable<StandardOptions>& standard_option_table() {
           real_option("substep_step_length", &O::substep_step_length, Bounds::between(0, 1),
                       "a sub-step towards moved targets is kept when its line search kept at least this "
                       "fraction of the full step; else it is halved"),
+          real_option("substep_constraint_tolerance", &O::substep_constraint_tolerance, Bounds::positive(),
+                      "between the continuation sub-steps of one iteration, restoration stops once the largest "
+                      "DOG constraint residual is within this; the iteration ends within constraint_tolerance"),
           choice_option("stitching", &O::stitching, stitching_names(),
                         "exact: the copies of a crease point coincide as hard constraints; soft: only the "
                         "stitching term pulls them together (the thesis)"),

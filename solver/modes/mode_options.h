@@ -28,6 +28,10 @@ struct StandardOptions {
   /// A continuation sub-step is kept when its line search kept at least this fraction of the
   /// full step.
   double substep_step_length = 0.25;
+  /// Between the continuation sub-steps of one iteration, restoration stops once the DOG
+  /// constraints are within this; the iteration's state is restored to sqp.constraint_tolerance
+  /// at its end.
+  double substep_constraint_tolerance = 0.02;
   Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
   /// step of the two-resolution modes, which may run beside the patch solves, uses 1

@@ -148,6 +148,9 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   StepReport report;
   report.converged = false;
   std::optional<StepReport> rejected;  // the last sub-step not kept, when no later one was
+  // Between sub-steps the constraints need only stay near: the state the iteration ends with is
+  // restored to the constraint tolerance below, once.
+  sqp_->set_restoration_tolerance(options_.substep_constraint_tolerance);
   for (int attempts = 0; attempts < options_.max_iteration_steps; ++attempts) {
     const double remaining = reached_->distance(goal);
     if (remaining == 0) break;
@@ -172,7 +175,17 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     if (smallest) break;  // x stays where it was, at the targets it met
     substep_ = std::min(substep_, s) / 2;
   }
+  sqp_->set_restoration_tolerance(0);
   reached_->install(problem_);
+  if (sqp_->constraint_values(x).lpNorm<Eigen::Infinity>() > options_.sqp.constraint_tolerance) {
+    const SqpReport restored = sqp_->restore_constraints(x);
+    report.work += restored.work;
+    if (restored.failed) {
+      report.failed = true;
+      report.failure = restored.failure;
+      return report;
+    }
+  }
   report.target_fraction = 1 - reached_->distance(goal) / distance;
   if (report.target_fraction == 0 && rejected && rejected->failed) {  // not even the smallest sub-step
     report.failed = true;

@@ -16,7 +16,10 @@
 // converge), at most max_iteration_steps; once converged, held iterations cost nothing (no
 // factorisation) until a target moves. Targets that move are followed by continuation: from the
 // targets the state meets towards the requested ones, in sub-steps of at most max_target_step of
-// the sheet's size, each one SQP step and its restoration. A sub-step is kept when its line search
+// the sheet's size, each one SQP step and a restoration that stops once the constraints are
+// within substep_constraint_tolerance (the iteration's state is restored to the constraint
+// tolerance once, at its end: most sub-steps then need no factorisation of their own for the
+// restoration). A sub-step is kept when its line search
 // kept at least substep_step_length of the full step, or when it is short (at most 1/4 of the
 // cap), and the next one is then twice as long; else it is rolled back and halved, down to 1/1024
 // of the remaining motion. An iteration takes at most max_iteration_steps sub-steps and reports how

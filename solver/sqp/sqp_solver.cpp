@@ -63,7 +63,8 @@ SqpSolver::SqpSolver(int vertex_count, std::vector<WeightedTerm> objective, cons
 SqpSolver::~SqpSolver() = default;
 
 SqpSolver::Pass SqpSolver::ordinary_pass() const {
-  return {options_.constraint_tolerance, options_.max_steps, options_.max_restoration_steps, false,
+  return {std::max(options_.constraint_tolerance, restoration_tolerance_), options_.max_steps,
+          options_.max_restoration_steps, false,
           options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max, true,
           options_.trusted_backtracks};
 }

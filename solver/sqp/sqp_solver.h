@@ -118,6 +118,9 @@ class SqpSolver {
   SqpReport project(Dofs& x);
   static constexpr int kProjectionSteps = 100;
 
+  /// The ordinary steps' restoration stops within max(tolerance, constraint_tolerance) (0, the
+  /// default: constraint_tolerance). The standard mode loosens it between continuation sub-steps.
+  void set_restoration_tolerance(double tolerance) { restoration_tolerance_ = tolerance; }
   void set_weight(size_t term, double weight);
   double weight(size_t term) const { return objective_[term].weight; }
   const Eigen::VectorXd& multipliers() const { return lambda_; }
@@ -219,6 +222,7 @@ class SqpSolver {
     std::vector<std::vector<int>> column_rank;
   } rows_;
   Eigen::VectorXd lambda_;
+  double restoration_tolerance_ = 0;
   /// The matrices of a factorisation: the linear terms' constant Hessian (recomputed when a
   /// weight changes), the objective Hessian H, J^T J (G) and K = H + rho G (handed to CHOLMOD).
   struct Matrices {

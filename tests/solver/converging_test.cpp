@@ -3,6 +3,9 @@
 // held state costs nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+
 #include "geometry/dog_model.h"
 #include "solver/session/session.h"
 #include "tests/solver/session_fixture.h"
@@ -24,13 +27,17 @@ struct Followed {
   double held_distance = 0;  ///< of the held corner to its target at the end
   double dog_max = 0;
   double stitch_gap_max = 0;
+  double worst_dog_max = 0;  ///< over every iteration
+  int factorizations = 0;
 };
 
 // The first grid corner held, the last one's target moved by `move` at once; steps until an
 // iteration reports convergence (at most max_iterations).
-Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) {
+Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations,
+                std::optional<double> substep_tolerance = std::nullopt) {
   RunConfig config = test::interactive();
   config.standard.converge = converge;
+  if (substep_tolerance) config.standard.substep_constraint_tolerance = *substep_tolerance;
   Session s(model(), config, ModeKind::kStandard);
   const int last = model().fine.vertex_count() - 1;
   s.add_handle(0);
@@ -50,6 +57,8 @@ Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations) 
     if (r.step.target_fraction < 1) ++f.partial_iterations;
     f.dog_max = r.diagnostics.dog_max;
     f.stitch_gap_max = r.diagnostics.stitch_gap_max;
+    f.worst_dog_max = std::max(f.worst_dog_max, r.diagnostics.dog_max);
+    f.factorizations += r.step.work.factorizations;
   }
   f.distance = (vertex_of(s.positions(), last) - target).norm();
   f.held_distance = (vertex_of(s.positions(), 0) - held).norm();
@@ -73,6 +82,27 @@ TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
   const Followed one_step = follow(move, false, f.iterations);
   ASSERT_FALSE(one_step.failed);
   EXPECT_GT(one_step.distance, 1) << "after " << one_step.iterations << " iterations";
+}
+
+// Between the sub-steps of one iteration the restoration stops at substep_constraint_tolerance;
+// the iteration's state is restored to the constraint tolerance once, at its end. The same far
+// target costs fewer factorisations than with every sub-step restored to the constraint
+// tolerance, and every iteration still ends within it.
+TEST(Continuation, LooseSubstepsSaveFactorisationsAndEveryIterationEndsFeasible) {
+  const Eigen::MatrixX3d& rest = model().fine.V;
+  const Eigen::Vector3d move = 0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
+  const double tolerance = RunConfig{}.standard.sqp.constraint_tolerance;
+  EXPECT_GT(RunConfig{}.standard.substep_constraint_tolerance, 100 * tolerance);  // the default is loose
+  const Followed loose = follow(move, true, 400);
+  const Followed tight = follow(move, true, 400, tolerance);
+  for (const Followed* f : {&loose, &tight}) {
+    ASSERT_FALSE(f->failed);
+    EXPECT_TRUE(f->converged);
+    EXPECT_LT(f->distance, 0.5);
+    EXPECT_LE(f->worst_dog_max, 1.01 * tolerance);
+  }
+  EXPECT_LT(loose.factorizations, 0.9 * tight.factorizations)
+      << "loose " << loose.factorizations << ", tight " << tight.factorizations;
 }
 
 // A target 50 units off the sheet, in its plane and away from the held corner. Were the sheet

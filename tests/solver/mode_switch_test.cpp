@@ -98,9 +98,11 @@ TEST(ModeSwitch, StandardRefoldsASheetHandedOverUnfolded) {
   int folded = 0;
   for (size_t k = 9; k < reports.size(); ++k) {
     folded += reports[k].step.folded;
-    // One escalation at most, from the base weight 1 to max_fold_bias 1e6: an iteration whose
-    // escalation ended unfolded takes none in its later sub-steps.
-    EXPECT_LE(reports[k].step.work.fold_retries, 6) << "iteration " << reports[k].iteration;
+    // No ladder climbed again and again: an iteration whose escalation (from the base weight 1 to
+    // max_fold_bias 1e6, six rungs) ended unfolded takes none in its later sub-steps; one that
+    // folded the sheet may be followed by one more. The cost stays that of a few sub-steps.
+    EXPECT_LE(reports[k].step.work.fold_retries, 12) << "iteration " << reports[k].iteration;
+    EXPECT_LE(reports[k].step.work.factorizations, 60) << "iteration " << reports[k].iteration;
     EXPECT_LT(reports[k].diagnostics.dog_max, 1e-4) << "iteration " << reports[k].iteration;
   }
   // A crease site near flat may flip for an iteration on the way (which ones depends on rounding).
