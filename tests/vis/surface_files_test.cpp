@@ -38,6 +38,8 @@ using test::arcs_standard_state;
 // four_corner_arcs.svg is a 400 x 400 sheet (viewBox 0 0 400 400, y negated: y from -400 to 0);
 // at 21x21 grid lines a grid column is 400 / 20 sheet units wide.
 constexpr double kArcsSheet = 400, kArcsScale = 20.0 / 400;
+// A mesh coordinate along `axis` of four_corner_arcs in sheet units (its drawing's y runs down).
+double in_sheet_units(double mesh, int axis) { return mesh / kArcsScale + (axis == 1 ? -kArcsSheet : 0); }
 
 using test::read_poly;
 using test::triangle_area;
@@ -116,8 +118,7 @@ TEST_F(SurfaceFileTest, ObjReadsBackWithNormalsInSheetUnits) {
     in >> p[0] >> p[1] >> p[2];
     ASSERT_LT(v, surface.vertex_count());
     for (int k = 0; k < 3; ++k)
-      ASSERT_NEAR(p[k], surface.V(v, k) / kArcsScale + (k == 1 ? -kArcsSheet : 0),
-                  1e-12 * kArcsSheet)
+      ASSERT_NEAR(p[k], in_sheet_units(surface.V(v, k), k), 1e-12 * kArcsSheet)
           << "vertex " << v << " axis " << k;
     ++v;
   }
@@ -126,11 +127,8 @@ TEST_F(SurfaceFileTest, ObjReadsBackWithNormalsInSheetUnits) {
   double b[6];
   obj->GetBounds(b);
   for (int k = 0; k < 3; ++k) {
-    const double shift = k == 1 ? -kArcsSheet : 0;
-    EXPECT_NEAR(b[2 * k], surface.V.col(k).minCoeff() / kArcsScale + shift, 1e-6 * kArcsSheet)
-        << "axis " << k;
-    EXPECT_NEAR(b[2 * k + 1], surface.V.col(k).maxCoeff() / kArcsScale + shift, 1e-6 * kArcsSheet)
-        << "axis " << k;
+    EXPECT_NEAR(b[2 * k], in_sheet_units(surface.V.col(k).minCoeff(), k), 1e-6 * kArcsSheet) << "axis " << k;
+    EXPECT_NEAR(b[2 * k + 1], in_sheet_units(surface.V.col(k).maxCoeff(), k), 1e-6 * kArcsSheet) << "axis " << k;
   }
 }
 
@@ -152,8 +150,7 @@ TEST_F(SurfaceFileTest, PlyReadsBackWithNormalsAndPatchColours) {
     double p[3];
     ply->GetPoint(v, p);
     for (int k = 0; k < 3; ++k) {
-      const double expected = surface.V(v, k) / kArcsScale + (k == 1 ? -kArcsSheet : 0);
-      ASSERT_NEAR(p[k], expected, 1e-6 * kArcsSheet) << "vertex " << v << " axis " << k;
+      ASSERT_NEAR(p[k], in_sheet_units(surface.V(v, k), k), 1e-6 * kArcsSheet) << "vertex " << v << " axis " << k;
       ASSERT_NEAR(normals->GetComponent(v, k), surface.N(v, k), 1e-6) << "vertex " << v;
     }
     const vis::Rgb8 c = bytes(vis::patch_color(surface.vertex_patch[v]));

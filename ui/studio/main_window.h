@@ -20,7 +20,6 @@
 #include <optional>
 #include <vector>
 
-#include "base/atomic_output.h"
 #include "solver/run/run_config.h"
 #include "solver/session/workspace.h"
 #include "ui/studio/recorder.h"

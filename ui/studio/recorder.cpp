@@ -39,46 +39,46 @@ void Recorder::record(const vis::SceneState& state, int iteration, double time, 
   std::snprintf(stem, sizeof stem, "%04d", frames_);
   const std::string frame = std::string("frame_") + stem, surface = std::string("surface_") + stem;
   OutputSet out(dir_);
-  std::string files;
-  auto add = [&](const std::string& name) { files += (files.empty() ? "" : " ") + name; };
+  std::vector<std::string> names;     // this frame's files
+  std::uintmax_t index_bytes = 0;     // frames.csv and the .pvd files, rewritten whole every frame
+  auto write_index = [&](const std::string& name, const std::string& text) {
+    out.write_text(name, text);
+    index_bytes += text.size();
+  };
   vis::TimeSteps vtu_steps = vtu_steps_, surface_steps = surface_steps_;
   if (options_.png) {
-    vis::render_picture(model_, state, picture, out.temporary(frame + ".png"));
-    add(frame + ".png");
+    names.push_back(frame + ".png");
+    vis::render_picture(model_, state, picture, out.temporary(names.back()));
   }
   const MeshArrays arrays = options_.vtu || options_.surface ? vis::frame_arrays(model_, state.fields) : MeshArrays{};
   if (options_.vtu) {
-    vis::write_frame_vtu(model_, state.fine, arrays, out.temporary(frame + ".vtu"));
-    vtu_steps.emplace_back(iteration, frame + ".vtu");
-    out.write_text("frames.pvd", vis::pvd_collection(vtu_steps));
-    add(frame + ".vtu");
+    names.push_back(frame + ".vtu");
+    vis::write_frame_vtu(model_, state.fine, arrays, out.temporary(names.back()));
+    vtu_steps.emplace_back(iteration, names.back());
+    write_index("frames.pvd", vis::pvd_collection(vtu_steps));
   }
   if (options_.surface) {
     if (!surface_) surface_ = std::make_unique<TrimmedSurface>(trimmed_surface(model_.fine, state.fine));
     place_trimmed_surface(*surface_, state.fine);
-    vis::write_surface_vtp(*surface_, arrays, out.temporary(surface + ".vtp"));
-    surface_steps.emplace_back(iteration, surface + ".vtp");
-    out.write_text("surface.pvd", vis::pvd_collection(surface_steps));
-    add(surface + ".vtp");
+    names.push_back(surface + ".vtp");
+    vis::write_surface_vtp(*surface_, arrays, out.temporary(names.back()));
+    surface_steps.emplace_back(iteration, names.back());
+    write_index("surface.pvd", vis::pvd_collection(surface_steps));
   }
-  char row[96];
+  char row[64];
   std::snprintf(row, sizeof row, "%d,%d,%.6g,", frames_, iteration, time);
-  const std::string table = table_ + row + files + "\n";
-  out.write_text("frames.csv", table);
-  std::uintmax_t before = 0;
-  for (const char* rewritten : {"frames.csv", "frames.pvd", "surface.pvd"}) {
+  std::string table = table_ + row;
+  for (size_t k = 0; k < names.size(); ++k) table += (k ? " " : "") + names[k];
+  table += "\n";
+  write_index("frames.csv", table);
+  out.commit();
+  for (const std::string& name : names) {
     std::error_code ec;
-    const auto size = fs::file_size(fs::path(dir_) / rewritten, ec);
-    if (!ec) before += size;
+    const auto size = fs::file_size(fs::path(dir_) / name, ec);
+    if (!ec) frame_bytes_ += size;
   }
-  std::uintmax_t after = 0;
-  for (const std::string& path : out.commit()) {
-    std::error_code ec;
-    const auto size = fs::file_size(path, ec);
-    if (!ec) after += size;
-  }
-  bytes_ += after - before;
-  table_ = table;
+  index_bytes_ = index_bytes;
+  table_ = std::move(table);
   vtu_steps_ = std::move(vtu_steps);
   surface_steps_ = std::move(surface_steps);
   last_iteration_ = iteration;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "geometry/dog_model.h"
 #include "geometry/trimmed_surface.h"
@@ -43,8 +44,8 @@ class Recorder {
   void record(const vis::SceneState& state, int iteration, double time, const vis::PictureOptions& picture);
 
   int frame_count() const { return frames_; }
-  /// Bytes written so far.
-  std::uintmax_t bytes() const { return bytes_; }
+  /// Bytes on disk of the recording's files.
+  std::uintmax_t bytes() const { return frame_bytes_ + index_bytes_; }
   const std::string& dir() const { return dir_; }
   const RecordingOptions& options() const { return options_; }
   /// Checks the options (UsageError naming the problem).
@@ -57,7 +58,8 @@ class Recorder {
   std::unique_ptr<TrimmedSurface> surface_;  // topology built with the first surface written
   int frames_ = 0;
   int last_iteration_ = -1;
-  std::uintmax_t bytes_ = 0;
+  std::uintmax_t frame_bytes_ = 0;  // the frames' files
+  std::uintmax_t index_bytes_ = 0;  // frames.csv and the .pvd files as last written
   std::string table_;  // frames.csv
   vis::TimeSteps vtu_steps_, surface_steps_;
 };

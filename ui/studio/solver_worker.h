@@ -17,7 +17,6 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include "base/atomic_output.h"
 #include "solver/run/run_config.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"

@@ -448,17 +448,25 @@ void Scene::apply_layers() {
   layout_legends();
 }
 
+ImageSize Scene::viewport_size() const {
+  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
+  ImageSize s;  // 1600 x 800
+  if (size && size[0] > 0) s.width = size[0];
+  if (size && size[1] > 0) s.height = size[1];
+  return s;
+}
+
 void Scene::layout_legends() {
   Overlays& o = *overlays_;
-  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
   std::vector<const Legend*> stack;
   for (Layer l : all_layers())
     if (o.legends.count(l)) stack.push_back(&o.legends.at(l));
-  stack_legends(stack, size && size[0] > 0 ? size[0] : 1600, size && size[1] > 0 ? size[1] : 800, options_.font_size);
+  const ImageSize size = viewport_size();
+  stack_legends(stack, size.width, size.height, options_.font_size);
   for (vtkTextActor* t : o.texts()) t->GetTextProperty()->SetFontSize(options_.font_size);
   // The side-by-side titles: each no wider than the distance between the panels' centres (an
   // estimate: 0.55 em per character), so that they never run into each other.
-  if (options_.view == View::SideBySide && coarse_ && size) {
+  if (options_.view == View::SideBySide && coarse_ && renderer_->GetRenderWindow()) {
     const double a = o.fine_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
     const double b = o.coarse_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
     const double chars = static_cast<double>(
@@ -472,8 +480,8 @@ void Scene::layout_legends() {
 
 void Scene::reset_camera() {
   Overlays& o = *overlays_;
-  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
-  const double width = size && size[0] > 0 ? size[0] : 1600, height = size && size[1] > 0 ? size[1] : 800;
+  const ImageSize size = viewport_size();
+  const double width = size.width, height = size.height;
   Bounds b{1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
   merge_bounds(b, fine_->grid()->GetBounds());
   if (coarse_ && coarse_->surface_actor()->GetVisibility()) {
@@ -537,8 +545,8 @@ void Scene::frame_all() {
     reset_camera();
     return;
   }
-  const int* size = renderer_->GetRenderWindow() ? renderer_->GetSize() : nullptr;
-  const double width = size && size[0] > 0 ? size[0] : 1600, height = size && size[1] > 0 ? size[1] : 800;
+  const ImageSize size = viewport_size();
+  const double width = size.width, height = size.height;
   vtkCamera* camera = renderer_->GetActiveCamera();
   apply_camera_pose(framed_camera(drawn_points(), camera_pose(camera), width / height, !options_.paper), camera);
   renderer_->ResetCameraClippingRange();

@@ -33,6 +33,7 @@
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/legends.h"
+#include "ui/vis/offscreen.h"
 #include "ui/vis/scene_state.h"
 
 namespace sdog::vis {
@@ -113,6 +114,8 @@ class Scene {
 
  private:
   struct Overlays;
+  /// The renderer's size in pixels; 1600 x 800 while it has no window (or no size yet).
+  ImageSize viewport_size() const;
   void apply_layers();
   void apply_view();
   void refresh();
