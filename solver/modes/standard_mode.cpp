@@ -16,6 +16,9 @@ constexpr double kFoldBiasGrowth = 10;
 constexpr double kSmallestSubstep = 1.0 / 1024;
 // A sub-step that moves the targets at most this fraction of max_target_step is short.
 constexpr double kShortSubstep = 1.0 / 4;
+// Held iterations in a row that do not lower the objective below the lowest one since the targets
+// last moved (by more than converged_decrease) before the state counts as converged.
+constexpr int kHeldWithoutProgress = 5;
 
 // The largest side of the bounding box of the rest state.
 double sheet_size(const Dofs& rest) {
@@ -113,7 +116,10 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     converged_ = false;
   }
   const double distance = reached_->distance(goal);
-  if (distance > 0) converged_ = false;
+  if (distance > 0) {
+    converged_ = false;
+    held_best_.reset();
+  }
   StepReport report;
   if (converged_ && !last) {  // nothing left to do: no factorisation
     report.converged = true;
@@ -130,6 +136,10 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   }
   // A raised fold bias serves the iteration that raised it only.
   if (options_.folding) set_fold_bias(base_fold_bias_);
+  if (distance == 0 && !report.failed && !converged_ && !lowers_objective(x)) {
+    converged_ = true;
+    report.converged = true;
+  }
   if (last && !report.failed) finish(x, report);
   return report;
 }
@@ -195,6 +205,18 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   return report;
 }
 
+bool StandardMode::lowers_objective(const Dofs& x) {
+  const double f = sqp_->objective(x);
+  const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
+  if (!held_best_ || f < *held_best_ - margin) {
+    held_best_ = f;
+    held_without_progress_ = 0;
+    return true;
+  }
+  held_best_ = std::min(*held_best_, f);
+  return ++held_without_progress_ < kHeldWithoutProgress;
+}
+
 void StandardMode::finish(Dofs& x, StepReport& report) {
   const double tolerance = options_.sqp.final_constraint_tolerance;
   constraints_.use_final_scale(true);
@@ -257,6 +279,7 @@ void StandardMode::start_from(const Dofs&) {
   sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
   restore_first_ = options_.stitching == Stitching::kExact;
   reached_.reset();
+  held_best_.reset();
   substep_ = 1;
   converged_ = false;
   if (options_.folding) set_fold_bias(base_fold_bias_);

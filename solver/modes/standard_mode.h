@@ -28,10 +28,13 @@
 // line search of converging steps turns to the fallback merit penalty after the full step
 // (SqpSolver::converge). A target the sheet cannot reach (off the sheet, or asking
 // for stretching) leaves the sheet as close as its constraints allow: the targets are soft, and
-// the iteration converges there. In a converging iteration a raised fold bias returns to its base
-// weight at the iteration's end, and once an escalation has ended unfolded the iteration's later
-// sub-steps take none. The last iteration of a run projects x to the final constraint
-// tolerance (finish()).
+// the iteration converges there. Held iterations that keep taking steps without lowering the
+// objective (steps that cycle, or a crease that unfolds in every iteration and is refolded by the
+// fold-bias retry) count as converged once kHeldWithoutProgress of them in a row have not lowered
+// it by more than converged_decrease below its lowest value since the targets last moved. In a
+// converging iteration a raised fold bias returns to its base weight at the iteration's end, and
+// once an escalation has ended unfolded the iteration's later sub-steps take none. The last
+// iteration of a run projects x to the final constraint tolerance (finish()).
 #include <memory>
 #include <optional>
 
@@ -75,6 +78,10 @@ class StandardMode : public Mode {
   StepReport converge(Dofs& x, bool last);
   /// Continuation sub-steps from reached_ towards `goal`, `distance` away (moved targets).
   StepReport follow(Dofs& x, const Targets& goal, double distance);
+  /// After a held iteration that has not converged: false once kHeldWithoutProgress held
+  /// iterations in a row have not lowered the objective by more than converged_decrease below its
+  /// lowest value since the targets last moved.
+  bool lowers_objective(const Dofs& x);
   /// The last converging iteration's end: x projected to the final constraint tolerance.
   void finish(Dofs& x, StepReport& report);
   /// One SQP solve, its work added to `report`; false when it failed.
@@ -93,6 +100,8 @@ class StandardMode : public Mode {
   std::optional<Targets> reached_;  ///< the targets the state was last solved for
   double substep_ = 1;              ///< of the next continuation sub-step
   bool converged_ = false;          ///< x is converged for reached_
+  std::optional<double> held_best_;  ///< lowest objective of the held iterations since a move
+  int held_without_progress_ = 0;    ///< held iterations in a row that did not lower it
   /// A fold-bias escalation of this converging iteration ended unfolded: its later sub-steps
   /// take none (each would climb the whole ladder again, a solve per rung).
   bool ladder_failed_ = false;

@@ -10,7 +10,8 @@ const OptionTable<SqpOptions>& sqp_option_table() {
       integer_option("max_steps", &S::max_steps, Bounds::at_least(1), "optimality (SQP) steps per iteration at most"),
       real_option("converged_decrease", &S::converged_decrease, Bounds::positive(),
                   "a converging iteration has converged once a full step would lower the objective by at most "
-                  "this fraction of max(objective, 1), to first order"),
+                  "this fraction of max(objective, 1), to first order, or once five held iterations in a row have not "
+                  "lowered it by more than that"),
       real_option("epsilon", &S::epsilon, Bounds::positive(),
                   "regularisation of the KKT system's constraint block (rho = 1/epsilon)"),
       real_option("restoration_epsilon", &S::restoration_epsilon, Bounds::positive(),

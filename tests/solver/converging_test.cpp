@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <optional>
 
+#include "geometry/crease_pattern.h"
 #include "geometry/dog_model.h"
+#include "solver/experiments/pace.h"
 #include "solver/session/session.h"
 #include "tests/solver/session_fixture.h"
 #include "tests/test_support.h"
@@ -118,6 +120,24 @@ TEST(Continuation, AnUnreachableTargetConvergesAsCloseAsTheSheetAllows) {
   EXPECT_LT(f.distance + f.held_distance, 50);
   EXPECT_GT(f.held_distance, 1);  // the whole sheet is pulled along
   EXPECT_LT(f.dog_max, 1e-4);
+}
+
+// parallel_curves_4 at 43x31 (cells 2.3 times as tall as wide) with the targets set at once: in
+// every held iteration one crease unfolds and the fold-bias retry refolds it, so the held
+// iterations cycle around the same objective and a full step never becomes small. Five held
+// iterations in a row that do not lower the objective make the state converged, and the run stops
+// spending factorisations on it.
+TEST(Continuation, HeldIterationsThatCycleCountAsConverged) {
+  SDOG_REQUIRE_SHARED();
+  const DogModel m = build_dog_model(
+      read_crease_pattern(test::reference_patterns_dir() + "/parallel_curves_4.svg"), parse_resolution("43x31"));
+  const PaceResult r = run_pace(m, RunConfig{}, 1, 40);
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  ASSERT_TRUE(r.time_to_shape_s.has_value()) << "no held iteration converged in " << r.iterations;
+  EXPECT_LT(r.iterations, 30);
+  EXPECT_LT(r.factorizations, 800);
+  EXPECT_TRUE(r.folded);
+  EXPECT_LE(r.dog_max, 1e-6);
 }
 
 // Once converged, a held state costs no factorisation, and says it is converged.
