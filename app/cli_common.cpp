@@ -1,8 +1,9 @@
 #include "app/cli_common.h"
 
-#include "app/commands.h"
-
 #include <cmath>
+#include <iostream>
+
+#include "app/commands.h"
 
 #include "base/errors.h"
 
@@ -44,7 +45,7 @@ void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required) {
                "build only the fine mesh (allows even resolutions; no coarse mesh, no map)");
 }
 
-DogModel build_model(const PatternOptions& o) {
+DogModel build_model(const PatternOptions& o, bool print_warnings) {
   MeshOptions mesh_options;
   mesh_options.cleaning.merge_fraction = o.merge_fraction;
   mesh_options.cleaning.snap_fraction = o.snap_fraction;
@@ -55,7 +56,10 @@ DogModel build_model(const PatternOptions& o) {
   svg.flatness = o.flatness;
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
   const Resolution res = resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
-  return build_dog_model(pattern, res, mesh_options);
+  DogModel model = build_dog_model(pattern, res, mesh_options);
+  if (print_warnings)
+    for (const auto& w : model_warnings(model)) std::cerr << "warning: " << w << "\n";
+  return model;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

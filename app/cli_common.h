@@ -30,7 +30,9 @@ void add_preset_option(CLI::App& cmd, std::string& preset);
 void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig& config);
 
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
-DogModel build_model(const PatternOptions& o);
+/// With `print_warnings`, prints the model's warnings (model_warnings) to stderr, one
+/// "warning: ..." line each.
+DogModel build_model(const PatternOptions& o, bool print_warnings = true);
 
 /// argv as one line (for the records a command writes); arguments with spaces, quotes or `$` in
 /// single quotes, as a POSIX shell reads them.

@@ -58,7 +58,7 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
         {"cleaned", m.clean.creases.size()},
         {"junctions", m.clean.junctions.size()},
         {"list", creases}}},
-      {"warnings", m.clean.warnings},
+      {"warnings", model_warnings(m)},
       {"cleaning", m.clean.changes},
       {"mesh_units",
        {{"scale", m.fine.scale}, {"origin", {m.fine.sheet_origin.x(), m.fine.sheet_origin.y()}}}},
@@ -104,7 +104,7 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
     if (c.angle) os << ", " << format_number(*c.angle) << " degrees";
     os << "\n";
   }
-  for (const auto& w : m.clean.warnings) os << "  warning:    " << w << "\n";
+  for (const auto& w : model_warnings(m)) os << "  warning:    " << w << "\n";
   if (verbose)
     for (const auto& c : m.clean.changes) os << "  cleaning:   " << c << "\n";
   print_mesh(os, "fine          ", m.fine, m.fine_topology, m.fine_res);
@@ -138,7 +138,7 @@ void register_mesh_command(CLI::App& app, Runner& run) {
   cmd->callback([args, &run]() {
     run = [args]() {
       const auto start = std::chrono::steady_clock::now();
-      const DogModel model = build_model(args->pattern);
+      const DogModel model = build_model(args->pattern, false);  // the summary lists the warnings
       const double seconds = seconds_since(start);
       std::vector<std::string> files;
       if (!args->out.empty()) {

@@ -93,4 +93,12 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   return m;
 }
 
+std::vector<std::string> model_warnings(const DogModel& model) {
+  std::vector<std::string> warnings = model.clean.warnings;
+  const auto& box = model.pattern.sheet.bbox;
+  if (std::string grid = cell_shape_warning(model.fine_res, box.width(), box.height()); !grid.empty())
+    warnings.push_back(std::move(grid));
+  return warnings;
+}
+
 }  // namespace sdog

@@ -42,6 +42,24 @@ Resolution resolve_resolution(const std::string& text, double width, double heig
   return width >= height ? Resolution{longer, shorter} : Resolution{shorter, longer};
 }
 
+std::string cell_shape_warning(const Resolution& res, double width, double height) {
+  if (!(width > 0 && height > 0) || res.nx < 2 || res.ny < 2) return {};
+  const double cell_w = width / (res.nx - 1), cell_h = height / (res.ny - 1);
+  const double aspect = std::max(cell_w, cell_h) / std::min(cell_w, cell_h);
+  if (aspect < kMaxCellAspect) return {};
+  // The side with more lines keeps them; the other gets lines for square cells (odd, in range).
+  auto lines_for = [](int lines, double along, double across) {
+    const int cells = 2 * static_cast<int>(std::lround((lines - 1) * across / along / 2));
+    return std::clamp(cells + 1, kMinResolution, kMaxResolution);
+  };
+  const Resolution square = res.nx >= res.ny ? Resolution{res.nx, lines_for(res.nx, width, height)}
+                                             : Resolution{lines_for(res.ny, height, width), res.ny};
+  return "grid cells are " + format_number(std::round(aspect * 10) / 10) + " times as " +
+         (cell_h > cell_w ? "tall as wide" : "wide as tall") + " (" + res.str() + " on a sheet of " +
+         format_number(width) + " x " + format_number(height) +
+         "): folds are smoothest on nearly square cells, which " + square.str() + " gives";
+}
+
 void check_resolution(const Resolution& res, bool need_coarse) {
   for (int v : {res.nx, res.ny}) {
     if (v < kMinResolution)

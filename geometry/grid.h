@@ -30,6 +30,14 @@ Resolution parse_resolution(const std::string& text);
 /// along the longer side, the other side in proportion (odd, at least 3).
 Resolution resolve_resolution(const std::string& text, double width, double height);
 
+/// Cells at least this many times as long one way as the other get a warning.
+constexpr double kMaxCellAspect = 1.5;
+
+/// Empty, or a warning when the cells of `res` over a sheet `width` x `height` are at least
+/// kMaxCellAspect times as long one way as the other, naming the resolution (odd, same lines
+/// along the side with more) whose cells are nearly square.
+std::string cell_shape_warning(const Resolution& res, double width, double height);
+
 /// Throws UsageError unless 3 <= nx, ny <= 2001, and both are odd when `need_coarse`.
 void check_resolution(const Resolution& res, bool need_coarse);
 

@@ -1,6 +1,7 @@
 // `sdog mesh` as a user runs it: counts, JSON, files, help.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,31 @@ TEST(MeshCommand, JsonMatchesTheLibrary) {
   EXPECT_EQ(classes["star"].get<int>() + classes["bnd3"].get<int>() + classes["bnd2"].get<int>() +
                 classes["bnd4"].get<int>(),
             m.fine.vertex_count());
+}
+
+// one_curve's sheet is 600 x 400: at 41x7 its cells are 15 by 66.7, 4.4 times as tall as wide;
+// 41x27 gives nearly square cells (15 by 15.4). `sdog mesh` lists the warning in its summary, the
+// other commands print it to stderr and go on.
+TEST(MeshCommand, WarnsAboutLongGridCells) {
+  const std::string pattern = test::dataset("one_curve.svg");
+  const std::string warning = "grid cells are 4.4 times as tall as wide";
+  const auto json = test::run_sdog("mesh " + pattern + " --res 41x7 --json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  const auto warnings = nlohmann::json::parse(json.out)["warnings"];
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].get<std::string>().find(warning), std::string::npos) << warnings;
+  EXPECT_NE(warnings[0].get<std::string>().find("41x27"), std::string::npos) << warnings;
+  EXPECT_EQ(json.err, "");
+  const auto text = test::run_sdog("mesh " + pattern + " --res 41x7");
+  EXPECT_NE(text.out.find("warning:    " + warning), std::string::npos) << text.out;
+  const auto run = test::run_sdog("run " + pattern + " --res 41x7 --iters 1 --hold 0 --frames-every 0 -q --out " +
+                                  test::temp_dir("long_cells"));
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.err.rfind("warning: " + warning, 0), 0u) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  const auto square = test::run_sdog("mesh " + pattern + " --res 41x27 --json");
+  ASSERT_EQ(square.code, 0) << square.err;
+  EXPECT_TRUE(nlohmann::json::parse(square.out)["warnings"].empty());
 }
 
 TEST(MeshCommand, TextSummaryNamesEveryCount) {

@@ -24,6 +24,26 @@ TEST(Resolution, IsCheckedForRangeAndParity) {
   EXPECT_EQ(coarse_resolution({31, 21}), (Resolution{16, 11}));
 }
 
+// parallel_curves_4's sheet, 275 x 456, at 43x31: cells of 275 / 42 = 6.55 by 456 / 30 = 15.2,
+// 2.3 times as tall as wide. With the 43 lines across kept, square cells need 42 * 456 / 275 =
+// 69.6, so 70 cells (even, for an odd resolution): 43x71.
+TEST(CellShape, WarnsAboutLongCellsAndNamesASquareResolution) {
+  EXPECT_EQ(cell_shape_warning({41, 41}, 400, 400), "");
+  EXPECT_EQ(cell_shape_warning({25, 41}, 275, 456), "");  // the automatic resolution
+  const std::string tall = cell_shape_warning({43, 31}, 275, 456);
+  EXPECT_NE(tall.find("2.3 times as tall as wide"), std::string::npos) << tall;
+  EXPECT_NE(tall.find("43x31 on a sheet of 275 x 456"), std::string::npos) << tall;
+  EXPECT_NE(tall.find("43x71"), std::string::npos) << tall;
+  // 400 x 200 at 21x41: cells of 20 by 5; the 41 lines along the height stay, and 40 * 400 / 200
+  // = 80 cells across.
+  const std::string wide = cell_shape_warning({21, 41}, 400, 200);
+  EXPECT_NE(wide.find("4 times as wide as tall"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("81x41"), std::string::npos) << wide;
+  // The threshold, 1.5: cells of 10 by 14.9 pass, 10 by 15 do not.
+  EXPECT_EQ(cell_shape_warning({31, 21}, 300, 298), "");
+  EXPECT_NE(cell_shape_warning({31, 21}, 300, 300), "");
+}
+
 TEST(AxisLayout, WithoutPinsTheEndsAreTheOnlyAnchors) {
   const AxisLayout a = layout_axis(0, 10, 11, {});
   ASSERT_EQ(a.anchors.size(), 2u);

@@ -557,6 +557,19 @@ class StudioTest : public QObject {
     QVERIFY(errors_.isEmpty());
   }
 
+  // one_curve's sheet is 600 x 400: at 41x7 the cells are 4.4 times as tall as wide, and the
+  // status bar says so and names 41x27, whose cells are nearly square; at 41x27 it says nothing.
+  void warns_about_long_grid_cells() {
+    const QString pattern = QString(SDOG_DATASETS_DIR) + "/one_curve.svg";
+    QVERIFY(window_->open_pattern(pattern, "41x7"));
+    QVERIFY2(window_->status_text().contains("warning: grid cells are 4.4 times as tall as wide") &&
+                 window_->status_text().contains("41x27"),
+             qPrintable(window_->status_text()));
+    QVERIFY(window_->change_resolution("41x27"));
+    QVERIFY2(!window_->status_text().contains("warning"), qPrintable(window_->status_text()));
+    QVERIFY(errors_.isEmpty());
+  }
+
   void edits_the_solver_settings() {
     open();
     // The Solver panel shows the configuration in use; edits wait for Apply.

@@ -49,6 +49,13 @@ bool changed(const Snapshot& a, const Snapshot& b) {
   return false;
 }
 
+// The model's warnings (model_warnings) for the status bar: " - warning: ..." each.
+QString warnings_text(const DogModel& model) {
+  QString text;
+  for (const auto& w : model_warnings(model)) text += " - warning: " + QString::fromStdString(w);
+  return text;
+}
+
 }  // namespace
 
 QString with_extension(const QString& path, const QString& extension) {
@@ -262,7 +269,7 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
                        .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
                                                : QString("no coarse mesh (even resolution)"))
                        .arg(QString::fromStdString(mode_), QString(scenario_name(config_.scenario))) +
-                   dropped);
+                   dropped + warnings_text(*model_));
   update_actions();
   show_solver_state();
   render();
