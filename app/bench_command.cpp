@@ -108,6 +108,7 @@ void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
   for (const auto& pattern : a.patterns)
     for (const auto& res : a.resolutions) {
       const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
+      print_warnings(model);
       std::vector<PaceResult> results;
       for (int k : a.ks) {
         if (tty) std::fprintf(stderr, "\r  %s %s: K = %d ...   ", pattern.c_str(), res.c_str(), k);

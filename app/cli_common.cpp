@@ -45,7 +45,7 @@ void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required) {
                "build only the fine mesh (allows even resolutions; no coarse mesh, no map)");
 }
 
-DogModel build_model(const PatternOptions& o, bool print_warnings) {
+DogModel build_model(const PatternOptions& o, bool warn) {
   MeshOptions mesh_options;
   mesh_options.cleaning.merge_fraction = o.merge_fraction;
   mesh_options.cleaning.snap_fraction = o.snap_fraction;
@@ -57,9 +57,12 @@ DogModel build_model(const PatternOptions& o, bool print_warnings) {
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
   const Resolution res = resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
   DogModel model = build_dog_model(pattern, res, mesh_options);
-  if (print_warnings)
-    for (const auto& w : model_warnings(model)) std::cerr << "warning: " << w << "\n";
+  if (warn) print_warnings(model);
   return model;
+}
+
+void print_warnings(const DogModel& model) {
+  for (const auto& w : model_warnings(model)) std::cerr << "warning: " << w << "\n";
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

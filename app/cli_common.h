@@ -30,9 +30,11 @@ void add_preset_option(CLI::App& cmd, std::string& preset);
 void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig& config);
 
 /// Reads the pattern and builds the model (meshes, topology, map). Throws the library errors.
-/// With `print_warnings`, prints the model's warnings (model_warnings) to stderr, one
-/// "warning: ..." line each.
-DogModel build_model(const PatternOptions& o, bool print_warnings = true);
+/// With `warn`, prints the model's warnings (print_warnings).
+DogModel build_model(const PatternOptions& o, bool warn = true);
+
+/// The model's warnings (model_warnings) on stderr, one "warning: ..." line each.
+void print_warnings(const DogModel& model);
 
 /// argv as one line (for the records a command writes); arguments with spaces, quotes or `$` in
 /// single quotes, as a POSIX shell reads them.

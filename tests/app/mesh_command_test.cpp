@@ -56,6 +56,9 @@ TEST(MeshCommand, WarnsAboutLongGridCells) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.err.rfind("warning: " + warning, 0), 0u) << run.err;
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  const auto pace = test::run_sdog("bench --pace --pattern " + pattern + " --res 41x7 --ks 1");
+  ASSERT_EQ(pace.code, 0) << pace.err;
+  EXPECT_NE(pace.err.find("warning: " + warning), std::string::npos) << pace.err;
   const auto square = test::run_sdog("mesh " + pattern + " --res 41x27 --json");
   ASSERT_EQ(square.code, 0) << square.err;
   EXPECT_TRUE(nlohmann::json::parse(square.out)["warnings"].empty());
