@@ -7,10 +7,10 @@
 #include <QDropEvent>
 #include <QEventLoop>
 #include <QFileDialog>
-#include <QPushButton>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QStatusBar>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtGlobal>

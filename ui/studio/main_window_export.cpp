@@ -2,11 +2,11 @@
 #include <QAction>
 #include <QFileInfo>
 #include <QLabel>
-#include <algorithm>
 #include <QPixmap>
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkRenderWindowInteractor.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 

@@ -2,6 +2,7 @@
 
 #include <QMetaObject>
 #include <QThread>
+
 #include <algorithm>
 #include <exception>
 

@@ -15,8 +15,8 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "base/errors.h"
