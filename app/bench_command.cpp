@@ -15,6 +15,7 @@
 #include "solver/experiments/case_rounds.h"
 #include "solver/experiments/pace.h"
 #include "solver/experiments/tables.h"
+#include "solver/config/run_config_json.h"
 #include "solver/experiments/trim_cost.h"
 
 namespace sdog::cli {
@@ -46,6 +47,7 @@ struct BenchArgs {
   int threads = 0;
   std::string csv;
   std::string preset;
+  std::string config;
   bool pace = false;
   bool trim = false;
   std::vector<int> ks{250, 50, 10, 1};
@@ -98,6 +100,10 @@ void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
   if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("--pace: give --pattern and --res");
   RunConfig config;
   apply_preset_option(a.preset, false, config);
+  if (!a.config.empty()) {
+    read_run_config(a.config, config);
+    validate_run_config(config, a.config);
+  }
   const std::vector<std::string> header{"pattern",    "res",      "K",     "objective", "ratio",   "dog_max",
                                         "stitch_gap", "folded",   "handle_distance", "facts", "shape_s",
                                         "total_s",    "iterations", "failure"};
@@ -150,6 +156,7 @@ void bench(const BenchArgs& a) {
     csv_name = path.filename().string();
   }
   if (a.pace) return bench_pace(a, out, csv_name);
+  if (!a.config.empty()) throw UsageError("--config: only with --pace (the timing benchmark runs the preset's settings)");
   RunConfig config;
   apply_preset_option(a.preset, a.thesis_grid, config);
   config.iterations = a.iterations;
@@ -221,6 +228,9 @@ void register_bench_command(CLI::App& app, Runner& runner) {
       ->delimiter(',')
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
+  cmd->add_option("--config", a->config,
+                  "--pace: JSON file of weights and solver options (as for sdog run), applied after --preset; the "
+                  "benchmark sets the scenario, iterations, hold and mode");
   cmd->add_option("--max-hold", a->max_hold, "--pace: held iterations at most")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();

@@ -31,6 +31,10 @@ const OptionTable<StandardOptions>& standard_option_table() {
           real_option("substep_constraint_tolerance", &O::substep_constraint_tolerance, Bounds::positive(),
                       "between the continuation sub-steps of one iteration, restoration stops once the largest "
                       "DOG constraint residual is within this; the iteration ends within constraint_tolerance"),
+          boolean_option("settle", &O::settle,
+                         "once the targets rest and the shape has converged, also fold from the run's start "
+                         "state straight to them and keep the fold with the lower objective (converging "
+                         "iterations only)"),
           choice_option("stitching", &O::stitching, stitching_names(),
                         "exact: the copies of a crease point coincide as hard constraints; soft: only the "
                         "stitching term pulls them together (the thesis)"),

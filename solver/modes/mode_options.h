@@ -32,6 +32,10 @@ struct StandardOptions {
   /// constraints are within this; the iteration's state is restored to sqp.constraint_tolerance
   /// at its end.
   double substep_constraint_tolerance = 0.02;
+  /// Once the targets have come to rest and the state has converged, a converging run also folds
+  /// the sheet from the state it started from straight to those targets and keeps whichever of
+  /// the two converged folds has the lower objective (standard_mode.h).
+  bool settle = true;
   Stitching stitching = Stitching::kExact;
   /// BLAS threads of the factorisations (blas_threads.h); 0: default_blas_threads(). The coarse
   /// step of the two-resolution modes, which may run beside the patch solves, uses 1

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "solver/problem/diagnostics.h"
 #include "solver/sqp/blas_threads.h"
 #include "solver/sqp/sqp_solver.h"
 #include "solver/terms/crease_geometry.h"
@@ -19,6 +20,8 @@ constexpr double kShortSubstep = 1.0 / 4;
 // Held iterations in a row that do not lower the objective below the lowest one since the targets
 // last moved (by more than converged_decrease) before the state counts as converged.
 constexpr int kHeldWithoutProgress = 5;
+// Iterations of the straight fold at most; a settling that has not converged by then is dropped.
+constexpr int kMaxSettlingIterations = 200;
 
 // The largest side of the bounding box of the rest state.
 double sheet_size(const Dofs& rest) {
@@ -27,6 +30,12 @@ double sheet_size(const Dofs& rest) {
 }
 
 }  // namespace
+
+struct StandardMode::StraightFold {
+  std::unique_ptr<StandardMode> mode;
+  Dofs x;
+  int iterations = 0;
+};
 
 StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
     : problem_(problem),
@@ -111,6 +120,14 @@ StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
 
 StepReport StandardMode::converge(Dofs& x, bool last) {
   const Targets goal = Targets::of(problem_);
+  if (goals_ == 0) away_from_origin_ = origin_ && *origin_ != x;  // this mode's first iteration
+  if (!origin_) origin_ = x;
+  if (!goal_ || !goal_->matches(goal) || goal_->distance(goal) > 0) {
+    goal_ = goal;
+    ++goals_;
+    settled_ = false;
+    settling_.reset();
+  }
   if (!reached_ || !reached_->matches(goal)) {
     reached_ = Targets::met_by(problem_, x);
     converged_ = false;
@@ -121,8 +138,9 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     held_best_.reset();
   }
   StepReport report;
-  if (converged_ && !last) {  // nothing left to do: no factorisation
+  if (converged_ && !last) {  // nothing left to do but settling: no factorisation of x
     report.converged = true;
+    if (wants_settling()) settle(x, report);
     return report;
   }
   ladder_failed_ = false;
@@ -140,8 +158,54 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     converged_ = true;
     report.converged = true;
   }
+  if (converged_ && !last && wants_settling()) settle(x, report);
   if (last && !report.failed) finish(x, report);
   return report;
+}
+
+bool StandardMode::wants_settling() const {
+  return options_.settle && !settled_ && (goals_ > 1 || away_from_origin_);
+}
+
+void StandardMode::settle(Dofs& x, StepReport& report) {
+  if (!settling_) {
+    StandardOptions options = options_;
+    options.settle = false;
+    settling_ = std::make_unique<StraightFold>();
+    settling_->mode = std::make_unique<StandardMode>(problem_, scenario_, options);  // installs the scenario
+    settling_->x = *origin_;
+  }
+  goal_->install(problem_);
+  const StepReport r = settling_->mode->step(settling_->x, false);
+  goal_->install(problem_);  // the straight fold may have stopped short of them
+  report.work += r.work;
+  ++settling_->iterations;
+  const bool done = r.failed || (r.converged.value_or(false) && r.target_fraction >= 1);
+  if (!done && settling_->iterations < kMaxSettlingIterations) {
+    report.converged = false;
+    report.settling = Settling::kRunning;
+    return;
+  }
+  report.settling = Settling::kKept;
+  if (done && !r.failed) {
+    // Both compared as a run's last iteration leaves them, at the final constraint tolerance: the
+    // projection there raises the objective by up to several percent, differently for each state.
+    finish(x, report);
+    StepReport straight;
+    settling_->mode->finish(settling_->x, straight);
+    report.work += straight.work;
+    const double f = weighted_objective(problem_, x);
+    const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
+    if (straight.folded && (!report.folded || weighted_objective(problem_, settling_->x) < f - margin)) {
+      x = settling_->x;
+      sqp_->set_multipliers(settling_->mode->sqp().multipliers());
+      report.settling = Settling::kReplaced;
+      report.folded = true;
+    }
+  }
+  settling_.reset();
+  settled_ = true;
+  report.converged = true;
 }
 
 StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
@@ -222,15 +286,39 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
   constraints_.use_final_scale(true);
   constraint_max_ = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
   if (constraint_max_ > tolerance) {
-    // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
-    // gets there.
-    SqpReport finished = sqp_->project(x);
-    if (finished.failed) finished.constraint_max = constraint_max_;
-    if (finished.constraint_max > tolerance) sqp_->polish(x, finished);
-    report.work += finished.work;
-    constraint_max_ = finished.constraint_max;
+    const Dofs x0 = x;
+    project(x, report);
+    // The projection moves x least in the metric of the objective's Hessian, which may carry a fold
+    // site across flat; a raised fold bias stiffens the metric there.
+    if (!folded(x)) {
+      const Dofs first = x;
+      const double first_constraint_max = constraint_max_;
+      double weight = base_fold_bias_;
+      while (!folded(x) && weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias) {
+        x = x0;
+        set_fold_bias(weight *= kFoldBiasGrowth);
+        ++report.work.fold_retries;
+        project(x, report);
+      }
+      set_fold_bias(base_fold_bias_);
+      if (!folded(x)) {
+        x = first;
+        constraint_max_ = first_constraint_max;
+      }
+    }
   }
   constraints_.use_final_scale(false);
+  report.folded = folded(x);
+}
+
+void StandardMode::project(Dofs& x, StepReport& report) {
+  // The projection moves x least; where it stalls, the polish (with the constraints' curvature)
+  // gets there.
+  SqpReport finished = sqp_->project(x);
+  if (finished.failed) finished.constraint_max = constraint_max_;
+  if (finished.constraint_max > options_.sqp.final_constraint_tolerance) sqp_->polish(x, finished);
+  report.work += finished.work;
+  constraint_max_ = finished.constraint_max;
 }
 
 void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
@@ -277,12 +365,22 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
 
 void StandardMode::start_from(const Dofs&) {
   sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
+  if (!origin_given_) origin_.reset();
+  goal_.reset();
+  goals_ = 0;
+  settling_.reset();
+  settled_ = false;
   restore_first_ = options_.stitching == Stitching::kExact;
   reached_.reset();
   held_best_.reset();
   substep_ = 1;
   converged_ = false;
   if (options_.folding) set_fold_bias(base_fold_bias_);
+}
+
+void StandardMode::set_origin(const Dofs& x) {
+  origin_ = x;
+  origin_given_ = true;
 }
 
 void StandardMode::set_folding(bool on) {

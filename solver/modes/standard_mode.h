@@ -35,6 +35,18 @@
 // converging iteration a raised fold bias returns to its base weight at the iteration's end, and
 // once an escalation has ended unfolded the iteration's later sub-steps take none. The last
 // iteration of a run projects x to the final constraint tolerance (finish()).
+//
+// Settling (StandardOptions::settle, with converging iterations). A folded sheet has several
+// stationary states a few percent apart in objective, and which one a run reaches depends on the
+// path its targets took. Once the targets have come to rest and the state has converged, the mode
+// also folds the sheet from the state the run started from (the first iteration's, or
+// set_origin's) straight to the resting targets, one iteration of its own per held iteration of
+// the run; once that has converged, both states are projected to the final constraint tolerance
+// (finish(), which changes their objectives by different amounts) and the folded one with the
+// lower objective is kept, there. The held iterations report the shape converged only once that
+// is done. A run whose targets moved
+// once from the origin (set at once) has taken that straight path already and does not settle; a
+// target that moves again drops a settling in progress.
 #include <memory>
 #include <optional>
 
@@ -58,6 +70,7 @@ class StandardMode : public Mode {
   /// Zero multipliers and the base fold bias: a fresh start from x. With exact stitching the next
   /// iteration first restores the constraints (a state from a patch mode has gaps at the creases).
   void start_from(const Dofs& x) override;
+  void set_origin(const Dofs& x) override;
 
   /// Sets the targets of scenario time t.
   void set_time(double t);
@@ -82,8 +95,17 @@ class StandardMode : public Mode {
   /// iterations in a row have not lowered the objective by more than converged_decrease below its
   /// lowest value since the targets last moved.
   bool lowers_objective(const Dofs& x);
-  /// The last converging iteration's end: x projected to the final constraint tolerance.
+  /// The targets have come to rest and x has converged, but settling has not been done for them.
+  bool wants_settling() const;
+  /// One iteration of the straight fold from origin_ (settling), and at its end the choice of the
+  /// lower state; report.converged becomes true when the settling is done.
+  void settle(Dofs& x, StepReport& report);
+  /// The last converging iteration's end: x projected to the final constraint tolerance, again
+  /// with a raised fold bias while that leaves a fold site unfolded; report.folded says whether x
+  /// ends folded.
   void finish(Dofs& x, StepReport& report);
+  /// x projected to the final constraint tolerance (at the stitching rows' final scale).
+  void project(Dofs& x, StepReport& report);
   /// One SQP solve, its work added to `report`; false when it failed.
   bool solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max);
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
@@ -105,6 +127,15 @@ class StandardMode : public Mode {
   /// A fold-bias escalation of this converging iteration ended unfolded: its later sub-steps
   /// take none (each would climb the whole ladder again, a solve per rung).
   bool ladder_failed_ = false;
+  std::optional<Dofs> origin_;     ///< the state settling folds from
+  bool origin_given_ = false;      ///< by set_origin
+  /// This mode's first iteration started elsewhere than at origin_ (the path there is not known).
+  bool away_from_origin_ = false;
+  std::optional<Targets> goal_;    ///< the targets last requested
+  int goals_ = 0;                  ///< distinct target sets this mode was asked for
+  struct StraightFold;
+  std::unique_ptr<StraightFold> settling_;  ///< the straight fold in progress
+  bool settled_ = false;                ///< settling is done for goal_
   double constraint_max_ = 0;       ///< after the last solve
   double sheet_size_;               ///< largest side of the rest state's bounding box
 };

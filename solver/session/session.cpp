@@ -16,7 +16,7 @@ Session::Session(const DogModel& model, const RunConfig& config, ModeKind mode)
     : source_(model), model_(model), config_(config), mode_kind_(mode) {
   check_mode_usable(mode, model);
   apply_creases();
-  x_ = base_.start(model_.fine);
+  x_ = origin_ = base_.start(model_.fine);
   rebuild();
 }
 
@@ -52,6 +52,7 @@ void Session::rebuild() {
   for (const auto& a : user_.angles)
     scenario_.angles.push_back(angle_constraint(model_.fine, a.crease_point, a.degrees, a.degrees));
   mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_);
+  mode_->set_origin(origin_);
 }
 
 IterationReport Session::step() {
@@ -61,7 +62,7 @@ IterationReport Session::step() {
 }
 
 void Session::reset() {
-  x_ = base_.start(model_.fine);
+  x_ = origin_ = base_.start(model_.fine);
   iteration_ = 0;
   rebuild();
 }
@@ -150,7 +151,7 @@ int Session::add_angle(int crease_point, double degrees) {
     for (size_t c = 0; c < signs.size(); ++c)
       for (int p : model_.fine.stitching.curves[c].points)
         if (p == crease_point) signs[c] = degrees >= 0 ? 1.0 : -1.0;
-    x_ = fold_seed(model_.fine, signs);
+    x_ = origin_ = fold_seed(model_.fine, signs);
   }
   UserConstraints next = user_;
   next.angles.push_back({crease_point, degrees});

@@ -6,7 +6,8 @@
 // The targets are those of a base scenario (corners, fold, none: the run configuration's) plus the
 // user's constraints, which hold their targets from the start. Every edit rebuilds the mode on the
 // current positions (switch_mode; the modes keep their own copy of the targets, and adding or
-// removing a constraint changes the solver's sparsity pattern). Undo and redo restore the user's
+// removing a constraint changes the solver's sparsity pattern) and tells it the session's start
+// state (Mode::set_origin), from which the standard mode settles. Undo and redo restore the user's
 // constraints and crease assignments, not the positions: the sheet stays where the solver put it.
 //
 // The session solves its own copy of the model with the run configuration's crease settings
@@ -144,6 +145,9 @@ class Session {
   std::unique_ptr<DogProblem> problem_;
   std::unique_ptr<Mode> mode_;
   Dofs x_;
+  /// The state the session started from (the start state, or the sheet tilted towards a fold);
+  /// every mode is told it (Mode::set_origin).
+  Dofs origin_;
   int iteration_ = 0;
   UserConstraints user_;
   std::vector<EditState> undo_, redo_;

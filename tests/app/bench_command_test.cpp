@@ -93,5 +93,25 @@ TEST(BenchCommand, PaceRunsEveryKToAConvergedShape) {
   EXPECT_LT(std::stoi(csv.rows[1][csv.column("iterations")]), 100);
 }
 
+// --config gives the pace runs solver settings: without settling the drag costs fewer
+// factorisations than with it (the straight fold is not computed). The timing benchmark refuses it.
+TEST(BenchCommand, PaceTakesSolverSettingsFromAConfiguration) {
+  const std::string dir = test::temp_dir("bench_pace_config");
+  const std::string off_json = test::write_file(dir, "off.json", R"({"solver": {"settle": false}})");
+  const std::string pace = "bench --pace --pattern '" + test::dataset("four_corner_arcs.svg") + "' --res 21x21 --ks 50";
+  const auto on = test::run_sdog(pace + " --csv " + dir + "/on.csv");
+  const auto off = test::run_sdog(pace + " --config " + off_json + " --csv " + dir + "/off.csv");
+  ASSERT_EQ(on.code, 0) << on.err;
+  ASSERT_EQ(off.code, 0) << off.err;
+  const Csv with = read_csv(dir + "/on.csv"), without = read_csv(dir + "/off.csv");
+  ASSERT_EQ(with.rows.size(), 1u);
+  ASSERT_EQ(without.rows.size(), 1u);
+  EXPECT_LT(std::stoi(without.rows[0][without.column("facts")]), std::stoi(with.rows[0][with.column("facts")]));
+  const auto timing = test::run_sdog("bench --pattern '" + test::dataset("four_corner_arcs.svg") +
+                                     "' --res 21x21 --config " + off_json);
+  EXPECT_EQ(timing.code, 2);
+  EXPECT_NE(timing.err.find("--config: only with --pace"), std::string::npos) << timing.err;
+}
+
 }  // namespace
 }  // namespace sdog

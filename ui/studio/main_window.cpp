@@ -330,7 +330,11 @@ void MainWindow::show_report(const IterationReport& r) {
     scenario_end_marked_ = true;
   }
   QString progress;
-  if (r.step.converged) {
+  if (r.step.settling == Settling::kRunning) {
+    progress = ", settling (folding straight from the start state to compare)";
+  } else if (r.step.settling == Settling::kReplaced) {
+    progress = ", converged (settled: the fold straight from the start state is lower and replaces it)";
+  } else if (r.step.converged) {
     progress = *r.step.converged ? ", converged"
                                  : QString(", converging (%1% of the targets' move)").arg(100 * r.step.target_fraction, 0, 'f', 0);
   }
