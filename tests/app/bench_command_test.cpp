@@ -59,8 +59,9 @@ TEST(BenchCommand, WritesTheTableAsCsv) {
   const int vertices = std::stoi(row[csv.column("vertices")]);
   EXPECT_EQ(std::stoi(row[csv.column("dof")]), 3 * vertices);
   EXPECT_GT(std::stod(row[csv.column("median_ms")]), 0);
-  EXPECT_NEAR(std::stod(row[csv.column("ms_per_dof")]), std::stod(row[csv.column("median_ms")]) / (3 * vertices),
-              1e-6 * std::stod(row[csv.column("median_ms")]));
+  // Both columns carry 4 significant digits: each may be off by half a unit in the fourth.
+  const double ms_per_dof = std::stod(row[csv.column("ms_per_dof")]);
+  EXPECT_NEAR(ms_per_dof, std::stod(row[csv.column("median_ms")]) / (3 * vertices), 1e-3 * ms_per_dof);
   EXPECT_LT(std::stod(row[csv.column("dog_max")]), 1e-4);
 }
 
