@@ -294,10 +294,8 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
       const Dofs first = x;
       const double first_constraint_max = constraint_max_;
       double weight = base_fold_bias_;
-      while (!folded(x) && weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias) {
+      while (!folded(x) && raise_fold_bias(weight, report)) {
         x = x0;
-        set_fold_bias(weight *= kFoldBiasGrowth);
-        ++report.work.fold_retries;
         project(x, report);
       }
       set_fold_bias(base_fold_bias_);
@@ -337,11 +335,9 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
   // As in the reference: an escalated bias stays for the next iteration and returns to its base
   // value once an iteration ends folded.
   double weight = problem_.weights.fold_bias;
-  while (!report.folded && weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias) {
+  while (!report.folded && raise_fold_bias(weight, report)) {
     x = x0;
     sqp_->set_multipliers(lambda0);
-    set_fold_bias(weight *= kFoldBiasGrowth);
-    ++report.work.fold_retries;
     if (!solve(x, last, max_steps, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
@@ -386,6 +382,13 @@ void StandardMode::set_origin(const Dofs& x) {
 void StandardMode::set_folding(bool on) {
   options_.folding = on;
   set_fold_bias(on ? base_fold_bias_ : 0.0);
+}
+
+bool StandardMode::raise_fold_bias(double& weight, StepReport& report) {
+  if (!(weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias)) return false;
+  set_fold_bias(weight *= kFoldBiasGrowth);
+  ++report.work.fold_retries;
+  return true;
 }
 
 void StandardMode::set_fold_bias(double weight) {

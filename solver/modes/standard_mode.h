@@ -111,6 +111,9 @@ class StandardMode : public Mode {
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
   void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int max_steps,
                           int violations, double constraint_max, StepReport& report);
+  /// The next rung of a fold-bias escalation: weight raised kFoldBiasGrowth times and installed,
+  /// a retry counted in `report`; false (nothing changed) once that would pass max_fold_bias.
+  bool raise_fold_bias(double& weight, StepReport& report);
   void set_fold_bias(double weight);
   DogProblem& problem_;
   Scenario scenario_;
