@@ -1,7 +1,9 @@
-// sdog bench: speed of the solver modes on the thesis protocol, as a table and CSV.
+// sdog bench: speed of the solver modes on the thesis protocol, the pace of the corners drag, and
+// the fold of crease patterns, as tables and CSV.
 #include <unistd.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -49,8 +51,12 @@ struct BenchArgs {
   std::string preset;
   std::string config;
   bool pace = false;
+  bool fold = false;
   bool trim = false;
   std::vector<int> ks{250, 50, 10, 1};
+  CLI::Option* ks_opt = nullptr;
+  CLI::Option* repeat_opt = nullptr;
+  std::vector<double> angles{60};
   int max_hold = 200;
 };
 
@@ -95,15 +101,33 @@ std::string general(double v) {
   return text;
 }
 
-// Per pattern and resolution, the corners drag over each K, then held until converged.
-void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::string& csv_name) {
-  if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("--pace: give --pattern and --res");
+// The table as CSV, when --csv asked for it.
+void write_csv(std::unique_ptr<OutputSet>& out, const std::string& csv_name, const std::string& csv) {
+  if (!out) return;
+  out->write_text(csv_name, csv);
+  for (const auto& f : out->commit()) std::cout << "wrote " << f << "\n";
+}
+
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+// The configuration of --preset and --config (the pace and fold benchmarks).
+RunConfig paced_config(const BenchArgs& a) {
   RunConfig config;
   apply_preset_option(a.preset, false, config);
   if (!a.config.empty()) {
     read_run_config(a.config, config);
     validate_run_config(config, a.config);
   }
+  return config;
+}
+
+// Per pattern and resolution, the corners drag over each K, then held until converged.
+void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::string& csv_name) {
+  if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("--pace: give --pattern and --res");
+  const RunConfig config = paced_config(a);
   const std::vector<std::string> header{"pattern",    "res",      "K",     "objective", "ratio",   "dog_max",
                                         "stitch_gap", "folded",   "handle_distance", "facts", "shape_s",
                                         "total_s",    "iterations", "failure"};
@@ -137,10 +161,61 @@ void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
         std::fflush(stdout);
       }
     }
-  if (out) {
-    out->write_text(csv_name, csv);
-    for (const auto& f : out->commit()) std::cout << "wrote " << f << "\n";
-  }
+  write_csv(out, csv_name, csv);
+}
+
+// Per pattern, resolution, angle and K: the fold scenario over K iterations, then held until
+// converged; the median times of --repeat runs, the rest from the first (runs are deterministic).
+void bench_fold(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::string& csv_name) {
+  if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("--fold: give --pattern and --res");
+  RunConfig config = paced_config(a);
+  const std::vector<int> ks = a.ks_opt->count() ? a.ks : std::vector<int>{1};
+  const int repeat = a.repeat_opt->count() ? a.repeat : 1;
+  const std::vector<std::string> header{"pattern", "res", "angle", "K", "shape_s", "total_s", "facts",
+                                        "agreement", "bent", "targeted", "angle_error", "dog_max", "stitch_gap",
+                                        "converged", "iterations", "failure"};
+  std::printf("%-28s %-6s %6s %4s %8s %8s %6s %9s %11s %9s %8s %8s %5s\n", "pattern", "res", "angle", "K", "shape_s",
+              "total_s", "facts", "agreement", "bent/sites", "angle_err", "dog_max", "gap", "conv");
+  std::string csv = csv_line(header);
+  const bool tty = isatty(fileno(stderr));
+  for (const auto& pattern : a.patterns)
+    for (const auto& res : a.resolutions) {
+      const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
+      print_warnings(model);
+      const std::string name = std::filesystem::path(pattern).stem().string();
+      for (double angle : a.angles)
+        for (int k : ks) {
+          config.fold_angle = angle;
+          std::vector<PaceResult> runs;
+          std::vector<double> shape, total;
+          for (int i = 0; i < repeat; ++i) {
+            if (tty)
+              std::fprintf(stderr, "\r  %s %s %g degrees K = %d: run %d/%d ...   ", name.c_str(), res.c_str(), angle, k,
+                           i + 1, repeat);
+            runs.push_back(run_fold_pace(model, config, k, a.max_hold));
+            if (runs.back().time_to_shape_s) shape.push_back(*runs.back().time_to_shape_s);
+            total.push_back(runs.back().total_s);
+          }
+          if (tty) std::fprintf(stderr, "\r%90s\r", "");
+          const PaceResult& r = runs.front();
+          const AngleAgreement& m = r.angles;
+          const bool all_shaped = shape.size() == runs.size();
+          const std::string shape_s = all_shaped ? fixed(median_of(shape), 2) : "-";
+          const std::string agreement = m.bent_sites > 0 ? fixed(100 * m.direction_agreement(), 1) + "%" : "-";
+          std::printf("%-28s %-6s %6g %4d %8s %8.2f %6ld %9s %5d/%-5d %9.2f %8.1e %8.1e %5s%s\n", name.c_str(),
+                      res.c_str(), angle, k, shape_s.c_str(), median_of(total), r.factorizations, agreement.c_str(),
+                      m.bent_sites, m.targeted_sites, m.median_error, r.dog_max, r.stitch_gap_max,
+                      r.converged ? "yes" : "no", r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
+          csv += csv_line({name, res, general(angle), std::to_string(k), all_shaped ? general(median_of(shape)) : "",
+                           general(median_of(total)), std::to_string(r.factorizations),
+                           m.bent_sites > 0 ? general(m.direction_agreement()) : "", std::to_string(m.bent_sites),
+                           std::to_string(m.targeted_sites), general(m.median_error), general(r.dog_max),
+                           general(r.stitch_gap_max), r.converged ? "1" : "0", std::to_string(r.iterations),
+                           r.failure});
+          std::fflush(stdout);
+        }
+    }
+  write_csv(out, csv_name, csv);
 }
 
 void bench(const BenchArgs& a) {
@@ -155,8 +230,11 @@ void bench(const BenchArgs& a) {
     out = std::make_unique<OutputSet>(path.has_parent_path() ? path.parent_path().string() : ".");
     csv_name = path.filename().string();
   }
+  if (a.pace && a.fold) throw UsageError("--pace and --fold are two benchmarks: give one");
   if (a.pace) return bench_pace(a, out, csv_name);
-  if (!a.config.empty()) throw UsageError("--config: only with --pace (the timing benchmark runs the preset's settings)");
+  if (a.fold) return bench_fold(a, out, csv_name);
+  if (!a.config.empty())
+    throw UsageError("--config: only with --pace or --fold (the timing benchmark runs the preset's settings)");
   RunConfig config;
   apply_preset_option(a.preset, a.thesis_grid, config);
   config.iterations = a.iterations;
@@ -188,10 +266,7 @@ void bench(const BenchArgs& a) {
                   mode_name(cases.front().mode));
     }
   }
-  if (out) {
-    out->write_text(csv_name, csv);
-    for (const auto& f : out->commit()) std::cout << "wrote " << f << "\n";
-  }
+  write_csv(out, csv_name, csv);
 }
 
 }  // namespace
@@ -199,7 +274,7 @@ void bench(const BenchArgs& a) {
 void register_bench_command(CLI::App& app, Runner& runner) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Time solver modes on the thesis protocol (median ms per iteration over iterations 10-240)");
+      "bench", "Time solver modes on the thesis protocol (median ms per iteration over iterations 10-240); with --pace the corners drag at several paces, with --fold the fold of crease patterns");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
   cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
@@ -212,9 +287,11 @@ void register_bench_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--iters", a->iterations, "moving iterations of the protocol (hold: a fifth of that)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--repeat", a->repeat, "runs per case (the median of their medians is reported)")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
+  a->repeat_opt = cmd->add_option("--repeat", a->repeat,
+                                  "runs per case (the median of their medians is reported; --fold: the median "
+                                  "times, 1 run unless given)")
+                      ->check(CLI::Range(1, 1000))
+                      ->capture_default_str();
   cmd->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
   cmd->add_option("--csv", a->csv, "also write the table as CSV to this file");
   cmd->add_flag("--trim", a->trim,
@@ -224,14 +301,22 @@ void register_bench_command(CLI::App& app, Runner& runner) {
                 "the pace benchmark: the standard mode's corners drag over each of --ks iterations, then held "
                 "until converged (at most --max-hold); per K the final objective and its ratio to the best K, "
                 "the residuals, the handles' distance to their targets, factorisations and the time to shape");
-  cmd->add_option("--ks", a->ks, "--pace: iterations over which the targets move")
+  cmd->add_flag("--fold", a->fold,
+                "the fold benchmark: per pattern, resolution, --angles and --ks (default 1: the targets at once) "
+                "the standard mode's fold scenario, held until converged (at most --max-hold); the time to shape, "
+                "factorisations, the share of bent fold sites bent the drawn way, the median angle error, residuals");
+  a->ks_opt = cmd->add_option("--ks", a->ks, "--pace, --fold: iterations over which the targets move")
+                  ->delimiter(',')
+                  ->check(CLI::Range(1, 100000))
+                  ->capture_default_str();
+  cmd->add_option("--angles", a->angles, "--fold: fold angles (degrees; each crease's own angle wins)")
       ->delimiter(',')
-      ->check(CLI::Range(1, 100000))
+      ->check(CLI::Range(-180.0, 180.0))
       ->capture_default_str();
   cmd->add_option("--config", a->config,
-                  "--pace: JSON file of weights and solver options (as for sdog run), applied after --preset; the "
-                  "benchmark sets the scenario, iterations, hold and mode");
-  cmd->add_option("--max-hold", a->max_hold, "--pace: held iterations at most")
+                  "--pace, --fold: JSON file of weights and solver options (as for sdog run), applied after --preset; "
+                  "the benchmark sets the scenario, iterations, hold and mode");
+  cmd->add_option("--max-hold", a->max_hold, "--pace, --fold: held iterations at most")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   cmd->callback([a, &runner]() { runner = [a]() { bench(*a); }; });

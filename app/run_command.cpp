@@ -2,6 +2,7 @@
 // surface of each frame (VTK, and OBJ / PLY with --export).
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <memory>
@@ -40,6 +41,7 @@ struct RunArgs {
   std::string exports;  // --export obj,ply
   std::string export_colour = "patches";
   double angle = 90;
+  double fold_percent = 100;
   int iterations = 250;
   int hold = 50;
   int frames_every = 10;
@@ -49,7 +51,8 @@ struct RunArgs {
   double link_weight = 0;
   bool no_fine_to_coarse = false;
   CLI::Option *link_weight_opt = nullptr;
-  CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr;
+  CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr, *angle_opt = nullptr,
+              *fold_percent_opt = nullptr;
   double rho = 1, gamma = 1;  // the ADMM modes
   CLI::Option *rho_opt = nullptr, *gamma_opt = nullptr;
   CLI::Option *export_opt = nullptr, *export_colour_opt = nullptr;
@@ -62,16 +65,39 @@ nlohmann::json diagnostics_json(const IterationReport& r) {
   const Diagnostics& d = r.diagnostics;
   nlohmann::json terms;
   for (int k = 0; k < kTermCount; ++k) terms[term_name(k)] = d.terms[k];
-  return {{"iteration", r.iteration},
-          {"t", r.t},
-          {"objective", d.objective},
-          {"objective_final_targets", r.objective_final_targets},
-          {"terms_unweighted", terms},
-          {"dog_max", d.dog_max},
-          {"dog_l2", d.dog_l2},
-          {"stitch_gap_max", d.stitch_gap_max},
-          {"edge_strain_max", d.edge_strain_max},
-          {"folded", r.step.folded}};
+  nlohmann::json j = {{"iteration", r.iteration},
+                      {"t", r.t},
+                      {"objective", d.objective},
+                      {"objective_final_targets", r.objective_final_targets},
+                      {"terms_unweighted", terms},
+                      {"dog_max", d.dog_max},
+                      {"dog_l2", d.dog_l2},
+                      {"stitch_gap_max", d.stitch_gap_max},
+                      {"edge_strain_max", d.edge_strain_max},
+                      {"folded", r.step.folded}};
+  const AngleAgreement& a = d.angles_met;
+  if (a.targeted_sites > 0)
+    j["fold_angles"] = {{"targeted_sites", a.targeted_sites},
+                        {"bent_sites", a.bent_sites},
+                        {"bent_as_targeted", a.bent_as_targeted},
+                        {"direction_agreement", a.direction_agreement()},
+                        {"median_angle_error", a.median_error}};
+  return j;
+}
+
+nlohmann::json creases_json(const DogModel& model, const std::vector<CreaseFold>& creases) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const CreaseFold& c : creases)
+    out.push_back({{"crease", c.curve},
+                   {"id", model.fine.stitching.curves[c.curve].id},
+                   {"assignment", fold_name(model.fine.stitching.curves[c.curve].fold)},
+                   {"sites", c.sites},
+                   {"bent", c.bent},
+                   {"against_target", c.against},
+                   {"target_angle", c.target},
+                   {"median_angle", c.angle},
+                   {"median_angle_error", c.median_error}});
+  return out;
 }
 
 // "--switch 100:twolevel" (repeatable) as mode switches; UsageError naming the bad one.
@@ -126,6 +152,7 @@ RunConfig run_config(const RunArgs& a) {
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
+  if (a.fold_percent_opt->count()) config.fold_percent = a.fold_percent;
   if (a.link_weight_opt->count()) config.coarse.link_weight = config.twolevel.link_weight = a.link_weight;
   if (a.no_fine_to_coarse) config.coarse.fine_to_coarse = false;
   if (a.rho_opt->count()) config.admm.rho = a.rho;
@@ -154,15 +181,17 @@ nlohmann::json run_json(const RunArgs& a, RunSetup& setup, const RunSummary& sum
       {"totals", {{"iterations", summary.iterations}, {"seconds", summary.seconds},
                   {"median_iteration_ms", median(totals.iteration_ms)},
                   {"factorizations", totals.work.factorizations}, {"sqp_steps", totals.work.steps},
-                  {"fold_retries", totals.work.fold_retries}, {"factor_ms", totals.work.factor_ms},
+                  {"fold_retries", totals.work.fold_retries},
+                  {"recovered_failures", totals.work.recovered_failures}, {"factor_ms", totals.work.factor_ms},
                   {"dog_max_over_run", totals.worst_dog}, {"iterations_above_dog_tolerance", totals.dog_misses}}},
       {"final", diagnostics_json(summary.last)}};
+  if (!scenario.angles.empty()) j["creases"] = creases_json(model, crease_folds(setup.problem(), setup.positions()));
   if (summary.failed()) j["failure"] = summary.failure;
   add_model_record(j, a.pattern);
   return j;
 }
 
-void report_success(const RunArgs& a, const RunSetup& setup, const RunSummary& summary, const RunTotals& totals,
+void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary, const RunTotals& totals,
                     double seconds) {
   const RunConfig& config = setup.config();
   const DogModel& model = setup.model();
@@ -170,14 +199,35 @@ void report_success(const RunArgs& a, const RunSetup& setup, const RunSummary& s
   std::string modes = a.mode;
   for (const ModeSwitch& s : config.switches)
     modes += std::string(", ") + mode_name(s.mode) + " from iteration " + std::to_string(s.iteration);
+  // The restoration allows a little slack over the tolerance only through rounding.
+  const double final_tolerance = config.standard.sqp.final_constraint_tolerance;
+  const bool within =
+      last.diagnostics.dog_max <= 2 * final_tolerance && last.diagnostics.stitch_gap_max <= 2 * final_tolerance;
   std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << setup.scenario().name
             << ") on " << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count()
             << " vertices) in " << format_number(seconds) << " s, median " << format_number(median(totals.iteration_ms))
             << " ms/iteration\n"
             << "final: objective " << format_number(last.diagnostics.objective) << ", DOG max "
             << format_number(last.diagnostics.dog_max) << " (worst over the run " << format_number(totals.worst_dog)
-            << "), stitch gap " << format_number(last.diagnostics.stitch_gap_max) << ", "
-            << (last.step.folded ? "folded" : "NOT folded") << "\n";
+            << "), stitch gap " << format_number(last.diagnostics.stitch_gap_max)
+            << (setup.problem().free_sites.empty() ? "" : !within ? "" : last.step.folded ? ", folded" : ", NOT folded")
+            << (within ? "" : ", NOT within the final tolerance") << "\n";
+  if (!within)
+    std::cerr << "warning: the final state misses the final constraint tolerance "
+              << format_number(final_tolerance) << " (DOG residual " << format_number(last.diagnostics.dog_max)
+              << ", stitch gap " << format_number(last.diagnostics.stitch_gap_max)
+              << "): more iterations or --hold may reach it\n";
+  const AngleAgreement& met = last.diagnostics.angles_met;
+  if (met.targeted_sites > 0)
+    std::cout << "fold angles: " << met.bent_as_targeted << " of the " << met.bent_sites << " fold sites bent more than "
+              << format_number(kBentDegrees) << " degrees (of " << met.targeted_sites
+              << " with a target) bend the way their target says ("
+              << format_number(std::round(1000 * met.direction_agreement()) / 10) << "%), median angle error "
+              << format_number(met.median_error) << " degrees\n";
+  for (const CreaseFold& c : crease_folds(setup.problem(), setup.positions()))
+    if (c.against > 0)
+      std::cerr << "warning: crease " << c.curve << " (" << model.clean.creases[c.curve].origin << ") folds against its target ("
+                << format_number(c.target) << " degrees) at " << c.against << " of its " << c.bent << " bent fold sites\n";
   if (totals.dog_misses > 0)
     std::cerr << "warning: the DOG constraints stayed above the solver's tolerance "
               << format_number(config.standard.sqp.constraint_tolerance) << " after " << totals.dog_misses << " of "
@@ -275,6 +325,12 @@ void register_run_command(CLI::App& app, Runner& runner) {
   a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario, start angle of the flatten scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))
                      ->capture_default_str();
+  a->fold_percent_opt =
+      cmd->add_option("--fold-percent", a->fold_percent,
+                      "fold scenario: fold every crease to this percentage of its angle (its own, a FOLD file's "
+                      "edges_foldAngle, or --angle), as Origami Simulator's fold percent")
+          ->check(CLI::Range(0.0, 100.0))
+          ->capture_default_str();
   a->iterations_opt =
       cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
           ->check(CLI::Range(0, 1000000))

@@ -1,6 +1,7 @@
 #include "geometry/dog_mesh.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -81,14 +82,88 @@ void add_patch(int p, const std::vector<int>& cells, int nx, DogMesh& mesh,
   mesh.quad_patch_begin.push_back(static_cast<int>(F.size()));
 }
 
+// The grid vertex that crease points a and b (consecutive along a crease, between the same two
+// patches, each strictly inside a grid edge) both lie within kVertexCreaseDistance of, as an
+// on-vertex point, if there is one and the nesting allows it (build_dog_mesh).
+std::optional<GridEdgePoint> shared_vertex(const PatchLayout::CreasePoint& a, const PatchLayout::CreasePoint& b,
+                                           const DogMesh& mesh, int coarse_step) {
+  if (a.edge.on_vertex() || b.edge.on_vertex() || a.patches.size() != 2 || a.patches != b.patches)
+    return std::nullopt;
+  const Eigen::Vector2i ends_a[2] = {{a.edge.i0, a.edge.j0}, {a.edge.i1, a.edge.j1}};
+  const Eigen::Vector2i ends_b[2] = {{b.edge.i0, b.edge.j0}, {b.edge.i1, b.edge.j1}};
+  for (const auto& v : ends_a)
+    for (const auto& w : ends_b) {
+      if (v != w) continue;
+      const Eigen::Vector2d corner(mesh.xs[v.x()], mesh.ys[v.y()]);
+      if ((mesh.to_mesh(a.position) - corner).norm() >= kVertexCreaseDistance ||
+          (mesh.to_mesh(b.position) - corner).norm() >= kVertexCreaseDistance)
+        continue;
+      if (coarse_step > 1 && (v.x() % coarse_step == 0) != (v.y() % coarse_step == 0)) continue;
+      return GridEdgePoint{v.x(), v.y(), v.x(), v.y(), 1.0};
+    }
+  return std::nullopt;
+}
+
+// The layout's crease points and curves with every pair that passes close to a grid vertex
+// replaced by one point on it (build_dog_mesh): the vertex points are appended to `points`,
+// `taken` marks the points they replace, and the curves refer to the vertex points instead.
+void take_pairs_onto_vertices(const PatchLayout& layout, const DogMesh& mesh, int coarse_step,
+                              std::vector<PatchLayout::CreasePoint>& points, std::vector<PatchLayout::Curve>& curves,
+                              std::vector<bool>& taken) {
+  points = layout.points;
+  curves = layout.curves;
+  taken.assign(points.size(), false);
+  std::vector<int> uses(points.size(), 0);
+  for (const auto& c : curves)
+    for (int p : c.points) ++uses[p];
+  // The vertex point replacing a and b, or -1 when they stay.
+  auto vertex_point = [&](int a, int b) {
+    if (uses[a] != 1 || uses[b] != 1 || taken[a] || taken[b]) return -1;
+    const auto vertex = shared_vertex(points[a], points[b], mesh, coarse_step);
+    if (!vertex) return -1;
+    PatchLayout::CreasePoint merged;
+    merged.edge = *vertex;
+    merged.position = Eigen::Vector2d(layout.xs[vertex->i0], layout.ys[vertex->j0]);
+    merged.patches = points[a].patches;
+    points.push_back(merged);
+    taken[a] = taken[b] = true;
+    taken.push_back(false);
+    return static_cast<int>(points.size()) - 1;
+  };
+  for (auto& c : curves) {
+    const int n = static_cast<int>(c.points.size());
+    std::vector<int> out;
+    // A closed curve's last and first points first.
+    const int wrapped = c.closed && n > 2 ? vertex_point(c.points[n - 1], c.points[0]) : -1;
+    if (wrapped >= 0) out.push_back(wrapped);
+    const int begin = wrapped >= 0 ? 1 : 0, end = wrapped >= 0 ? n - 1 : n;
+    for (int k = begin; k < end; ++k) {
+      const int merged = k + 1 < end ? vertex_point(c.points[k], c.points[k + 1]) : -1;
+      out.push_back(merged >= 0 ? merged : c.points[k]);
+      if (merged >= 0) ++k;
+    }
+    c.points = std::move(out);
+  }
+}
+
 // The crease stitching: the copies of each crease point in the patches that own its grid edge,
 // the chained pairs, the patch adjacency and the junctions. Throws std::logic_error for a point
 // with fewer than two copies.
-CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh) {
+CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh, int coarse_step) {
+  std::vector<PatchLayout::CreasePoint> points;
+  std::vector<PatchLayout::Curve> curves;
+  std::vector<bool> taken;
+  take_pairs_onto_vertices(layout, mesh, coarse_step, points, curves, taken);
+  std::vector<int> index(points.size(), -1), used;  // the points kept, renumbered
+  for (size_t k = 0; k < points.size(); ++k)
+    if (!taken[k]) {
+      index[k] = static_cast<int>(used.size());
+      used.push_back(static_cast<int>(k));
+    }
   CreaseStitching st;
   std::vector<std::set<int>> adjacency(layout.patch_count);
-  for (size_t k = 0; k < layout.points.size(); ++k) {
-    const auto& lp = layout.points[k];
+  for (size_t k = 0; k < used.size(); ++k) {
+    const auto& lp = points[used[k]];
     CreaseStitching::Point sp;
     sp.flat = mesh.to_mesh(lp.position);
     for (int p : lp.patches) {
@@ -110,9 +185,9 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh) 
     st.points.push_back(std::move(sp));
   }
   for (const auto& s : adjacency) st.patch_adjacency.emplace_back(s.begin(), s.end());
-  for (const auto& c : layout.curves) {
+  for (const auto& c : curves) {
     CreaseStitching::Curve curve;
-    curve.points = c.points;
+    for (int p : c.points) curve.points.push_back(index[p]);
     curve.closed = c.closed;
     st.curves.push_back(std::move(curve));
   }
@@ -121,8 +196,8 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh) 
 
 }  // namespace
 
-DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
-                       double scale) {
+DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin, double scale,
+                       int coarse_step) {
   DogMesh mesh;
   mesh.sheet_origin = sheet_origin;
   mesh.scale = scale;
@@ -140,7 +215,7 @@ DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_o
   for (size_t k = 0; k < V.size(); ++k) mesh.V.row(static_cast<Eigen::Index>(k)) = V[k].transpose();
   mesh.F.resize(static_cast<Eigen::Index>(F.size()), 4);
   for (size_t k = 0; k < F.size(); ++k) mesh.F.row(static_cast<Eigen::Index>(k)) = F[k].transpose();
-  mesh.stitching = build_stitching(layout, mesh);
+  mesh.stitching = build_stitching(layout, mesh, coarse_step);
   for (const auto& piece : layout.pieces) {
     const auto& cells = patch_cells[piece.patch];
     const auto at = std::lower_bound(cells.begin(), cells.end(), piece.cell) - cells.begin();

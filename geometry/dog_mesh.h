@@ -90,9 +90,23 @@ struct DogMesh {
   }
 };
 
+/// Crease points closer than this (mesh units) to a grid vertex are taken onto it in pairs (below).
+constexpr double kVertexCreaseDistance = 0.02;
+
 /// Builds the mesh and its stitching from a patch layout (see the unit convention above).
+///
+/// A crease that passes within kVertexCreaseDistance of a grid vertex crosses the two grid lines
+/// through it at two nearly coincident crease points. Their stitching rows are nearly parallel,
+/// and once the sheet is folded and curved the two patches' edge chords cannot meet at both:
+/// restoration stalls with the two gaps equal and opposite (around 1e-3 mesh units). The
+/// stitching takes such a pair (consecutive along one crease, between the same two patches) as one
+/// crease point on the vertex, which moves the crease by at most kVertexCreaseDistance; cells and
+/// vertices stay as the layout made them. `coarse_step` 2 marks the fine mesh of nested grids
+/// (coarse line k is line 2k): there a pair is taken onto a vertex only where the coarse mesh does
+/// the same (a coarse vertex) or has neither point (both lines fine-only), so that coarse crease
+/// points stay fine ones.
 /// Throws std::logic_error if a crease point ends up with fewer than two copies.
-DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin,
-                       double scale);
+DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin, double scale,
+                       int coarse_step = 1);
 
 }  // namespace sdog

@@ -1,5 +1,7 @@
 #include "geometry/dog_model.h"
 
+#include <algorithm>
+
 #include "base/errors.h"
 
 namespace sdog {
@@ -66,7 +68,7 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   const PatchLayout fine = checked_layout(m, res, fx, fy, nested ? 2 : 1);
   const Eigen::Vector2d origin(b.xmin, b.ymin);
   const double scale = (res.nx - 1) / b.width();
-  m.fine = build_dog_mesh(fine, origin, scale);
+  m.fine = build_dog_mesh(fine, origin, scale, nested ? 2 : 1);
   copy_folds(m.clean, m.fine);
   m.fine_topology = quad_topology(m.fine);
   for (const auto& ring : fine.boundary) {
@@ -98,6 +100,21 @@ std::vector<std::string> model_warnings(const DogModel& model) {
   const auto& box = model.pattern.sheet.bbox;
   if (std::string grid = cell_shape_warning(model.fine_res, box.width(), box.height()); !grid.empty())
     warnings.push_back(std::move(grid));
+  // A crease that crosses no grid edge between two patches runs along grid lines (or from vertex
+  // to vertex): it has no fold site, so nothing folds it and nothing measures its angle.
+  const CreaseStitching& st = model.fine.stitching;
+  for (size_t k = 0; k < st.curves.size() && k < model.clean.creases.size(); ++k) {
+    const auto& points = st.curves[k].points;
+    const bool crosses = std::any_of(points.begin(), points.end(), [&](int p) {
+      const auto& copies = st.points[p].copies;
+      return copies.size() == 2 && copies[0].v1 != copies[0].v2;
+    });
+    if (!crosses && st.curves[k].fold != Fold::kFlat)
+      warnings.push_back("crease " + std::to_string(k) + " (" + model.clean.creases[k].origin + ") runs along grid lines at " +
+                         model.fine_res.str() +
+                         " and crosses no grid edge: it has no fold site, so the fold scenario cannot fold it "
+                         "and creases.csv has no angle for it (another resolution moves the grid lines off it)");
+  }
   return warnings;
 }
 

@@ -40,7 +40,8 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
                          const MeshOptions& options = {});
 
 /// What a user of the model should know: the warnings of reading and cleaning the pattern, then
-/// the grid's (cell_shape_warning), one line each.
+/// the grid's (cell_shape_warning) and the creases that cross no grid edge (no fold site), one
+/// line each.
 std::vector<std::string> model_warnings(const DogModel& model);
 
 }  // namespace sdog

@@ -22,10 +22,24 @@ double handle_distance(const DogProblem& problem, const Dofs& x) {
   return d;
 }
 
+// The configuration's scenario over k iterations, then held (run_pace).
+PaceResult run_paced(const DogModel& model, RunConfig config, int k, int max_hold);
+
 }  // namespace
 
 PaceResult run_pace(const DogModel& model, RunConfig config, int k, int max_hold) {
   config.scenario = ScenarioKind::kCorners;
+  return run_paced(model, config, k, max_hold);
+}
+
+PaceResult run_fold_pace(const DogModel& model, RunConfig config, int k, int max_hold) {
+  config.scenario = ScenarioKind::kFold;
+  return run_paced(model, config, k, max_hold);
+}
+
+namespace {
+
+PaceResult run_paced(const DogModel& model, RunConfig config, int k, int max_hold) {
   config.iterations = k;
   config.hold = max_hold;
   config.switches.clear();
@@ -50,9 +64,11 @@ PaceResult run_pace(const DogModel& model, RunConfig config, int k, int max_hold
     result.stitch_gap_max = r.diagnostics.stitch_gap_max;
     result.folded = r.step.folded;
     result.positions = r.diagnostics.terms[kPositions];
+    result.angles = r.diagnostics.angles_met;
+    const bool converged = i >= k && r.t >= 1 && r.step.target_fraction >= 1 && r.step.converged.value_or(false);
+    result.converged = converged || (left == 0 && finishing);
     if (left == 0) break;
-    if (i >= k && r.t >= 1 && r.step.target_fraction >= 1 && r.step.converged.value_or(false) &&
-        !result.time_to_shape_s) {
+    if (converged && !result.time_to_shape_s) {
       result.time_to_shape_s = ms_since(start) / 1000;
       finishing = true;  // the next iteration is the last
     }
@@ -61,6 +77,8 @@ PaceResult run_pace(const DogModel& model, RunConfig config, int k, int max_hold
   result.handle_distance = handle_distance(setup.problem(), setup.positions());
   return result;
 }
+
+}  // namespace
 
 std::vector<double> objective_ratios(const std::vector<PaceResult>& results) {
   double best = std::numeric_limits<double>::infinity();

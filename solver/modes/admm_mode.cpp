@@ -113,7 +113,7 @@ StepReport AdmmMode::iterate(const IterationContext& ctx, Dofs& x) {
     update_multipliers(x);
   }
   report.step_length = 1;
-  report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;
+  report.folded = check_folded(problem_.mesh(), problem_.free_sites, x).folded;
   return report;
 }
 

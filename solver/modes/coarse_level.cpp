@@ -34,15 +34,14 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
     else
       carried_.push_back(p);
   }
-  // An angle constraint at a fine crease point with a coarse twin constrains the twin to the same
-  // dihedral angle (the target cosine recomputed for the coarse edges' angle to the crease); one at a
-  // fine-only crease point acts on the fine mesh only.
+  // An angle constraint at a fine crease point whose coarse twin is a fold site constrains the twin
+  // to the same dihedral angle; one at a fine-only crease point acts on the fine mesh only.
   coarse_scenario.angles.clear();
   const std::vector<int> crease_twin = coarse_crease_twins(model);
+  const std::vector<FoldSite> coarse_sites = fold_sites(model.coarse);
   for (const AngleConstraint& a : scenario.angles) {
     const int c = crease_twin[a.point];
-    if (c < 0 || model.coarse.stitching.points[c].copies.size() != 2) continue;
-    coarse_scenario.angles.push_back(angle_constraint(model.coarse, c, a.start_degrees, a.end_degrees));
+    if (c >= 0 && find_fold_site(coarse_sites, c)) coarse_scenario.angles.push_back({c, a.start_degrees, a.end_degrees});
   }
   coarse_scenario.curve_signs.resize(model.coarse.stitching.curves.size(), 0.0);  // curves correspond by index
   Weights weights = fine.weights;
@@ -80,7 +79,7 @@ void CoarseLevel::start_from(const Dofs& fine_x) {
   // fold test reads the crease's osculating plane from second differences of crease points 2 fine
   // cells apart); the fold bias then makes the coarse step fail. The coarse mesh then follows the
   // fine folds through the link targets instead of folding on its own.
-  if (!check_folded(model_.coarse, problem_->sites, x_).folded) mode_->set_folding(false);
+  if (!check_folded(model_.coarse, problem_->free_sites, x_).folded) mode_->set_folding(false);
 }
 
 CoarseLevel::~CoarseLevel() = default;

@@ -78,7 +78,7 @@ StepReport CoarseMode::iterate(const IterationContext& ctx, Dofs& x) {
     report.failure = "fine step: " + report.failure;
     return report;
   }
-  report.folded = check_folded(model_.fine, fine_.sites, x).folded;
+  report.folded = check_folded(model_.fine, fine_.free_sites, x).folded;
   return report;
 }
 

@@ -25,6 +25,8 @@ const OptionTable<StandardOptions>& standard_option_table() {
                          "hold, continuation sub-steps when they moved)"),
           real_option("max_target_step", &O::max_target_step, Bounds::positive(),
                       "a converging iteration moves each target at most this fraction of the sheet's size"),
+          real_option("max_angle_step", &O::max_angle_step, Bounds::positive(),
+                      "a converging iteration moves each dihedral-angle target at most this many degrees"),
           real_option("substep_step_length", &O::substep_step_length, Bounds::between(0, 1),
                       "a sub-step towards moved targets is kept when its line search kept at least this "
                       "fraction of the full step; else it is halved"),

@@ -25,6 +25,10 @@ struct StandardOptions {
   int max_iteration_steps = 10;
   /// A continuation sub-step moves a target at most this fraction of the sheet's size.
   double max_target_step = 0.02;
+  /// A continuation sub-step changes a dihedral-angle target at most this much (degrees; where the
+  /// crease crosses its grid edge at right angles, more where it crosses obliquely, as the angle
+  /// term weighs such sites less).
+  double max_angle_step = 10;
   /// A continuation sub-step is kept when its line search kept at least this fraction of the
   /// full step.
   double substep_step_length = 0.25;

@@ -43,7 +43,7 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
       options_(options),
       constraints_(problem, options.stitching),
       base_fold_bias_(problem.weights.fold_bias),
-      sheet_size_(sheet_size(problem.rest())) {
+      steps_{options.max_target_step * sheet_size(problem.rest()), options.max_angle_step * M_PI / 180} {
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;
@@ -92,7 +92,7 @@ StepReport StandardMode::step(Dofs& x, bool last) {
 }
 
 bool StandardMode::folded(const Dofs& x) const {
-  return !options_.folding || check_folded(problem_.mesh(), problem_.sites, x).folded;
+  return !options_.folding || check_folded(problem_.mesh(), problem_.free_sites, x).folded;
 }
 
 StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
@@ -105,7 +105,7 @@ StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
   const Dofs x0 = x;
   const Eigen::VectorXd lambda0 = sqp_->multipliers();
   if (!solve(x, last, max_steps, report, constraint_max)) return report;
-  const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
+  const FoldCheck check = check_folded(problem_.mesh(), problem_.free_sites, x);
   report.folded = check.folded;
   if (report.folded) {
     set_fold_bias(base_fold_bias_);
@@ -122,7 +122,7 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   const Targets goal = Targets::of(problem_);
   if (goals_ == 0) away_from_origin_ = origin_ && *origin_ != x;  // this mode's first iteration
   if (!origin_) origin_ = x;
-  if (!goal_ || !goal_->matches(goal) || goal_->distance(goal) > 0) {
+  if (!goal_ || !goal_->matches(goal) || goal_->distance(goal, steps_) > 0) {
     goal_ = goal;
     ++goals_;
     settled_ = false;
@@ -132,7 +132,7 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     reached_ = Targets::met_by(problem_, x);
     converged_ = false;
   }
-  const double distance = reached_->distance(goal);
+  const double distance = reached_->distance(goal, steps_);
   if (distance > 0) {
     converged_ = false;
     held_best_.reset();
@@ -154,7 +154,8 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   }
   // A raised fold bias serves the iteration that raised it only.
   if (options_.folding) set_fold_bias(base_fold_bias_);
-  if (distance == 0 && !report.failed && !converged_ && !lowers_objective(x)) {
+  if (distance == 0 && !report.failed && !converged_ && !lowers_objective(x) &&
+      sqp_->constraint_values(x).lpNorm<Eigen::Infinity>() <= options_.sqp.constraint_tolerance) {
     converged_ = true;
     report.converged = true;
   }
@@ -194,9 +195,15 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
     StepReport straight;
     settling_->mode->finish(settling_->x, straight);
     report.work += straight.work;
+    // The straight fold replaces the state when it is folded and bends no more fold sites against
+    // their angle targets; with as many, when the state is unfolded or its objective is higher.
     const double f = weighted_objective(problem_, x);
     const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
-    if (straight.folded && (!report.folded || weighted_objective(problem_, settling_->x) < f - margin)) {
+    const int against = angle_agreement(problem_, x).against();
+    const int straight_against = angle_agreement(problem_, settling_->x).against();
+    if (straight.folded && (straight_against < against ||
+                            (straight_against == against &&
+                             (!report.folded || weighted_objective(problem_, settling_->x) < f - margin)))) {
       x = settling_->x;
       sqp_->set_multipliers(settling_->mode->sqp().multipliers());
       report.settling = Settling::kReplaced;
@@ -209,9 +216,8 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
 }
 
 StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
-  const double cap_length = options_.max_target_step * sheet_size_;
-  const double short_length = kShortSubstep * cap_length;
-  if (distance <= short_length) {  // targets that move little, as in the thesis protocol
+  // Distances count sub-steps of the largest size (steps_).
+  if (distance <= kShortSubstep) {  // targets that move little, as in the thesis protocol
     goal.install(problem_);
     StepReport report = attempt(x, false, 0);
     if (!report.failed) reached_ = goal;
@@ -226,9 +232,9 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   // restored to the constraint tolerance below, once.
   sqp_->set_restoration_tolerance(options_.substep_constraint_tolerance);
   for (int attempts = 0; attempts < options_.max_iteration_steps; ++attempts) {
-    const double remaining = reached_->distance(goal);
+    const double remaining = reached_->distance(goal, steps_);
     if (remaining == 0) break;
-    const double s = std::min({1.0, cap_length / remaining, substep_});
+    const double s = std::min({1.0, 1 / remaining, substep_});
     const Targets at = reached_->towards(goal, s);
     at.install(problem_);
     const Dofs x0 = x;
@@ -236,7 +242,7 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     StepReport r = attempt(x, false, 1);
     report.work += r.work;
     const bool smallest = s <= kSmallestSubstep;
-    if (!r.failed && (r.step_length >= options_.substep_step_length || s * remaining <= short_length || smallest)) {
+    if (!r.failed && (r.step_length >= options_.substep_step_length || s * remaining <= kShortSubstep || smallest)) {
       reached_ = at;
       substep_ = std::min(1.0, 2 * substep_);
       report.step_length = r.step_length;
@@ -260,7 +266,7 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
       return report;
     }
   }
-  report.target_fraction = 1 - reached_->distance(goal) / distance;
+  report.target_fraction = 1 - reached_->distance(goal, steps_) / distance;
   if (report.target_fraction == 0 && rejected && rejected->failed) {  // not even the smallest sub-step
     report.failed = true;
     report.failure = rejected->failure;
@@ -287,7 +293,19 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
   constraint_max_ = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
   if (constraint_max_ > tolerance) {
     const Dofs x0 = x;
+    const double constraint_max0 = constraint_max_;
+    const double residual0 = iteration_residual(x);
     project(x, report);
+    // The projection has a budget (polish_factorizations) and ends at its best state; one that
+    // ends with larger residuals than it started (as the iterations measure them: its own scale
+    // trades DOG rows for stitching gaps), or not finite, is dropped.
+    if (!x.allFinite() || !(iteration_residual(x) <= residual0)) {
+      x = x0;
+      constraint_max_ = constraint_max0;
+      constraints_.use_final_scale(false);
+      report.folded = folded(x);
+      return;
+    }
     // The projection moves x least in the metric of the objective's Hessian, which may carry a fold
     // site across flat; a raised fold bias stiffens the metric there.
     if (!folded(x)) {
@@ -307,6 +325,13 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
   }
   constraints_.use_final_scale(false);
   report.folded = folded(x);
+}
+
+double StandardMode::iteration_residual(const Dofs& x) {
+  constraints_.use_final_scale(false);
+  const double r = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();
+  constraints_.use_final_scale(true);
+  return r;
 }
 
 void StandardMode::project(Dofs& x, StepReport& report) {
@@ -343,7 +368,7 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
       report.failure.clear();
       break;
     }
-    const FoldCheck check = check_folded(problem_.mesh(), problem_.sites, x);
+    const FoldCheck check = check_folded(problem_.mesh(), problem_.free_sites, x);
     report.folded = check.folded;
     if (check.violations < best.violations && constraint_max <= feasible)
       best = {x, sqp_->multipliers(), check.violations, report.step_length, report.converged};

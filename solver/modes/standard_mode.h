@@ -104,6 +104,8 @@ class StandardMode : public Mode {
   /// with a raised fold bias while that leaves a fold site unfolded; report.folded says whether x
   /// ends folded.
   void finish(Dofs& x, StepReport& report);
+  /// |c|_inf of x with the iterations' constraint scale (finish() runs with the final one).
+  double iteration_residual(const Dofs& x);
   /// x projected to the final constraint tolerance (at the stitching rows' final scale).
   void project(Dofs& x, StepReport& report);
   /// One SQP solve, its work added to `report`; false when it failed.
@@ -140,7 +142,9 @@ class StandardMode : public Mode {
   std::unique_ptr<StraightFold> settling_;  ///< the straight fold in progress
   bool settled_ = false;                ///< settling is done for goal_
   double constraint_max_ = 0;       ///< after the last solve
-  double sheet_size_;               ///< largest side of the rest state's bounding box
+  /// The largest continuation sub-step: max_target_step of the largest side of the rest state's
+  /// bounding box, max_angle_step.
+  TargetSteps steps_;
 };
 
 }  // namespace sdog

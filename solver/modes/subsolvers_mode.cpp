@@ -29,7 +29,7 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   terms.push_back({&targets_, problem_.weights.stitching, false});
   PatchCoupling coupling{&frozen_, problem_.cross_patch_terms()};
   if (options_.fold_sharpness > 0 && options_.fold_sharpness != problem_.fold_bias.sharpness()) {
-    fold_bias_ = std::make_unique<FoldBiasTerm>(mesh, problem_.sites, options_.fold_sharpness);
+    fold_bias_ = std::make_unique<FoldBiasTerm>(mesh, problem_.free_sites, options_.fold_sharpness);
     terms[kFoldBias].term = fold_bias_.get();
     std::replace(coupling.split.begin(), coupling.split.end(), static_cast<const Term*>(&problem_.fold_bias),
                  static_cast<const Term*>(fold_bias_.get()));
@@ -75,7 +75,7 @@ StepReport SubsolversMode::round(Dofs& x, bool last) {
     return report;
   }
   report.step_length = 1;
-  report.folded = check_folded(problem_.mesh(), problem_.sites, x).folded;
+  report.folded = check_folded(problem_.mesh(), problem_.free_sites, x).folded;
   return report;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/statistics.h"
+
 namespace sdog {
 namespace {
 
@@ -26,6 +28,31 @@ double sum_of_squares(const Term& t, const Dofs& x) {
 }
 
 }  // namespace
+
+double angle_difference(double angle, double target) {
+  double d = std::fmod(angle - target, 360.0);
+  if (d > 180) d -= 360;
+  if (d <= -180) d += 360;
+  return d;
+}
+
+AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x) {
+  AngleAgreement a;
+  std::vector<double> errors;
+  for (int b = 0; b < problem.angles.block_count(); ++b) {
+    const int k = problem.fold_angles.site_of(problem.angles.point(b));
+    if (k < 0) continue;
+    const double target = problem.angles.target(b) * 180 / M_PI, angle = problem.fold_angles.at(k, x);
+    errors.push_back(std::abs(angle_difference(angle, target)));
+    if (target == 0) continue;
+    ++a.targeted_sites;
+    if (std::abs(angle) <= kBentDegrees) continue;
+    ++a.bent_sites;
+    if (angle * target > 0) ++a.bent_as_targeted;
+  }
+  a.median_error = median(errors);
+  return a;
+}
 
 double weighted_objective(const DogProblem& problem, const Dofs& x) {
   double f = 0;
@@ -52,6 +79,7 @@ Diagnostics diagnose(const DogProblem& problem, const Dofs& x) {
   for_each_block(problem.stitching, x, [&](int, const double* r, int) {
     d.stitch_gap_max = std::max(d.stitch_gap_max, std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
   });
+  d.angles_met = angle_agreement(problem, x);
   for (int b = 0; b < problem.isometry.block_count(); ++b) {
     const int* v = problem.isometry.block_vertices(b);
     const double len = (vertex_of(x, v[0]) - vertex_of(x, v[1])).norm();

@@ -9,6 +9,25 @@
 
 namespace sdog {
 
+/// A fold site counts as bent (one way or the other) beyond this angle, degrees.
+constexpr double kBentDegrees = 5;
+
+/// The signed difference angle - target wrapped into (-180, 180] degrees.
+double angle_difference(double angle, double target);
+
+/// The fold angles against the angle targets (problem.angles): of the fold sites with a nonzero
+/// target, how many bend by more than kBentDegrees and how many of those bend the way their target
+/// says; and the median |angle - target| over every site with a target (degrees).
+struct AngleAgreement {
+  int targeted_sites = 0, bent_sites = 0, bent_as_targeted = 0;
+  double median_error = 0;
+  /// bent_as_targeted / bent_sites (1 when no site bends).
+  double direction_agreement() const { return bent_sites > 0 ? double(bent_as_targeted) / bent_sites : 1.0; }
+  /// Sites bent against their target.
+  int against() const { return bent_sites - bent_as_targeted; }
+};
+AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x);
+
 struct Diagnostics {
   double objective = 0;                     ///< weighted, with the problem's current weights
   std::array<double, kTermCount> terms{};   ///< unweighted sum of squared residuals per term
@@ -16,7 +35,9 @@ struct Diagnostics {
   double dog_l2 = 0;                        ///< |c|_2
   double stitch_gap_max = 0;                ///< largest distance between two copies of a crease point
   double edge_strain_max = 0;               ///< largest |length / rest length - 1| over quad edges
+  AngleAgreement angles_met;
 };
+
 
 Diagnostics diagnose(const DogProblem& problem, const Dofs& x);
 

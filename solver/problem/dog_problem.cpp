@@ -14,11 +14,14 @@ DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const 
     : weights(w),
       isometry(topology, to_dofs(mesh.V)),
       sites(fold_sites(mesh)),
-      fold_bias(mesh, sites, fold_sharpness),
+      free_sites(sites),
+      fold_bias(mesh, free_sites, fold_sharpness),
+      fold_angles(mesh),
       dog(topology),
       mesh_(mesh),
       topology_(topology),
-      rest_(to_dofs(mesh.V)) {
+      rest_(to_dofs(mesh.V)),
+      fold_sharpness_(fold_sharpness) {
   bending = make_bending_term(topology, rest_);
   for (const auto& pair : mesh.stitching.pairs) {
     const auto& p = mesh.stitching.points[pair.point];
@@ -40,6 +43,15 @@ double DogProblem::effective_weight(int index) const {
     case kLink: return weights.link;
   }
   return 0;
+}
+
+void DogProblem::update_free_sites() {
+  std::vector<char> targeted(mesh_.stitching.points.size(), 0);
+  for (int b = 0; b < angles.block_count(); ++b) targeted[angles.point(b)] = 1;
+  free_sites.clear();
+  for (const auto& site : sites)
+    if (!targeted[site.point]) free_sites.push_back(site);
+  fold_bias = FoldBiasTerm(mesh_, free_sites, fold_sharpness_);
 }
 
 std::vector<WeightedTerm> DogProblem::objective_terms() const {

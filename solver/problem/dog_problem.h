@@ -1,7 +1,8 @@
 #pragma once
 // The terms of a deformation problem on one DOG mesh, with the thesis's default weights:
 // bending 1, isometry 20000/|E| (|E| = all quad edges, duplicates included), stitching 10,
-// positions 25, edge points 25, angles 1000, fold bias 1, link 0 (used by the coarse modes).
+// positions 25, edge points 25, angles 100 (the thesis: 1000, weights.h), fold bias 1, link 0
+// (used by the coarse modes).
 #include <string>
 #include <vector>
 
@@ -10,7 +11,8 @@
 #include "solver/terms/bending.h"
 #include "solver/terms/crease_geometry.h"
 #include "solver/terms/dog_constraints.h"
-#include "solver/terms/edge_angles.h"
+#include "solver/terms/dihedral_angles.h"
+#include "solver/terms/fold_angles.h"
 #include "solver/terms/fold_bias.h"
 #include "solver/terms/isometry.h"
 #include "solver/terms/linear_point_term.h"
@@ -51,20 +53,28 @@ class DogProblem {
   /// becomes per-patch targets instead.)
   std::vector<const Term*> cross_patch_terms() const { return {&fold_bias, &angles}; }
   double effective_weight(int index) const;
+  /// Sets free_sites (and the fold bias's blocks) from the angle blocks; before any solver is made
+  /// for the problem (it fixes the sparsity pattern).
+  void update_free_sites();
 
   Weights weights;
   LinearPointTerm bending{"bending"};
   IsometryTerm isometry;
   LinearPointTerm positions{"positions"}, edge_points{"edge_points"}, stitching{"stitching"}, link{"link"};
-  EdgeAngleTerm angles;
-  std::vector<FoldSite> sites;
-  FoldBiasTerm fold_bias;
+  DihedralAngleTerm angles;
+  std::vector<FoldSite> sites;  ///< every fold site of the mesh
+  /// The fold sites without an angle block: the only ones the fold bias pushes and the fold test
+  /// (check_folded) checks. A site with a signed angle target gets its direction from that.
+  std::vector<FoldSite> free_sites;
+  FoldBiasTerm fold_bias;  ///< over free_sites
+  FoldAngles fold_angles;  ///< what the angle term's sites measure (diagnostics)
   DogConstraints dog;
 
  private:
   const DogMesh& mesh_;
   const QuadTopology& topology_;
   Dofs rest_;
+  double fold_sharpness_;
 };
 
 }  // namespace sdog

@@ -31,32 +31,12 @@ int nearest_vertex(const DogMesh& mesh, const Eigen::Vector2d& p) {
   return best;
 }
 
-// The crease point's position along a curve (its neighbours), if it has two neighbours.
-bool neighbours_of(const DogMesh& mesh, int point, CreaseNeighbours& nb) {
-  for (const auto& curve : mesh.stitching.curves)
-    for (int k = 0; k < static_cast<int>(curve.points.size()); ++k)
-      if (curve.points[k] == point) {
-        nb = crease_neighbours(curve, k);
-        return nb.prev >= 0 && nb.next >= 0;
-      }
-  return false;
-}
-
 }  // namespace
 
-double crease_tangent_angle(const DogMesh& mesh, int point) {
-  const auto& cp = mesh.stitching.points[point];
-  CreaseNeighbours nb;
-  if (cp.copies.size() != 2 || !neighbours_of(mesh, point, nb))
-    throw std::logic_error("crease point " + std::to_string(point) + " has no angle");
-  auto flat = [&](int q) {
-    const EdgePoint& e = mesh.stitching.points[q].copies.front();
-    return Eigen::Vector3d(e.t * mesh.V.row(e.v1) + (1 - e.t) * mesh.V.row(e.v2));
-  };
-  const Eigen::Vector3d T = circle_tangent(flat(nb.prev), flat(point), flat(nb.next));
-  const Eigen::Vector3d e = (mesh.V.row(cp.copies[0].v1) - mesh.V.row(cp.copies[0].v2)).transpose().normalized();
-  // alpha and pi - alpha give the same cosine target.
-  return std::acos(std::clamp(std::abs(T.dot(e)), 0.0, 1.0));
+const FoldSite* find_fold_site(const std::vector<FoldSite>& sites, int point) {
+  for (const auto& site : sites)
+    if (site.point == point) return &site;
+  return nullptr;
 }
 
 void Scenario::install(DogProblem& problem) const {
@@ -64,15 +44,12 @@ void Scenario::install(DogProblem& problem) const {
   problem.positions.clear();
   for (const auto& pc : positions) problem.positions.add({{pc.vertex, 1.0}}, pc.start);
   problem.angles.clear();
-  const Dofs& rest = problem.rest();
   for (const auto& ac : angles) {
-    const auto& cp = problem.mesh().stitching.points[ac.point];
-    const EdgePoint& a = cp.copies[0];
-    const EdgePoint& b = cp.copies[1];
-    const double la = (vertex_of(rest, a.v1) - vertex_of(rest, a.v2)).norm();
-    const double lb = (vertex_of(rest, b.v1) - vertex_of(rest, b.v2)).norm();
-    problem.angles.add(a.v1, a.v2, b.v1, b.v2, la * lb, 1.0);
+    const FoldSite* site = find_fold_site(problem.sites, ac.point);
+    if (!site) throw std::logic_error("crease point " + std::to_string(ac.point) + " is no fold site");
+    problem.angles.add(dihedral_site(problem.mesh(), *site), 0);
   }
+  problem.update_free_sites();
   apply(problem, 0);
 }
 
@@ -81,8 +58,7 @@ void Scenario::apply(DogProblem& problem, double t) const {
     problem.positions.set_target(static_cast<int>(k), positions[k].start + t * (positions[k].end - positions[k].start));
   for (size_t k = 0; k < angles.size(); ++k) {
     const auto& ac = angles[k];
-    const double theta = (ac.start_degrees + t * (ac.end_degrees - ac.start_degrees)) * kDegree;
-    problem.angles.set_cos(static_cast<int>(k), crease_edge_cosine(ac.alpha, theta));
+    problem.angles.set_target(static_cast<int>(k), (ac.start_degrees + t * (ac.end_degrees - ac.start_degrees)) * kDegree);
   }
 }
 
@@ -109,7 +85,7 @@ Scenario corners_scenario(const DogMesh& mesh, int iterations, int hold) {
   return s;
 }
 
-Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int hold) {
+Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int hold, double percent) {
   Scenario s;
   s.name = "fold";
   s.iterations = iterations;
@@ -120,7 +96,7 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int 
     s.curve_signs[c] = target > 0 ? 1.0 : target < 0 ? -1.0 : 0.0;
   }
   for (const auto& site : fold_sites(mesh))
-    s.angles.push_back(angle_constraint(mesh, site.point, 0.0, crease_fold_target(mesh, site.curve, degrees)));
+    s.angles.push_back({site.point, 0.0, percent / 100 * crease_fold_target(mesh, site.curve, degrees)});
   return s;
 }
 
@@ -130,10 +106,6 @@ double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees) {
   const double size = c.angle ? *c.angle : std::abs(degrees);
   const double sign = c.fold == Fold::kUnassigned ? (degrees < 0 ? -1.0 : 1.0) : fold_sign(c.fold);
   return sign * size;
-}
-
-AngleConstraint angle_constraint(const DogMesh& mesh, int point, double start_degrees, double end_degrees) {
-  return {point, start_degrees, end_degrees, crease_tangent_angle(mesh, point)};
 }
 
 }  // namespace sdog

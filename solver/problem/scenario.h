@@ -15,11 +15,11 @@ struct PositionConstraint {
   Eigen::Vector3d start, end;
 };
 
-/// Dihedral angle at a crease point (its two edge copies), from start to end (degrees; 0 = flat).
+/// Signed dihedral angle at a fold site (its crease point), from start to end (degrees; 0 = flat,
+/// positive valley, negative mountain; dihedral_angles.h).
 struct AngleConstraint {
   int point;
   double start_degrees = 0, end_degrees = 0;
-  double alpha = 0;  ///< crease_tangent_angle of the point (radians)
 };
 
 struct Scenario {
@@ -55,11 +55,13 @@ struct Scenario {
 /// a mirror in z, which leaves every objective value unchanged.)
 Scenario corners_scenario(const DogMesh& mesh, int iterations = 250, int hold = 50);
 
-/// Every crease point where a crease crosses the inside of a grid edge between two patches folds
-/// from flat towards its crease's target (crease_fold_target), curved folding without dragging.
-/// The targets are cosines: the direction of each fold comes from the start state, which tilts
-/// every crease towards its target's sign (fold_seed.h), and from the fold bias that then keeps it.
-Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250, int hold = 50);
+/// Every fold site (a crease point where a crease crosses the inside of a grid edge between two
+/// patches) folds from flat towards its crease's target (crease_fold_target), curved folding
+/// without dragging. The angle targets are signed, so each crease folds the way its target says;
+/// the start state is tilted towards those directions too (fold_seed.h). `percent`: the fold
+/// amount, the share of each target the sites end at (100: the whole angle).
+Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250, int hold = 50,
+                       double percent = 100);
 
 /// The signed fold angle (degrees; positive valley, negative mountain) the fold scenario asks of a
 /// crease curve: 0 for a crease assigned flat; else the drawing's angle for it, or |degrees|,
@@ -67,12 +69,7 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250
 /// (0 counts as positive).
 double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees);
 
-/// alpha at a crease point: the angle between the crease tangent (circle through the point and its
-/// neighbours, flat state) and the grid edge it crosses. Throws std::logic_error for points
-/// without two neighbours or two copies.
-double crease_tangent_angle(const DogMesh& mesh, int point);
-
-/// An angle constraint at a crease point with its alpha filled in.
-AngleConstraint angle_constraint(const DogMesh& mesh, int point, double start_degrees, double end_degrees);
+/// The fold site of crease point `point` among `sites`, or nullptr.
+const FoldSite* find_fold_site(const std::vector<FoldSite>& sites, int point);
 
 }  // namespace sdog

@@ -1,6 +1,9 @@
 #include "solver/run/run.h"
 
+#include <cmath>
+
 #include "base/stopwatch.h"
+#include "base/text_format.h"
 #include "solver/problem/targets.h"
 
 namespace sdog {
@@ -56,8 +59,16 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     }
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
+    const Dofs x_before = x;
     IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
     report.elapsed_ms = ms_since(start);
+    const Diagnostics& d = report.diagnostics;
+    if (!report.step.failed && (!std::isfinite(d.objective) || !(d.dog_max <= kDivergedDogResidual))) {
+      report.step.failed = true;
+      report.step.failure = "the state diverged (DOG residual " + format_number(d.dog_max) + ", objective " +
+                            format_number(d.objective) + ")";
+    }
+    if (report.step.failed) x = x_before;
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {

@@ -58,10 +58,14 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
 /// ends or the next switch.
 using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
 
+/// A state whose DOG residual exceeds this (mesh units: a tenth of a grid edge), or whose objective
+/// is not finite, has diverged: the iteration that reached it counts as failed.
+constexpr double kDivergedDogResidual = 0.1;
+
 /// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
 /// problem the diagnostics are measured on (its targets follow the scenario too). Stops at the
-/// first failed iteration (x keeps the last good state) or when `cancel` becomes true. `schedule`
-/// may switch modes during the run.
+/// first failed or diverged iteration (x keeps the last good state) or when `cancel` becomes true.
+/// `schedule` may switch modes during the run.
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
                         const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr,
                         const ModeSchedule& schedule = {});

@@ -38,9 +38,10 @@ Preset parse_preset(const std::string& name, const std::string& what) {
   return parse_name<Preset>(preset_names(), name, "preset", what);
 }
 
-void apply_preset(Preset preset, ModeOptions& o) {
+void apply_preset(Preset preset, RunConfig& o) {
   const StandardOptions defaults;
   const bool thesis = preset == Preset::kThesis;
+  o.weights.angles = thesis ? kThesisAngleWeight : Weights{}.angles;
   o.standard.stitching = thesis ? Stitching::kSoft : defaults.stitching;
   o.standard.sqp.polish_factorizations = thesis ? 0 : defaults.sqp.polish_factorizations;
   o.standard.converge = thesis ? false : defaults.converge;
@@ -61,6 +62,9 @@ const OptionTable<RunConfig>& run_option_table() {
       integer_option("hold", &C::hold, Bounds::at_least(0), "iterations with the final targets (also --hold)"),
       real_option("angle", &C::fold_angle, Bounds::between(-180, 180),
                   "degrees: the fold scenario's final dihedral angle, the flatten scenario's start (also --angle)"),
+      real_option("fold_percent", &C::fold_percent, Bounds::between(0, 100),
+                  "the fold scenario folds every crease to this percentage of its angle (the drawing's, a FOLD "
+                  "file's edges_foldAngle, or angle) (also --fold-percent)"),
   };
   return table;
 }

@@ -25,13 +25,12 @@ ScenarioKind parse_scenario(const std::string& name, const std::string& what = "
 
 /// Named sets of solver settings. kDefault: exact stitching, a polish with a factorisation
 /// budget. kThesis: the thesis's solver, for reproducing its numbers: soft stitching (weight 10), a
-/// polish without a budget.
+/// polish without a budget, one step per iteration, the fold bias up to 1e14 and the angle weight
+/// 1000.
 enum class Preset { kDefault, kThesis };
 std::vector<std::string> preset_names();
 /// Throws UsageError "`what`unknown preset 'name' (known: ...)" unless `name` is a preset.
 Preset parse_preset(const std::string& name, const std::string& what = "");
-/// Sets the options a preset decides (the others keep their values).
-void apply_preset(Preset preset, ModeOptions& options);
 
 /// A position constraint before it is resolved against a mesh.
 struct PositionSpec {
@@ -74,6 +73,9 @@ struct ModeSwitch {
   ModeKind mode = ModeKind::kStandard;
 };
 
+/// The thesis's weight of its dihedral-angle term (the default is Weights::angles).
+constexpr double kThesisAngleWeight = 1000;
+
 /// The run's configuration: the options of every mode (ModeOptions) and what the run asks for.
 struct RunConfig : ModeOptions {
   Preset preset = Preset::kDefault;  ///< the preset the solver options started from
@@ -81,12 +83,16 @@ struct RunConfig : ModeOptions {
   int iterations = 250;                            ///< iterations over which targets move
   int hold = 50;                                   ///< iterations with the final targets
   double fold_angle = 90;  ///< degrees: the fold scenario's final dihedral angle, the flatten scenario's start
+  double fold_percent = 100;  ///< how far the fold scenario folds: this share of every crease's angle
   Weights weights;
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
   std::vector<CreaseSetting> creases;
   std::vector<ModeSwitch> switches;  ///< mode switches during the run, by ascending iteration
 };
+
+/// Sets the options and weights a preset decides (the others keep their values).
+void apply_preset(Preset preset, RunConfig& config);
 
 /// The keys of the configuration's top level that hold one value: scenario, iterations, hold, angle.
 const OptionTable<RunConfig>& run_option_table();

@@ -54,6 +54,17 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"target_fraction", [](const R& r) { return number(r.step.target_fraction); }},
       {"settling", [](const R& r) { return std::string(settling_name(r.step.settling)); }},
       {"elapsed_ms", [](const R& r) { return number(r.elapsed_ms); }},
+      {"direction_agreement",
+       [](const R& r) {
+         const AngleAgreement& a = r.diagnostics.angles_met;
+         return a.targeted_sites > 0 ? number(a.direction_agreement()) : std::string();
+       }},
+      {"angle_error",
+       [](const R& r) {
+         const AngleAgreement& a = r.diagnostics.angles_met;
+         return a.targeted_sites > 0 ? number(a.median_error) : std::string();
+       }},
+      {"recovered_failures", [](const R& r) { return count(r.step.work.recovered_failures); }},
   };
   return columns;
 }

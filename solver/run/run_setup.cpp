@@ -13,7 +13,7 @@ Scenario named_scenario(const RunConfig& c, const DogMesh& mesh) {
     case ScenarioKind::kCorners:
       return corners_scenario(mesh, c.iterations, c.hold);
     case ScenarioKind::kFold:
-      return fold_scenario(mesh, c.fold_angle, c.iterations, c.hold);
+      return fold_scenario(mesh, c.fold_angle, c.iterations, c.hold, c.fold_percent);
     case ScenarioKind::kFlatten:
       return flatten_scenario(mesh, c.weights, c.standard, c.fold_angle, c.iterations, c.hold);
     case ScenarioKind::kNone:
@@ -67,13 +67,13 @@ void add_angles(const RunConfig& c, const DogMesh& mesh, Scenario& s) {
         throw InputError(a.path + ".crease_point: crease point " + std::to_string(*a.point) +
                          " is not a fold site (an interior crease point on an edge between two patches; the mesh "
                          "has " + std::to_string(sites.size()) + " of them, see `sdog mesh --out` creases.vtp)");
-      s.angles.push_back(angle_constraint(mesh, *a.point, a.start_degrees, a.end_degrees));
+      s.angles.push_back({*a.point, a.start_degrees, a.end_degrees});
       for (const auto& site : sites)
         if (site.point == *a.point) set_sign(site.curve, a.end_degrees);
     } else {
       for (const int curve : named_creases(mesh, a.curve, a.id, a.path)) {
         for (const auto& site : sites)
-          if (site.curve == curve) s.angles.push_back(angle_constraint(mesh, site.point, a.start_degrees, a.end_degrees));
+          if (site.curve == curve) s.angles.push_back({site.point, a.start_degrees, a.end_degrees});
         set_sign(curve, a.end_degrees);
       }
     }

@@ -50,7 +50,7 @@ void Session::rebuild() {
              base.end());
   for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
   for (const auto& a : user_.angles)
-    scenario_.angles.push_back(angle_constraint(model_.fine, a.crease_point, a.degrees, a.degrees));
+    scenario_.angles.push_back({a.crease_point, a.degrees, a.degrees});
   mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_);
   mode_->set_origin(origin_);
 }
@@ -143,6 +143,9 @@ int Session::add_angle(int crease_point, double degrees) {
     throw InputError("crease point " + std::to_string(crease_point) + " lies between " +
                      std::to_string(points[crease_point].copies.size()) +
                      " patches; a dihedral angle needs exactly two");
+  if (!find_fold_site(problem_->sites, crease_point))
+    throw InputError("crease point " + std::to_string(crease_point) +
+                     " is no fold site (it lies on a grid vertex or at the end of its crease)");
   if (!(std::abs(degrees) <= 180)) throw InputError("a dihedral angle must be in [-180, 180] degrees");
   // A flat sheet is a symmetric point of the angle constraint (no out-of-plane gradient): tilt it
   // towards the requested fold first, as the fold scenario's start state does.
@@ -219,6 +222,17 @@ void Session::fold() {
   config_ = next;
   base_ = std::move(scenario);
   reset();
+}
+
+void Session::set_fold_percent(double percent) {
+  if (!(percent >= 0 && percent <= 100)) throw InputError("a fold amount is from 0 to 100 percent");
+  config_.fold_percent = percent;
+  if (config_.scenario != ScenarioKind::kFold) {
+    fold();
+    return;
+  }
+  base_ = make_scenario(config_, model_.fine);
+  rebuild();
 }
 
 bool Session::undo() { return travel(undo_, redo_); }

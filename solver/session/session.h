@@ -112,6 +112,11 @@ class Session {
   /// the assignments; the constraints and the undo history stay. Throws UsageError when the
   /// pattern has no fold sites at this resolution.
   void fold();
+  /// The fold amount (0 to 100% of every crease's angle, config().fold_percent): the fold scenario's
+  /// targets move there from the current shape, which folds or unfolds the sheet as the session
+  /// steps; starts the fold scenario (fold()) when another one runs. Not an undoable edit (a view of
+  /// the fold, like Origami Simulator's fold percent). Throws InputError out of range.
+  void set_fold_percent(double percent);
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
   /// What undo() and redo() would undo or redo ("move handle 2", "assign 3 creases valley", ...;

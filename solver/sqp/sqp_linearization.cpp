@@ -196,7 +196,8 @@ bool SqpSolver::refactorize(const Dofs& x, Linearization& lin, double epsilon, b
   };
   assemble();
   for (int attempt = 0; attempt < kFactorizationAttempts; ++attempt) {
-    if (factor_->factorize(m_.K.lower(), delta_)) {
+    const bool injected = injected_failures_ > 0 && injected_failures_-- > 0;
+    if (!injected && factor_->factorize(m_.K.lower(), delta_)) {
       ++report.work.factorizations;
       ++factorizations_;
       report.work.factor_ms += ms_since(t0);

@@ -12,6 +12,9 @@ namespace {
 // The first KKT error of a pass counts this many times, so that at least one step runs unless the
 // error is tiny (as in the reference).
 constexpr double kFirstErrorWeight = 1e4;
+// A converging iteration's passes that do not lower the lowest objective by more than its
+// resolution, in a row, before the state counts as converged.
+constexpr int kPassesWithoutProgress = 3;
 // The polish tries rho capped at rho_max / this first, then at rho_max.
 constexpr double kFirstPolishCapDivisor = 100;
 const char* const kNotFinite = "the objective or the DOG constraints are not finite (NaN or infinity)";
@@ -99,30 +102,57 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
   pass.first_step_always = false;
   pass.trusted_backtracks = 0;
   SqpReport report;
-  const Dofs x0 = x;
-  const Eigen::VectorXd lambda0 = lambda_;
-  double f_before = objective(x);
-  int still_passes = 0;
+  double f_before = objective(x), f_best = f_before;
+  int still_passes = 0, without_progress = 0;
+  report.constraint_max = constraint_values(x).lpNorm<Eigen::Infinity>();
+  const bool feasible_start = report.constraint_max <= options_.constraint_tolerance;
   while (true) {
+    const Dofs x_pass = x;
+    const Eigen::VectorXd lambda_pass = lambda_;
     const SqpReport r = run_pass(x, pass);
     report.work += r.work;
-    report.constraint_max = r.constraint_max;
-    if (r.failed) {
-      x = x0;
-      lambda_ = lambda0;
-      report.failed = true;
-      report.failure = r.failure;
-      return report;
+    if (r.failed) {  // run_pass took x and the multipliers back to x_pass
+      if (!std::isfinite(f_before)) {  // targets or state not finite: no step can help
+        report.failed = true;
+        report.failure = r.failure;
+        return report;
+      }
+      ++report.work.recovered_failures;
+      if (pass.max_step <= kSmallestPassStep) break;
+      pass.max_step /= 2;
+      continue;
     }
-    if (r.work.steps > 0) report.step_length = r.step_length;
-    // Stationary: a full step would gain next to nothing, or the steps no longer change f (two
-    // passes in a row: the line search and the restoration undo each other, a cycle the first
-    // test does not see, which rounding alone can start or avoid).
+    // From a feasible state, a pass that ends feasible but higher went too far along the
+    // linearised constraints (its restoration took back more than its step gained): it is taken
+    // back, and the next one is shorter.
     const double f = objective(x), resolution = options_.converged_decrease * std::max(1.0, f);
-    still_passes = std::abs(f - f_before) <= resolution ? still_passes + 1 : 0;
-    f_before = f;
-    const bool stationary = r.work.steps == 0 || std::abs(r.full_step_decrease) <= resolution || still_passes >= 2;
-    report.converged = stationary && r.constraint_max <= options_.constraint_tolerance;
+    const bool rejected = feasible_start && r.work.steps > 0 && r.constraint_max <= options_.constraint_tolerance &&
+                          f > f_before;
+    if (rejected) {
+      x = x_pass;
+      lambda_ = lambda_pass;
+      pass.max_step /= 2;
+    } else {
+      if (r.work.steps > 0) {
+        pass.max_step = std::min(1.0, 2 * pass.max_step);
+        report.step_length = r.step_length;
+      }
+      report.constraint_max = r.constraint_max;
+    }
+    const double f_now = rejected ? f_before : f;
+    // Stationary: a full step would gain next to nothing; or the steps no longer change f (two
+    // passes in a row: the line search and the restoration undo each other, a cycle the first
+    // test does not see, which rounding alone can start or avoid); or kPassesWithoutProgress
+    // passes have not lowered the lowest f by more than the resolution (restoration to the
+    // constraint tolerance moves f by more than that where the constraints pull hard, as on a
+    // sheet folded towards angles it cannot reach).
+    still_passes = !rejected && std::abs(f - f_before) <= resolution ? still_passes + 1 : 0;
+    without_progress = f_now < f_best - resolution ? 0 : without_progress + 1;
+    f_best = std::min(f_best, f_now);
+    f_before = f_now;
+    const bool stationary = r.work.steps == 0 || (!rejected && std::abs(r.full_step_decrease) <= resolution) ||
+                            still_passes >= 2 || without_progress >= kPassesWithoutProgress;
+    report.converged = stationary && report.constraint_max <= options_.constraint_tolerance;
     // A pass without a step (stationary) would repeat itself.
     if (report.converged || r.work.steps == 0 || report.work.steps >= max_steps) break;
   }

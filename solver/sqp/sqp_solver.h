@@ -46,7 +46,7 @@
 // (docs/design/rejected.md).
 // A non-PD K first raises rho, then the shift delta. Failure (NaN or infinity, a factorisation that
 // fails at every shift, a line search that finds no decrease away from a stationary point) rolls
-// the iteration back and is reported.
+// the iteration back; iterate() reports it, converge() retries the pass with a shorter step.
 #include <Eigen/Sparse>
 #include <memory>
 #include <string>
@@ -95,8 +95,16 @@ class SqpSolver {
   /// objective by at most converged_decrease (relative, first order), or two steps in a row changed
   /// it by at most that, with the constraints within constraint_tolerance; at most `max_steps`.
   /// Its line search turns to the fallback merit penalty after the full step. Reports whether x
-  /// converged.
+  /// converged. A pass that fails (a factorisation that no rho or shift makes positive definite, a
+  /// non-finite Hessian, a line search without decrease) is taken back and retried with half the
+  /// step, down to kSmallestPassStep; then x stays at the last good pass, not converged, and the
+  /// call does not fail: a failed factorisation shortens the step, it does not end a run.
   SqpReport converge(Dofs& x, int max_steps);
+  static constexpr double kSmallestPassStep = 1.0 / 64;
+
+  /// Test seam: the next `count` factorisation attempts (every rho and shift tried counts) fail
+  /// as if K were not positive definite.
+  void inject_factorization_failures(int count) { injected_failures_ = count; }
 
   /// The last iteration's polish of x (above), its work added to `report`, whose constraint_max
   /// is x's on entry and is updated. At most polish_factorizations factorisations (0: no limit).
@@ -156,6 +164,7 @@ class SqpSolver {
     double rho_cap;              ///< rho may grow to this to make K positive definite
     bool first_step_always;      ///< the first KKT error counts 1e4 times (iterate())
     int trusted_backtracks;      ///< halvings with mu = rho before the fallback merit penalty
+    double max_step = 1;         ///< the line search starts with this fraction of the step
   };
   Pass ordinary_pass() const;
   Pass polish_pass(double rho_cap) const;
@@ -190,7 +199,7 @@ class SqpSolver {
   };
   LineSearch line_search(const Dofs& x, const Linearization& lin, const Eigen::VectorXd& d,
                          const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu, int max_halvings,
-                         SqpReport& report) const;
+                         double max_step, SqpReport& report) const;
   // sqp_restoration.cpp. False (with report.failure set) on NaN.
   bool restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings, SqpReport& report);
   // sqp_linearization.cpp.
@@ -238,6 +247,7 @@ class SqpSolver {
   RowMatrix factored_J_;
   LocalRestoration local_;
   long factorizations_ = 0;  ///< made so far
+  int injected_failures_ = 0;  ///< inject_factorization_failures()
   long factorization_stop_;  ///< no factorisation from this count on (the polish budget)
 };
 

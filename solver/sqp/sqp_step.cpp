@@ -19,8 +19,10 @@ constexpr double kBacktrack = 0.5;
 SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, const Pass& pass,
                                                   SqpReport& report) {
   if (!refactorize(x, lin, options_.epsilon, pass.curvature, pass.rho_cap, report)) {
-    report.failure = "the Cholesky factorisation failed (non-finite Hessian, or not positive definite even with rho " +
-                     format_number(rho_) + " and shift " + format_number(delta_) + ")";
+    report.failure = !m_.H.lower().coeffs().allFinite() || !m_.G.lower().coeffs().allFinite()
+                         ? "the Hessian is not finite (NaN or infinity)"
+                         : "the Cholesky factorisation failed (not positive definite even with rho " + format_number(rho_) +
+                               " and shift " + format_number(delta_) + ")";
     return StepOutcome::kFailed;
   }
   const Eigen::VectorXd Jtc = lin.J.transpose() * lin.c;
@@ -34,9 +36,10 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
   // First with mu = rho, for which d is a Newton direction; if that needs more than
   // trusted_backtracks halvings, again with the smaller merit_penalty (sqp_solver.h).
   const double mu = std::min(options_.merit_penalty, rho_);
-  LineSearch search =
-      line_search(x, lin, d, grad_phi, Jtc, rho_, mu < rho_ ? pass.trusted_backtracks : options_.max_backtracks, report);
-  if (!search.accepted && mu < rho_) search = line_search(x, lin, d, grad_phi, Jtc, mu, options_.max_backtracks, report);
+  LineSearch search = line_search(x, lin, d, grad_phi, Jtc, rho_,
+                                  mu < rho_ ? pass.trusted_backtracks : options_.max_backtracks, pass.max_step, report);
+  if (!search.accepted && mu < rho_)
+    search = line_search(x, lin, d, grad_phi, Jtc, mu, options_.max_backtracks, pass.max_step, report);
   if (!search.accepted) {
     if (-search.slope <= kStationarySlope * (1 + std::abs(search.phi0))) return StepOutcome::kStationary;
     report.failure = "the line search found no decrease of the merit function (directional derivative " +
@@ -53,8 +56,9 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
 
 SqpSolver::LineSearch SqpSolver::line_search(const Dofs& x, const Linearization& lin, const Eigen::VectorXd& d,
                                              const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu,
-                                             int max_halvings, SqpReport& report) const {
+                                             int max_halvings, double max_step, SqpReport& report) const {
   LineSearch s;
+  s.alpha = max_step;
   s.phi0 = lin.f - lambda_.dot(lin.c) + 0.5 * mu * lin.c.squaredNorm();
   s.slope = (grad_phi + (mu - rho_) * Jtc).dot(d);
   auto sufficient = [&](double phi, double a) {
@@ -66,7 +70,7 @@ SqpSolver::LineSearch SqpSolver::line_search(const Dofs& x, const Linearization&
       s.accepted = true;
       return s;
     }
-    if (k == 0 && options_.second_order_correction) {
+    if (k == 0 && max_step == 1 && options_.second_order_correction) {
       // The full step pulled back onto c = 0 with the same factorisation.
       Dofs x_soc = s.x + solve(-rho_ * (lin.J.transpose() * constraint_values(s.x)), report);
       if (sufficient(augmented_lagrangian(x_soc, mu), 1.0)) {

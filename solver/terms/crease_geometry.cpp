@@ -1,22 +1,10 @@
 #include "solver/terms/crease_geometry.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace sdog {
-
-CreaseNeighbours crease_neighbours(const CreaseStitching::Curve& curve, int k) {
-  const int n = static_cast<int>(curve.points.size());
-  CreaseNeighbours out;
-  if (curve.closed) {
-    out.prev = curve.points[(k + n - 1) % n];
-    out.next = curve.points[(k + 1) % n];
-  } else {
-    if (k > 0) out.prev = curve.points[k - 1];
-    if (k + 1 < n) out.next = curve.points[k + 1];
-  }
-  return out;
-}
 
 Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x) {
   return e.t * vertex_of(x, e.v1) + (1 - e.t) * vertex_of(x, e.v2);
@@ -32,25 +20,105 @@ Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& 
 }
 
 std::vector<FoldSite> fold_sites(const DogMesh& mesh) {
+  // Neighbours along the crease closer than this (mesh units) give no direction: a crease through
+  // (almost) a grid vertex crosses its two grid lines at (almost) the same point.
+  constexpr double kMinChord = 0.05;
   const CreaseStitching& st = mesh.stitching;
-  const Dofs rest = to_dofs(mesh.V);
   std::vector<FoldSite> sites;
   for (int c = 0; c < static_cast<int>(st.curves.size()); ++c) {
     const auto& curve = st.curves[c];
-    for (int k = 0; k < static_cast<int>(curve.points.size()); ++k) {
+    const int n = static_cast<int>(curve.points.size());
+    // The crease point `steps` along the curve from index k, or -1 past an open curve's end.
+    auto along = [&](int k, int steps) {
+      const int j = k + steps;
+      if (!curve.closed && (j < 0 || j >= n)) return -1;
+      return curve.points[(j % n + n) % n];
+    };
+    for (int k = 0; k < n; ++k) {
       const int point = curve.points[k];
       const auto& cp = st.points[point];
-      const CreaseNeighbours nb = crease_neighbours(curve, k);
-      if (nb.prev < 0 || nb.next < 0 || cp.copies.size() != 2 || cp.copies[0].v1 == cp.copies[0].v2) continue;
-      const Eigen::Vector3d p = crease_point_position(cp, rest);
-      const Eigen::Vector3d b = crease_point_position(st.points[nb.prev], rest);
-      const Eigen::Vector3d f = crease_point_position(st.points[nb.next], rest);
+      const int prev = along(k, -1), next = along(k, 1);
+      if (prev < 0 || next < 0 || cp.copies.size() != 2 || cp.copies[0].v1 == cp.copies[0].v2) continue;
+      const Eigen::Vector2d p = cp.flat, b = st.points[prev].flat, f = st.points[next].flat;
+      const double cross = (p - b).x() * (f - p).y() - (p - b).y() * (f - p).x();
       const double scale = (p - b).norm() * (f - p).norm();
-      const bool flat = curve.fold == Fold::kFlat || ((p - b).cross(f - p)).norm() <= 1e-9 * scale;
-      sites.push_back({c, k, point, nb.prev, nb.next, flat});
+      const bool flat = curve.fold == Fold::kFlat || std::abs(cross) <= 1e-9 * scale;
+      // The nearest points at least kMinChord away, each way (the neighbours when there are none).
+      auto chord_neighbour = [&](int dir, int fallback) {
+        for (int steps = dir; std::abs(steps) < n; steps += dir) {
+          const int q = along(k, steps);
+          if (q < 0) break;
+          if ((st.points[q].flat - p).norm() >= kMinChord) return q;
+        }
+        return fallback;
+      };
+      int chord_prev = chord_neighbour(-1, prev), chord_next = chord_neighbour(1, next);
+      if (chord_prev == chord_next) chord_prev = prev, chord_next = next;
+      sites.push_back({c, k, point, prev, next, chord_prev, chord_next, flat});
     }
   }
   return sites;
+}
+
+Eigen::Vector3d fold_site_tangent(const DogMesh& mesh, const FoldSite& site, const Dofs& x) {
+  const auto& points = mesh.stitching.points;
+  return circle_tangent(crease_point_position(points[site.chord_prev], x),
+                        crease_point_position(points[site.point], x), crease_point_position(points[site.chord_next], x));
+}
+
+namespace {
+
+// The flat position of cell coordinates uv of quad q (F(q, 0) at (0, 0), F(q, 1) at (1, 0), F(q, 3)
+// at (0, 1); cells are axis-aligned rectangles).
+Eigen::Vector2d flat_point(const DogMesh& mesh, int q, const Eigen::Vector2d& uv) {
+  const Eigen::Vector2d o = mesh.V.row(mesh.F(q, 0)).head<2>().transpose();
+  const Eigen::Vector2d du = mesh.V.row(mesh.F(q, 1)).head<2>().transpose() - o;
+  const Eigen::Vector2d dv = mesh.V.row(mesh.F(q, 3)).head<2>().transpose() - o;
+  return o + uv.x() * du + uv.y() * dv;
+}
+
+}  // namespace
+
+bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy) {
+  // The patch's piece of a cell on the edge, the one that ends at the crease point, lies on the
+  // patch's own side of the crease: v1 is the own end when it lies on the same side as the piece.
+  const auto& points = mesh.stitching.points;
+  const auto& cp = points[site.point];
+  const EdgePoint& e = cp.copies[copy];
+  const int patch = cp.patches[copy];
+  const Eigen::Vector2d p = cp.flat;
+  const Eigen::Vector2d t = points[site.chord_next].flat - points[site.chord_prev].flat;
+  const Eigen::Vector2d n(-t.y(), t.x());
+  const double v1_side = (mesh.V.row(e.v1).head<2>().transpose() - p).dot(n);
+  const double tolerance = 1e-9 * (1 + p.norm());
+  for (int q = mesh.quad_patch_begin[patch]; q < mesh.quad_patch_begin[patch + 1]; ++q) {
+    int corners = 0;
+    for (int k = 0; k < 4; ++k) corners += mesh.F(q, k) == e.v1 || mesh.F(q, k) == e.v2;
+    if (corners != 2) continue;
+    auto piece = std::lower_bound(mesh.quad_pieces.begin(), mesh.quad_pieces.end(), q,
+                                  [](const DogMesh::QuadPiece& a, int quad) { return a.quad < quad; });
+    for (; piece != mesh.quad_pieces.end() && piece->quad == q; ++piece) {
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      bool at_point = false;
+      for (const auto& uv : piece->uv) {
+        const Eigen::Vector2d f = flat_point(mesh, q, uv);
+        centroid += f;
+        at_point = at_point || (f - p).norm() <= tolerance;
+      }
+      if (!at_point) continue;
+      const double side = (centroid / static_cast<double>(piece->uv.size()) - p).dot(n);
+      if (std::abs(side) > tolerance) return (v1_side > 0) == (side > 0);
+    }
+  }
+  // No piece ends at the point (not expected): the side where most of the patch's vertices near
+  // the crease point lie (a patch reaches a cell or two beyond its creases).
+  constexpr double kNearby = 4;
+  double side = 0;
+  for (int v = mesh.patch_begin[patch]; v < mesh.patch_begin[patch + 1]; ++v) {
+    const Eigen::Vector2d d = mesh.V.row(v).head<2>().transpose() - p;
+    if (d.squaredNorm() <= kNearby * kNearby) side += d.dot(n) > 0 ? 1 : -1;
+  }
+  return (v1_side > 0) == (side > 0);
 }
 
 FoldCheck check_folded(const DogMesh& mesh, const std::vector<FoldSite>& sites, const Dofs& x) {

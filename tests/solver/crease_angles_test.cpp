@@ -6,6 +6,7 @@
 #include "geometry/dog_model.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/run_setup.h"
+#include "solver/terms/dihedral_angles.h"
 #include "tests/geometry/pattern_builders.h"
 #include "tests/test_support.h"
 
@@ -37,6 +38,37 @@ TEST(CreaseAngles, SignedFoldAngleOfAStraightCrease) {
     EXPECT_NEAR(angles.at(k, folded(model, M_PI / 6)), 60, 1e-9) << "valley";
     EXPECT_NEAR(angles.at(k, folded(model, -M_PI / 6)), -60, 1e-9) << "mountain";
     EXPECT_NEAR(angles.at(k, folded(model, 0.4 * M_PI)), 144, 1e-9);
+  }
+}
+
+// The angle term (dihedral_angles.h) measures the same signed angle, and its residual vanishes at
+// its target only: the mirror image of a fold and the supplement of an angle above 90 degrees are
+// no minimum.
+TEST(CreaseAngles, TheAngleTermTellsValleyFromMountainAndAnglesAbove90) {
+  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const auto sites = fold_sites(model.fine);
+  ASSERT_GT(sites.size(), 5u);
+  DihedralAngleTerm term;
+  for (const auto& site : sites) term.add(dihedral_site(model.fine, site), M_PI / 3);
+  auto residual_norm = [&](int b, const Dofs& x) {
+    Eigen::Vector3d p[8];
+    gather_block(term, b, x, p);
+    double r[2];
+    term.evaluate(b, p, r, nullptr);
+    return std::hypot(r[0], r[1]);
+  };
+  for (int b = 0; b < term.block_count(); ++b) {
+    Eigen::Vector3d p[8];
+    for (double half : {M_PI / 12, -M_PI / 6, 0.4 * M_PI, -0.45 * M_PI}) {
+      gather_block(term, b, folded(model, half), p);
+      EXPECT_NEAR(term.measure(b, p), 2 * half, 1e-9) << "block " << b << ", fold " << 2 * half;
+    }
+    EXPECT_LT(residual_norm(b, folded(model, M_PI / 6)), 1e-12);
+    EXPECT_GT(residual_norm(b, folded(model, -M_PI / 6)), 0.5);  // the mirror: sin^2(alpha) |e^{i60} - e^{-i60}|
+    term.set_target(b, 0.8 * M_PI);  // 144 degrees, not its supplement 36
+    EXPECT_LT(residual_norm(b, folded(model, 0.4 * M_PI)), 1e-12);
+    EXPECT_GT(residual_norm(b, folded(model, 0.1 * M_PI)), 0.5);
+    term.set_target(b, M_PI / 3);
   }
 }
 

@@ -63,16 +63,25 @@ TEST(Scenario, TheFoldScenarioAsksForTheAngleAtEveryFoldSite) {
     EXPECT_EQ(s.angles[k].point, sites[k].point);
     EXPECT_EQ(s.angles[k].start_degrees, 0);
     EXPECT_EQ(s.angles[k].end_degrees, 60);
-    EXPECT_GE(s.angles[k].alpha, 0);
-    EXPECT_LE(s.angles[k].alpha, M_PI / 2);
   }
   ASSERT_EQ(s.curve_signs.size(), mesh.stitching.curves.size());
   for (double sign : s.curve_signs) EXPECT_EQ(sign, 1.0);
   for (double sign : fold_scenario(mesh, -30).curve_signs) EXPECT_EQ(sign, -1.0);
-  // Flat targets at t = 0: the installed cosine targets are those of a flat crease (cos 0 = 1).
+  // A fold amount of 25% ends every site at a quarter of its angle.
+  const Scenario quarter = fold_scenario(mesh, 60, 40, 10, 25);
+  ASSERT_EQ(quarter.angles.size(), sites.size());
+  for (const auto& a : quarter.angles) EXPECT_DOUBLE_EQ(a.end_degrees, 15);
+  // Flat targets at t = 0, the end's at t = 1; every site's alpha in [0, 90] degrees.
   DogProblem problem(mesh, model().fine_topology);
   s.install(problem);
-  EXPECT_EQ(problem.angles.block_count(), static_cast<int>(sites.size()));
+  ASSERT_EQ(problem.angles.block_count(), static_cast<int>(sites.size()));
+  for (int b = 0; b < problem.angles.block_count(); ++b) {
+    EXPECT_EQ(problem.angles.target(b), 0);
+    EXPECT_GE(problem.angles.alpha(b), 0);
+    EXPECT_LE(problem.angles.alpha(b), M_PI / 2);
+  }
+  s.apply(problem, 1);
+  for (int b = 0; b < problem.angles.block_count(); ++b) EXPECT_DOUBLE_EQ(problem.angles.target(b), M_PI / 3);
   // A start state tilted towards the fold (the flat sheet is a symmetric point).
   EXPECT_GT((s.start(mesh) - problem.rest()).lpNorm<Eigen::Infinity>(), 0);
 }

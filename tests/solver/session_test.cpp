@@ -9,6 +9,8 @@
 #include "geometry/dog_model.h"
 #include "base/errors.h"
 #include "solver/problem/scenario.h"
+#include "solver/run/run_setup.h"
+#include "solver/terms/fold_angles.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
 #include "tests/solver/session_fixture.h"
@@ -218,6 +220,58 @@ TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
   EXPECT_THROW(s.set_creases({99}, Fold::kValley, std::nullopt), InputError);
   EXPECT_THROW(s.set_creases({0}, std::nullopt, 200.0), InputError);
   EXPECT_THROW(s.set_creases({}, Fold::kValley, std::nullopt), InputError);
+}
+
+// The fold amount (the studio's slider) folds the sheet to a share of every crease's angle and back
+// to flat; at 100% the session ends on the same side as `sdog run` with the same settings.
+TEST(Session, TheFoldAmountFoldsAndUnfoldsTheSheetOnTheRunsSide) {
+  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {21, 21});
+  RunConfig config;
+  config.scenario = ScenarioKind::kFold;
+  config.fold_angle = 60;
+  config.iterations = 1;
+  config.hold = 30;
+  const FoldAngles angles(m.fine);
+  auto converge = [&](Session& s) {
+    for (int k = 0; k < 60; ++k) {
+      const IterationReport r = s.step();
+      EXPECT_FALSE(r.step.failed) << r.step.failure;
+      if (r.step.converged.value_or(false) && r.step.target_fraction >= 1) return;
+    }
+    ADD_FAILURE() << "the session did not converge in 60 iterations";
+  };
+  // Each fold site's angle over its crease's full (100%) target.
+  auto shares = [&](const Dofs& x) {
+    std::vector<double> out;
+    for (size_t k = 0; k < angles.sites().size(); ++k) {
+      const double target = crease_fold_target(m.fine, angles.sites()[k].curve, config.fold_angle);
+      if (target != 0) out.push_back(angles.at(k, x) / target);
+    }
+    return out;
+  };
+  RunSetup run(m, ModeKind::kStandard, config);
+  ASSERT_EQ(run.run({}).termination, Termination::kCompleted);
+  const std::vector<double> by_run = shares(run.positions());
+
+  Session s(m, config, ModeKind::kStandard);
+  s.set_fold_percent(100);
+  converge(s);
+  const std::vector<double> full = shares(s.positions());
+  ASSERT_EQ(full.size(), by_run.size());
+  ASSERT_FALSE(full.empty());
+  for (size_t k = 0; k < full.size(); ++k) {
+    EXPECT_NEAR(full[k], 1.0, 0.1) << "site " << k;
+    EXPECT_GT(full[k] * by_run[k], 0) << "site " << k << ": the session and the run fold it different ways";
+  }
+  s.set_fold_percent(50);
+  EXPECT_EQ(s.config().fold_percent, 50);
+  converge(s);
+  for (double share : shares(s.positions())) EXPECT_NEAR(share, 0.5, 0.1);
+  s.set_fold_percent(0);
+  converge(s);
+  for (size_t k = 0; k < angles.sites().size(); ++k) EXPECT_LT(std::abs(angles.at(k, s.positions())), 3) << k;
+  EXPECT_THROW(s.set_fold_percent(101), InputError);
+  EXPECT_THROW(s.set_fold_percent(-1), InputError);
 }
 
 TEST(Session, ModeSwitchKeepsThePositions) {

@@ -50,9 +50,10 @@ TEST(Settling, KeepsTheLowerOfTheDragsFoldAndTheStraightFold) {
   // The two paths reach different folds: the case tells settling from no settling.
   ASSERT_GT(std::abs(drag.objective - straight.objective), 0.005 * straight.objective)
       << "the drag and the straight fold end at the same objective " << drag.objective;
-  // The comparison is made at the final constraint tolerance, as the run ends: within rounding of
-  // the lower state's objective, much closer than the two states are.
-  EXPECT_NEAR(settled.objective, std::min(drag.objective, straight.objective), 1e-5 * straight.objective);
+  // The comparison is made at the final constraint tolerance, as the run ends: within 1e-4 of the
+  // lower state's objective (the straight fold finished inside the drag's run), far closer than
+  // the two states are.
+  EXPECT_NEAR(settled.objective, std::min(drag.objective, straight.objective), 1e-4 * straight.objective);
   EXPECT_GT(settled.factorizations, drag.factorizations) << "the straight fold took no factorisation";
   EXPECT_LE(settled.positions, 2 * drag.positions);
   EXPECT_EQ(straight_settling.objective, straight.objective);

@@ -8,6 +8,9 @@
 #include "geometry/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/modes/standard_mode.h"
+#include "solver/sqp/sqp_solver.h"
+#include "solver/problem/crease_angles.h"
 #include "solver/run/run.h"
 #include "solver/run/run_config.h"
 #include "tests/solver/run_recorder.h"
@@ -139,6 +142,40 @@ TEST(StandardMode, NonFiniteTargetsFailAndRollBack) {
   ASSERT_EQ(recorder.reports.size(), 1u);
   EXPECT_TRUE(recorder.reports[0].step.failed);
   EXPECT_TRUE(x == x0) << "the failed iteration was not rolled back";
+}
+
+// A factorisation that fails in a held iteration (here forced: three whole refactorisations, every
+// rho and shift, fail in a row) is taken back and retried with a shorter step: the run goes on,
+// ends converged and folded the drawn way, and counts the recovered passes.
+TEST(StandardMode, AFailedFactorisationIsRecovered) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  RunConfig config;
+  config.scenario = ScenarioKind::kFold;
+  config.fold_angle = 60;
+  config.iterations = 5;
+  config.hold = 10;
+  RunSetup setup(model, ModeKind::kStandard, config);
+  auto& mode = dynamic_cast<StandardMode&>(setup.mode());
+  struct Injector : RunObserver {
+    StandardMode* mode;
+    void on_iteration(const IterationReport& r, const Dofs&) override {
+      if (r.iteration == 5) mode->sqp().inject_factorization_failures(3 * 24);
+    }
+  } injector;
+  injector.mode = &mode;
+  Recorder recorder;
+  const RunSummary s = setup.run({&injector, &recorder});
+  ASSERT_FALSE(s.failed()) << s.failure;
+  ASSERT_EQ(s.iterations, 15);
+  int recovered = 0;
+  for (const IterationReport& r : recorder.reports) recovered += r.step.work.recovered_failures;
+  EXPECT_GE(recovered, 1) << "no pass failed: the injection did not reach the solver";
+  const IterationReport& last = recorder.reports.back();
+  EXPECT_TRUE(last.step.converged.value_or(false));
+  EXPECT_TRUE(last.step.folded);
+  EXPECT_LT(last.diagnostics.dog_max, 1e-6);
+  EXPECT_EQ(last.diagnostics.angles_met.against(), 0);
+  EXPECT_GT(last.diagnostics.angles_met.bent_sites, 0);
 }
 
 TEST(StandardMode, RepeatedRunsAreIdentical) {

@@ -448,6 +448,22 @@ void MainWindow::fold_creases() {
   status_->setText("folding from the flat sheet with the crease assignments (Solver > Play: Space)");
 }
 
+void MainWindow::set_fold_percent(int percent) {
+  if (!worker_) {
+    report_error("Open a crease pattern first (File > Open pattern).");
+    show_solver_state();
+    return;
+  }
+  config_.fold_percent = percent;
+  if (config_.scenario != ScenarioKind::kFold) {
+    config_.scenario = ScenarioKind::kFold;
+    chart_->clear();
+  }
+  show_solver_state();
+  post([percent](SolverWorker& w) { w.set_fold_percent(percent); });
+  status_->setText(QString("folding to %1% of the crease angles").arg(percent));
+}
+
 void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {
   if (!snapshot_) return;
   select_vertices(points_in_rectangle(renderer_, shown_positions(), x0, y0, x1, y1), add);

@@ -180,6 +180,8 @@ class MainWindow : public QMainWindow {
   void set_crease_angle(double degrees);
   /// Starts the fold scenario from the flat sheet with the current assignments.
   void fold_creases();
+  /// The fold amount slider: the session folds to `percent` of every crease's angle and plays.
+  void set_fold_percent(int percent);
 
   // State, for tests and the command line
   const DogModel* model() const { return model_.get(); }

@@ -351,6 +351,7 @@ void MainWindow::build_solver_panel() {
   connect(solver_panel_, &SolverPanel::scenario_chosen, this, [this](const QString& scenario) {
     if (!choose_scenario(scenario)) show_solver_state();
   });
+  connect(solver_panel_, &SolverPanel::fold_percent_chosen, this, &MainWindow::set_fold_percent);
   connect(solver_panel_, &SolverPanel::config_file_wanted, this, &MainWindow::ask_for_run_config);
   // The panel does not show the crease settings: those of the session stay.
   connect(solver_panel_, &SolverPanel::apply_wanted, this, [this](RunConfig config) {

@@ -1,12 +1,16 @@
 #include "ui/studio/solver_panel.h"
 
 #include <QAction>
+#include <cmath>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSlider>
 #include <QStandardItemModel>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -14,6 +18,14 @@
 #include "ui/studio/solver_settings.h"
 
 namespace sdog::studio {
+namespace {
+
+// While the fold slider is dragged, its value is sent once it has rested this long.
+constexpr int kFoldSliderPause = 120;
+
+QString percent_text(int percent) { return QString::number(percent) + "%"; }
+
+}  // namespace
 
 SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
@@ -43,6 +55,20 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
                         "sdog run --config reads it)");
   scenario_row->addWidget(from_file);
   choices->addRow("scenario", scenario_row);
+  auto* fold_row = new QHBoxLayout;
+  fold_ = new QSlider(Qt::Horizontal);
+  fold_->setRange(0, 100);
+  fold_->setValue(100);
+  fold_->setToolTip("Fold amount: every crease folds to this share of its angle (0%: flat, 100%: the drawn "
+                    "angles); moving it starts the fold scenario and plays");
+  fold_label_ = new QLabel(percent_text(100));
+  fold_label_->setMinimumWidth(fold_label_->fontMetrics().horizontalAdvance("100%") + 4);
+  fold_row->addWidget(fold_, 1);
+  fold_row->addWidget(fold_label_);
+  choices->addRow("fold amount", fold_row);
+  fold_pause_ = new QTimer(this);
+  fold_pause_->setSingleShot(true);
+  fold_pause_->setInterval(kFoldSliderPause);
   layout->addLayout(choices);
 
   form_ = new SolverSettingsForm(RunConfig{});
@@ -69,6 +95,15 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
           [this](int) { Q_EMIT mode_chosen(mode_->currentText()); });
   connect(scenario_, qOverload<int>(&QComboBox::activated), this,
           [this](int) { Q_EMIT scenario_chosen(scenario_->currentText()); });
+  connect(fold_, &QSlider::valueChanged, this, [this](int percent) {
+    fold_label_->setText(percent_text(percent));
+    fold_pause_->start();
+  });
+  connect(fold_pause_, &QTimer::timeout, this, [this] { Q_EMIT fold_percent_chosen(fold_->value()); });
+  connect(fold_, &QSlider::sliderReleased, this, [this] {
+    fold_pause_->stop();
+    Q_EMIT fold_percent_chosen(fold_->value());
+  });
   connect(from_file, &QPushButton::clicked, this, &SolverPanel::config_file_wanted);
   connect(form_, &SolverSettingsForm::edited, this, [this] { set_edited(true); });
   connect(apply_, &QPushButton::clicked, this, [this] { Q_EMIT apply_wanted(form_->config()); });
@@ -82,6 +117,12 @@ void SolverPanel::show_state(const std::string& mode, const RunConfig& config, b
   const QSignalBlocker block_mode(mode_), block_scenario(scenario_);
   mode_->setCurrentText(QString::fromStdString(mode));
   scenario_->setCurrentText(scenario_name(config.scenario));
+  {
+    const QSignalBlocker block_fold(fold_);
+    const int percent = static_cast<int>(std::lround(config.fold_percent));
+    fold_->setValue(percent);
+    fold_label_->setText(percent_text(percent));
+  }
   // The coarse modes need the coarse mesh (odd resolutions): their entries are greyed out.
   if (auto* items = qobject_cast<QStandardItemModel*>(mode_->model()))
     for (int i = 0; i < mode_->count(); ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 // The Solver panel (a dock of the main window): play / pause, step, step 10 and reset buttons (the
-// Solver menu's actions), the mode and the scenario, a run configuration from a file, and the
+// Solver menu's actions), the mode and the scenario, the fold amount slider (0 to 100% of every
+// crease's angle, as Origami Simulator's fold percent), a run configuration from a file, and the
 // settings form with Apply and Revert. The panel only shows and asks: the window decides (and
 // reports errors) through the signals.
 #include <QWidget>
@@ -11,7 +12,10 @@
 
 class QAction;
 class QComboBox;
+class QLabel;
 class QPushButton;
+class QSlider;
+class QTimer;
 
 namespace sdog::studio {
 
@@ -30,10 +34,13 @@ class SolverPanel : public QWidget {
   QComboBox* scenario_box() const { return scenario_; }
   QPushButton* apply_button() const { return apply_; }
   QPushButton* revert_button() const { return revert_; }
+  QSlider* fold_slider() const { return fold_; }
 
  Q_SIGNALS:
   void mode_chosen(const QString& mode);
   void scenario_chosen(const QString& scenario);
+  /// The fold amount slider moved (sent once it rests for kFoldSliderPause ms, or at release).
+  void fold_percent_chosen(int percent);
   /// "From file...": the window asks for a run configuration file.
   void config_file_wanted();
   void apply_wanted(const sdog::RunConfig& config);
@@ -43,6 +50,9 @@ class SolverPanel : public QWidget {
   void set_edited(bool edited);
   QComboBox* mode_;
   QComboBox* scenario_;
+  QSlider* fold_;
+  QLabel* fold_label_;
+  QTimer* fold_pause_;  // coalesces a drag of the slider into few fold amounts
   SolverSettingsForm* form_;
   QPushButton *apply_, *revert_;
   RunConfig in_use_;  // what show_state() showed last (Revert)

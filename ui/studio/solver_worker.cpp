@@ -222,6 +222,12 @@ void SolverWorker::fold() {
   send_snapshot();
 }
 
+void SolverWorker::set_fold_percent(double percent) {
+  session().set_fold_percent(percent);
+  play();
+  send_snapshot();
+}
+
 void SolverWorker::undo() {
   session().undo();
   play_on();

@@ -66,6 +66,8 @@ class SolverWorker : public QObject {
   /// Session::set_creases and Session::fold.
   void set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle);
   void fold();
+  /// Session::set_fold_percent; starts playing, so the sheet folds or unfolds at once.
+  void set_fold_percent(double percent);
   void undo();
   void redo();
   void save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
