@@ -30,10 +30,21 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
   ctx.t = report.t;
   if (iterations_left != 0) ctx.next_t = scenario.time_of(iteration + 1);
   ctx.iterations_left = iterations_left;
+  const Dofs x_before = x;
   const auto t0 = Clock::now();
   report.step = mode.iterate(ctx, x);
   report.iteration_ms = ms_since(t0);
   report.diagnostics = diagnose(problem, x);
+  const Diagnostics& d = report.diagnostics;
+  if (!report.step.failed && (!std::isfinite(d.objective) || !(d.dog_max <= kDivergedDogResidual))) {
+    report.step.failed = true;
+    report.step.failure = "the state diverged (DOG residual " + format_number(d.dog_max) + ", objective " +
+                          format_number(d.objective) + ")";
+  }
+  if (report.step.failed) {
+    x = x_before;
+    return report;
+  }
   if (report.t < 1 || report.step.target_fraction < 1) {
     const Targets reported = Targets::of(problem);  // those the mode reports x for
     scenario.apply(problem, 1.0);
@@ -59,16 +70,8 @@ RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenari
     }
     if (schedule)
       if (Mode* next = schedule(k, x)) current = next;
-    const Dofs x_before = x;
     IterationReport report = run_iteration(*current, problem, scenario, x, k, total - k);
     report.elapsed_ms = ms_since(start);
-    const Diagnostics& d = report.diagnostics;
-    if (!report.step.failed && (!std::isfinite(d.objective) || !(d.dog_max <= kDivergedDogResidual))) {
-      report.step.failed = true;
-      report.step.failure = "the state diverged (DOG residual " + format_number(d.dog_max) + ", objective " +
-                            format_number(d.objective) + ")";
-    }
-    if (report.step.failed) x = x_before;
     for (RunObserver* o : observers) o->on_iteration(report, x);
     summary.last = report;
     if (report.step.failed) {

@@ -46,10 +46,15 @@ struct RunSummary {
   bool failed() const { return termination == Termination::kFailed; }
 };
 
+/// A state whose DOG residual exceeds this (mesh units: a tenth of a grid edge), or whose objective
+/// is not finite, has diverged: the iteration that reached it counts as failed.
+constexpr double kDivergedDogResidual = 0.1;
+
 /// Iteration `iteration` (1-based) of a run: one iteration of the mode on x with the targets of its
 /// scenario time, then the diagnostics on `problem`. `iterations_left`: iterations of the run after
 /// this one (0: the last, which ends on the final constraint tolerance), or
-/// IterationContext::kOpenEnded.
+/// IterationContext::kOpenEnded. An iteration that fails or diverges (kDivergedDogResidual) is
+/// reported failed with its diagnostics and leaves x as it found it.
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
                               int iterations_left);
 
@@ -57,10 +62,6 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
 /// switch), or nullptr to keep the current one. The returned mode must stay alive until the run
 /// ends or the next switch.
 using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
-
-/// A state whose DOG residual exceeds this (mesh units: a tenth of a grid edge), or whose objective
-/// is not finite, has diverged: the iteration that reached it counts as failed.
-constexpr double kDivergedDogResidual = 0.1;
 
 /// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
 /// problem the diagnostics are measured on (its targets follow the scenario too). Stops at the

@@ -80,16 +80,17 @@ Eigen::Vector2d flat_point(const DogMesh& mesh, int q, const Eigen::Vector2d& uv
 }  // namespace
 
 bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy) {
-  // The patch's piece of a cell on the edge, the one that ends at the crease point, lies on the
-  // patch's own side of the crease: v1 is the own end when it lies on the same side as the piece.
+  // The patch's piece of a cell on the edge that ends at the crease point holds the stretch of the
+  // edge from the point to the own end: v1 is the own end when that stretch runs towards v1. (The
+  // side of the piece's centroid cannot tell: a sliver between a curved crease and the edge has
+  // its centroid almost on the crease's chord.)
   const auto& points = mesh.stitching.points;
   const auto& cp = points[site.point];
   const EdgePoint& e = cp.copies[copy];
   const int patch = cp.patches[copy];
   const Eigen::Vector2d p = cp.flat;
-  const Eigen::Vector2d t = points[site.chord_next].flat - points[site.chord_prev].flat;
-  const Eigen::Vector2d n(-t.y(), t.x());
-  const double v1_side = (mesh.V.row(e.v1).head<2>().transpose() - p).dot(n);
+  const Eigen::Vector2d v1 = mesh.V.row(e.v1).head<2>().transpose();
+  const Eigen::Vector2d along = (v1 - mesh.V.row(e.v2).head<2>().transpose()).normalized();
   const double tolerance = 1e-9 * (1 + p.norm());
   for (int q = mesh.quad_patch_begin[patch]; q < mesh.quad_patch_begin[patch + 1]; ++q) {
     int corners = 0;
@@ -98,20 +99,25 @@ bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy) {
     auto piece = std::lower_bound(mesh.quad_pieces.begin(), mesh.quad_pieces.end(), q,
                                   [](const DogMesh::QuadPiece& a, int quad) { return a.quad < quad; });
     for (; piece != mesh.quad_pieces.end() && piece->quad == q; ++piece) {
-      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
       bool at_point = false;
+      double towards_v1 = 0;
       for (const auto& uv : piece->uv) {
-        const Eigen::Vector2d f = flat_point(mesh, q, uv);
-        centroid += f;
-        at_point = at_point || (f - p).norm() <= tolerance;
+        const Eigen::Vector2d d = flat_point(mesh, q, uv) - p;
+        if (d.norm() <= tolerance) {
+          at_point = true;
+        } else if (std::abs(along.x() * d.y() - along.y() * d.x()) <= tolerance) {
+          towards_v1 = d.dot(along);  // a corner on the edge's line
+        }
       }
-      if (!at_point) continue;
-      const double side = (centroid / static_cast<double>(piece->uv.size()) - p).dot(n);
-      if (std::abs(side) > tolerance) return (v1_side > 0) == (side > 0);
+      if (at_point && towards_v1 != 0) return towards_v1 > 0;
     }
   }
-  // No piece ends at the point (not expected): the side where most of the patch's vertices near
-  // the crease point lie (a patch reaches a cell or two beyond its creases).
+  // No piece ends at the point on the edge (not expected): the side of the crease's chord where
+  // most of the patch's vertices near the crease point lie (a patch reaches a cell or two beyond
+  // its creases).
+  const Eigen::Vector2d t = points[site.chord_next].flat - points[site.chord_prev].flat;
+  const Eigen::Vector2d n(-t.y(), t.x());
+  const double v1_side = (v1 - p).dot(n);
   constexpr double kNearby = 4;
   double side = 0;
   for (int v = mesh.patch_begin[patch]; v < mesh.patch_begin[patch + 1]; ++v) {

@@ -37,8 +37,8 @@ std::vector<FoldSite> fold_sites(const DogMesh& mesh);
 Eigen::Vector3d fold_site_tangent(const DogMesh& mesh, const FoldSite& site, const Dofs& x);
 
 /// Whether end v1 of copy `copy`'s crossing edge lies on its patch's own side of the crease (a
-/// patch reaches a cell or two beyond its creases; its own side is where most of its vertices near
-/// the crease point lie, in the flat rest state).
+/// patch reaches a cell or two beyond its creases; its own side is where its trimmed piece of a
+/// cell on the edge runs from the crease point, in the flat rest state).
 bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy);
 
 struct FoldCheck {

@@ -29,6 +29,16 @@ Dofs folded(const DogModel& model, double theta) {
   return x;
 }
 
+// The fold scenario to `angle` degrees over `iterations`, then `hold` held iterations.
+RunConfig fold_config(double angle, int iterations, int hold) {
+  RunConfig config;
+  config.scenario = ScenarioKind::kFold;
+  config.fold_angle = angle;
+  config.iterations = iterations;
+  config.hold = hold;
+  return config;
+}
+
 TEST(CreaseAngles, SignedFoldAngleOfAStraightCrease) {
   const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
   const FoldAngles angles(model.fine);
@@ -72,15 +82,45 @@ TEST(CreaseAngles, TheAngleTermTellsValleyFromMountainAndAnglesAbove90) {
   }
 }
 
+// Every fold site of every dataset reads 0 on the flat sheet. A crease that ends at a grid vertex
+// of the boundary leaves a sliver of a cell between the curve and the edge at its last fold
+// sites; the sliver's side of the crease comes from the stretch of edge it holds.
+TEST(CreaseAngles, EveryFoldSiteReadsFlatAtRest) {
+  int sites = 0;
+  for (const auto& path : test::all_datasets()) {
+    for (const Resolution res : {Resolution{21, 21}, Resolution{41, 41}, Resolution{31, 23}}) {
+      const DogModel model = build_dog_model(read_crease_pattern(path), res);
+      const FoldAngles angles(model.fine);
+      const Dofs rest = to_dofs(model.fine.V);
+      for (size_t k = 0; k < angles.sites().size(); ++k, ++sites)
+        EXPECT_NEAR(angles.at(k, rest), 0, 1e-4) << path << " " << res.str() << " site " << k;
+    }
+  }
+  EXPECT_GT(sites, 5000);
+}
+
+// Both directions of the corner arcs (three unassigned arcs, one valley) fold every site the
+// asked way, the crease ends in slivers at the sheet's corners included.
+TEST(CreaseAngles, CornerArcsFoldBothWaysToTheirEnds) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  for (const double angle : {60.0, -60.0}) {
+    RunSetup setup(model, ModeKind::kStandard, fold_config(angle, 60, 20));
+    ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);
+    const FoldAngles angles(model.fine);
+    ASSERT_EQ(angles.sites().size(), 48u);
+    for (size_t k = 0; k < angles.sites().size(); ++k) {
+      // An assigned crease folds its own way; the others the way the angle's sign says.
+      const Fold fold = model.fine.stitching.curves[angles.sites()[k].curve].fold;
+      const double target = fold == Fold::kUnassigned ? angle : std::abs(angle) * fold_sign(fold);
+      EXPECT_NEAR(angles.at(k, setup.positions()), target, 10) << "site " << k << " at " << angle;
+    }
+  }
+}
+
 TEST(CreaseAngles, CurvedPleatsFoldAsDrawn) {
   // Alternating red mountains and blue valleys: every fold site reaches its assignment's sign.
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {41, 41});
-  RunConfig config;
-  config.scenario = ScenarioKind::kFold;
-  config.fold_angle = 60;
-  config.iterations = 40;
-  config.hold = 20;
-  RunSetup setup(model, ModeKind::kStandard, config);
+  RunSetup setup(model, ModeKind::kStandard, fold_config(60, 40, 20));
   ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);
   const FoldAngles angles(model.fine);
   ASSERT_GT(angles.sites().size(), 100u);

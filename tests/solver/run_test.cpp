@@ -21,7 +21,7 @@ const DogModel& model() {
 }
 
 // A mode that records what it is told, sets the targets of its time (as every mode does) and moves
-// one coordinate a little; fails when asked to.
+// one coordinate a little; fails or throws a vertex far off its neighbours (diverges) when asked to.
 class ProbeMode : public Mode {
  public:
   ProbeMode(DogProblem& problem, const Scenario& scenario) : problem_(problem), scenario_(scenario) {}
@@ -36,12 +36,13 @@ class ProbeMode : public Mode {
       return r;
     }
     x[2] += 0.01;
+    if (static_cast<int>(contexts.size()) == diverge_at) x[x.size() / 2 / 3 * 3] += 0.5;  // a middle vertex
     r.work.steps = 1;
     if (cancel_after > 0 && static_cast<int>(contexts.size()) == cancel_after) cancel->store(true);
     return r;
   }
   std::vector<IterationContext> contexts;
-  int fail_at = -1, cancel_after = -1;
+  int fail_at = -1, diverge_at = -1, cancel_after = -1;
   std::atomic<bool>* cancel = nullptr;
 
  private:
@@ -108,6 +109,28 @@ TEST(Run, AFailedIterationEndsTheRunAndNamesIt) {
   EXPECT_EQ(s.iterations, 2);
   EXPECT_EQ(s.failure, "iteration 3: asked to fail");
   EXPECT_STREQ(termination_name(s.termination), "failed");
+}
+
+// A state beyond kDivergedDogResidual is a failed iteration, which leaves x as it found it: for a
+// run, and for one iteration at a time (the studio's session).
+TEST(Run, ADivergedIterationFailsAndLeavesThePositions) {
+  RunCase run;
+  ProbeMode mode(run.problem, run.scenario);
+  mode.diverge_at = 3;
+  const RunSummary s = run_scenario(mode, run.problem, run.scenario, run.x, {});
+  EXPECT_EQ(s.termination, Termination::kFailed);
+  EXPECT_EQ(s.iterations, 2);
+  EXPECT_EQ(s.failure.rfind("iteration 3: the state diverged (DOG residual ", 0), 0u) << s.failure;
+  EXPECT_GT(s.last.diagnostics.dog_max, kDivergedDogResidual);
+  EXPECT_NEAR(run.x[2], 0.02, 1e-15);  // two good iterations, not the third
+
+  RunCase one;
+  ProbeMode single(one.problem, one.scenario);
+  single.diverge_at = 1;
+  const Dofs x0 = one.x;
+  const IterationReport r = run_iteration(single, one.problem, one.scenario, one.x, 1, IterationContext::kOpenEnded);
+  EXPECT_TRUE(r.step.failed);
+  EXPECT_TRUE(one.x == x0);
 }
 
 TEST(Run, ARaisedCancelFlagEndsTheRunBeforeTheNextIteration) {
