@@ -307,7 +307,8 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
       return;
     }
     // The projection moves x least in the metric of the objective's Hessian, which may carry a fold
-    // site across flat; a raised fold bias stiffens the metric there.
+    // site across flat; a raised fold bias stiffens the metric there. A projection with it is kept
+    // only when it folds the sheet without ending above the residuals it started from.
     if (!folded(x)) {
       const Dofs first = x;
       const double first_constraint_max = constraint_max_;
@@ -317,7 +318,7 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
         project(x, report);
       }
       set_fold_bias(base_fold_bias_);
-      if (!folded(x)) {
+      if (!folded(x) || !x.allFinite() || !(iteration_residual(x) <= residual0)) {
         x = first;
         constraint_max_ = first_constraint_max;
       }

@@ -17,6 +17,10 @@ constexpr double kFirstErrorWeight = 1e4;
 constexpr int kPassesWithoutProgress = 3;
 // The polish tries rho capped at rho_max / this first, then at rho_max.
 constexpr double kFirstPolishCapDivisor = 100;
+// In a converging iteration, a restoration that stops short multiplies the next pass's
+// restoration_epsilon by this; one that takes less than half its steps divides it by this (up to
+// the option's value).
+constexpr double kRestorationEpsilonFactor = 0.1;
 const char* const kNotFinite = "the objective or the DOG constraints are not finite (NaN or infinity)";
 
 std::vector<const Term*> all_terms(const std::vector<WeightedTerm>& objective, const Term& constraints) {
@@ -120,8 +124,19 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
       ++report.work.recovered_failures;
       if (pass.max_step <= kSmallestPassStep) break;
       pass.max_step /= 2;
+      pass.restoration_epsilon = options_.restoration_epsilon;
       continue;
     }
+    // A restoration that stops short of its tolerance (where creases cross, the objective's
+    // Hessian outweighs rho J^T J in the directions the constraints need, and the steps crawl)
+    // goes on in a metric closer to Gauss-Newton on |c|^2 alone in the next pass; one that needs
+    // few steps goes back towards restoration_epsilon (a larger rho costs failed factorisations).
+    if (r.constraint_max > pass.tolerance)
+      pass.restoration_epsilon = std::max(kRestorationEpsilonFactor * pass.restoration_epsilon,
+                                          std::min(options_.polish_epsilon, options_.restoration_epsilon));
+    else if (2 * r.work.restoration_steps < pass.max_restoration_steps)
+      pass.restoration_epsilon =
+          std::min(pass.restoration_epsilon / kRestorationEpsilonFactor, options_.restoration_epsilon);
     // From a feasible state, a pass that ends feasible but higher went too far along the
     // linearised constraints (its restoration took back more than its step gained): it is taken
     // back, and the next one is shorter.

@@ -16,12 +16,9 @@
 namespace sdog {
 namespace {
 
-// crossing_wave_pleats is left out: its four crossings of S-curves fold the drawn way (95% to 99% of
-// the bent sites at 21x21) but do not converge within the final tolerance at every angle and pace
-// (DOG residual 5e-3 at 90 degrees set at once): docs/results.md.
 const char* const kCorpus[] = {
-    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg",   "crossing_arc_pleats.svg", "parabola_pleats.svg",
-    "s_curve_pleats.svg",            "twelve_wave_pleats.fold", "v_pleat.fold",
+    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg", "crossing_arc_pleats.svg", "crossing_wave_pleats.svg",
+    "parabola_pleats.svg",           "s_curve_pleats.svg",    "twelve_wave_pleats.fold", "v_pleat.fold",
 };
 
 // Held iterations at most after the targets stop moving.
@@ -38,7 +35,12 @@ class FoldCorpus : public testing::TestWithParam<const char*> {};
 
 TEST_P(FoldCorpus, FoldsAsDrawnAtTwoResolutionsAnglesAndPaces) {
   const std::string name = GetParam();
-  for (const Resolution res : {Resolution{31, 31}, Resolution{41, 41}}) {
+  // crossing_wave_pleats (four crossings of S-curves) folded at 31x31 to 90 degrees ends with a DOG
+  // residual and stitching gaps of 2e-5 to 6e-5, which the run reports ("NOT within the final
+  // tolerance"); it is folded at 41x41 and 51x51.
+  std::vector<Resolution> resolutions = {{31, 31}, {41, 41}};
+  if (name == "crossing_wave_pleats.svg") resolutions = {{41, 41}, {51, 51}};
+  for (const Resolution& res : resolutions) {
     const DogModel model = build_dog_model(read_crease_pattern(test::dataset(name)), res);
     for (const double angle : {30.0, 90.0})
       for (const int k : {1, 10}) {
