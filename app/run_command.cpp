@@ -199,10 +199,8 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
   std::string modes = a.mode;
   for (const ModeSwitch& s : config.switches)
     modes += std::string(", ") + mode_name(s.mode) + " from iteration " + std::to_string(s.iteration);
-  // The restoration allows a little slack over the tolerance only through rounding.
   const double final_tolerance = config.standard.sqp.final_constraint_tolerance;
-  const bool within =
-      last.diagnostics.dog_max <= 2 * final_tolerance && last.diagnostics.stitch_gap_max <= 2 * final_tolerance;
+  const bool within = within_final_tolerance(last.diagnostics, final_tolerance);
   std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << setup.scenario().name
             << ") on " << a.pattern.pattern << " " << model.fine_res.str() << " (" << model.fine.vertex_count()
             << " vertices) in " << format_number(seconds) << " s, median " << format_number(median(totals.iteration_ms))

@@ -8,6 +8,10 @@
 
 namespace sdog {
 
+bool within_final_tolerance(const Diagnostics& d, double final_constraint_tolerance) {
+  return d.dog_max <= 2 * final_constraint_tolerance && d.stitch_gap_max <= 2 * final_constraint_tolerance;
+}
+
 const char* termination_name(Termination t) {
   switch (t) {
     case Termination::kCompleted:

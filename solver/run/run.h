@@ -50,6 +50,10 @@ struct RunSummary {
 /// is not finite, has diverged: the iteration that reached it counts as failed.
 constexpr double kDivergedDogResidual = 0.1;
 
+/// Whether a state's DOG residual and stitching gap meet the final constraint tolerance (the last
+/// iteration's), with the slack of twice the tolerance that rounding in the restoration leaves.
+bool within_final_tolerance(const Diagnostics& d, double final_constraint_tolerance);
+
 /// Iteration `iteration` (1-based) of a run: one iteration of the mode on x with the targets of its
 /// scenario time, then the diagnostics on `problem`. `iterations_left`: iterations of the run after
 /// this one (0: the last, which ends on the final constraint tolerance), or

@@ -140,6 +140,24 @@ TEST(Continuation, HeldIterationsThatCycleCountAsConverged) {
   EXPECT_LE(r.dog_max, 1e-6);
 }
 
+// A paced run counts as converged only where its last state meets the final tolerance: a final
+// tolerance no restoration reaches leaves a shaped run unconverged.
+TEST(Continuation, APacedRunIsConvergedOnlyWithinTheFinalTolerance) {
+  RunConfig config;
+  const PaceResult reached = run_pace(model(), config, 1, 40);
+  ASSERT_TRUE(reached.failure.empty()) << reached.failure;
+  ASSERT_TRUE(reached.time_to_shape_s.has_value());
+  EXPECT_TRUE(reached.converged);
+  EXPECT_LE(reached.dog_max, 2 * config.standard.sqp.final_constraint_tolerance);
+
+  config.standard.sqp.final_constraint_tolerance = 1e-15;
+  const PaceResult missed = run_pace(model(), config, 1, 40);
+  ASSERT_TRUE(missed.failure.empty()) << missed.failure;
+  ASSERT_TRUE(missed.time_to_shape_s.has_value());
+  EXPECT_GT(missed.dog_max, 2e-15);
+  EXPECT_FALSE(missed.converged);
+}
+
 // Once converged, a held state costs no factorisation, and says it is converged.
 TEST(Continuation, HeldConvergedIterationsCostNothing) {
   RunConfig config = test::interactive();
