@@ -18,6 +18,7 @@
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "base/statistics.h"
+#include "geometry/fold_tips.h"
 #include "solver/config/run_config_json.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/crease_settings.h"
@@ -81,7 +82,9 @@ nlohmann::json diagnostics_json(const IterationReport& r) {
                         {"bent_sites", a.bent_sites},
                         {"bent_as_targeted", a.bent_as_targeted},
                         {"direction_agreement", a.direction_agreement()},
-                        {"median_angle_error", a.median_error}};
+                        {"median_angle_error", a.median_error},
+                        {"fold_tip_sites", a.tip_sites},
+                        {"fold_tip_sites_against", a.tip_against}};
   return j;
 }
 
@@ -221,11 +224,21 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
               << format_number(kBentDegrees) << " degrees (of " << met.targeted_sites
               << " with a target) bend the way their target says ("
               << format_number(std::round(1000 * met.direction_agreement()) / 10) << "%), median angle error "
-              << format_number(met.median_error) << " degrees\n";
+              << format_number(met.median_error) << " degrees"
+              << (met.tip_sites == 0 ? std::string()
+                                     : "; " + std::to_string(met.tip_sites) + " more sites within " +
+                                           format_number(kFoldTipRadius) + " grid edges of a fold tip, " +
+                                           std::to_string(met.tip_against) + " of them bent against their target")
+              << "\n";
   for (const CreaseFold& c : crease_folds(setup.problem(), setup.positions()))
     if (c.against > 0)
       std::cerr << "warning: crease " << c.curve << " (" << model.clean.creases[c.curve].origin << ") folds against its target ("
-                << format_number(c.target) << " degrees) at " << c.against << " of its " << c.bent << " bent fold sites\n";
+                << format_number(c.target) << " degrees) at " << c.against << " of its " << c.bent << " bent fold sites"
+                << (c.against_near_tip == 0 ? std::string()
+                    : c.against_near_tip == c.against
+                        ? std::string(", all next to a fold tip (see above)")
+                        : ", " + std::to_string(c.against_near_tip) + " of them next to a fold tip (see above)")
+                << "\n";
   if (totals.dog_misses > 0)
     std::cerr << "warning: the DOG constraints stayed above the solver's tolerance "
               << format_number(config.standard.sqp.constraint_tolerance) << " after " << totals.dog_misses << " of "

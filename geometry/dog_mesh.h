@@ -62,6 +62,8 @@ struct DogMesh {
   Eigen::Vector2d sheet_origin = Eigen::Vector2d::Zero();
   double scale = 1;
   CreaseStitching stitching;
+  /// Where folds fade: the pattern's fold tips (geometry/fold_tips.h), mesh units.
+  std::vector<Eigen::Vector2d> fold_tips;
   /// The quads whose cell a crease or the boundary cuts, with the part of the cell that belongs to
   /// their patch: a convex polygon, counter-clockwise, in the quad's cell coordinates (u, v) in
   /// [0, 1]^2 from F(q, 0) towards F(q, 1) and F(q, 3) (PatchLayout::CellPiece). A quad may have

@@ -1,8 +1,11 @@
 #include "geometry/dog_model.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/errors.h"
+#include "base/text_format.h"
+#include "geometry/fold_tips.h"
 
 namespace sdog {
 namespace {
@@ -32,6 +35,8 @@ void copy_folds(const CleanPattern& clean, DogMesh& mesh) {
     curve.angle = clean.creases[k].angle;
     curve.id = clean.creases[k].id;
   }
+  mesh.fold_tips.clear();
+  for (const FoldTip& tip : fold_tips(clean)) mesh.fold_tips.push_back(mesh.to_mesh(tip.point));
 }
 
 }  // namespace
@@ -114,6 +119,16 @@ std::vector<std::string> model_warnings(const DogModel& model) {
                          model.fine_res.str() +
                          " and crosses no grid edge: it has no fold site, so the fold scenario cannot fold it "
                          "and creases.csv has no angle for it (another resolution moves the grid lines off it)");
+  }
+  for (const FoldTip& tip : fold_tips(model.clean)) {
+    const auto& c = model.clean.creases;
+    warnings.push_back("creases " + std::to_string(tip.creases[0]) + " (" + c[tip.creases[0]].origin + ") and " +
+                       std::to_string(tip.creases[1]) + " (" + c[tip.creases[1]].origin + ") end together at " +
+                       format_point(tip.point) + " inside the sheet, at " + format_number(std::round(tip.angle_degrees)) +
+                       " degrees to each other: a sheet that bends smoothly cannot keep a fold up to such a point "
+                       "(around it the sheet would be a cone), so their folds fade there; fold sites within " +
+                       format_number(kFoldTipRadius) +
+                       " grid edges of it may bend less than asked or the other way and are counted apart");
   }
   return warnings;
 }

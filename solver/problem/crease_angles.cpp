@@ -36,7 +36,9 @@ std::vector<CreaseFold> crease_folds(const DogProblem& problem, const Dofs& x) {
     c.errors.push_back(std::abs(angle_difference(angle, target)));
     if (std::abs(angle) <= kBentDegrees || target == 0) continue;
     ++c.fold.bent;
-    if (angle * target < 0) ++c.fold.against;
+    if (!bent_against(angle, target)) continue;
+    ++c.fold.against;
+    if (near_fold_tip(problem.mesh(), problem.angles.point(b))) ++c.fold.against_near_tip;
   }
   std::vector<CreaseFold> out;
   for (size_t curve = 0; curve < by_curve.size(); ++curve) {

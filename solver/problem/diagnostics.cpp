@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/statistics.h"
+#include "geometry/fold_tips.h"
 
 namespace sdog {
 namespace {
@@ -36,19 +37,32 @@ double angle_difference(double angle, double target) {
   return d;
 }
 
+bool near_fold_tip(const DogMesh& mesh, int point) {
+  const Eigen::Vector2d& p = mesh.stitching.points[point].flat;
+  return std::any_of(mesh.fold_tips.begin(), mesh.fold_tips.end(),
+                     [&](const Eigen::Vector2d& tip) { return (p - tip).norm() <= kFoldTipRadius; });
+}
+
+bool bent_against(double angle, double target) { return std::abs(angle) > kBentDegrees && angle * target < 0; }
+
 AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x) {
   AngleAgreement a;
   std::vector<double> errors;
   for (int b = 0; b < problem.angles.block_count(); ++b) {
-    const int k = problem.fold_angles.site_of(problem.angles.point(b));
+    const int point = problem.angles.point(b), k = problem.fold_angles.site_of(point);
     if (k < 0) continue;
     const double target = problem.angles.target(b) * 180 / M_PI, angle = problem.fold_angles.at(k, x);
     errors.push_back(std::abs(angle_difference(angle, target)));
     if (target == 0) continue;
+    if (near_fold_tip(problem.mesh(), point)) {
+      ++a.tip_sites;
+      if (bent_against(angle, target)) ++a.tip_against;
+      continue;
+    }
     ++a.targeted_sites;
     if (std::abs(angle) <= kBentDegrees) continue;
     ++a.bent_sites;
-    if (angle * target > 0) ++a.bent_as_targeted;
+    if (!bent_against(angle, target)) ++a.bent_as_targeted;
   }
   a.median_error = median(errors);
   return a;

@@ -17,15 +17,23 @@ double angle_difference(double angle, double target);
 
 /// The fold angles against the angle targets (problem.angles): of the fold sites with a nonzero
 /// target, how many bend by more than kBentDegrees and how many of those bend the way their target
-/// says; and the median |angle - target| over every site with a target (degrees).
+/// says; and the median |angle - target| over every site with a target (degrees). Sites within
+/// kFoldTipRadius of a fold tip (geometry/fold_tips.h), where folds fade, are counted apart.
 struct AngleAgreement {
   int targeted_sites = 0, bent_sites = 0, bent_as_targeted = 0;
+  int tip_sites = 0;    ///< sites with a nonzero target near a fold tip, not in the counts above
+  int tip_against = 0;  ///< of them, bent by more than kBentDegrees against their target
   double median_error = 0;
   /// bent_as_targeted / bent_sites (1 when no site bends).
   double direction_agreement() const { return bent_sites > 0 ? double(bent_as_targeted) / bent_sites : 1.0; }
-  /// Sites bent against their target.
+  /// Sites bent against their target (away from fold tips).
   int against() const { return bent_sites - bent_as_targeted; }
 };
+/// Whether the crease point `point` of `mesh` lies within kFoldTipRadius of a fold tip.
+bool near_fold_tip(const DogMesh& mesh, int point);
+/// Whether a site at `angle` degrees with a nonzero `target` bends by more than kBentDegrees the
+/// other way.
+bool bent_against(double angle, double target);
 AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x);
 
 struct Diagnostics {

@@ -274,6 +274,25 @@ TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   EXPECT_LT(std::stod(csv.rows.back()[csv.column("positions")]), 0.1);
 }
 
+// The v pleat's creases end together inside the sheet: the run names that fold tip and both
+// creases before it starts, and reports the fold sites next to it apart from the others.
+TEST(RunCommand, AFoldTipIsNamedAndItsSitesCountedApart) {
+  const std::string dir = test::temp_dir("fold_tip");
+  const auto r = test::run_sdog("run '" + test::dataset("v_pleat.fold") +
+                                "' --res 21x21 --scenario fold --iters 1 --hold 20 -q --frames-every 0 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("creases 0 (" + test::dataset("v_pleat.fold") + ": edge 6) and 1 (" +
+                       test::dataset("v_pleat.fold") + ": edge 22) end together"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("more sites within 6 grid edges of a fold tip"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
+  const auto& f = j.at("final").at("fold_angles");
+  EXPECT_GT(f.at("fold_tip_sites").get<int>(), 0);
+  EXPECT_GE(f.at("fold_tip_sites").get<int>(), f.at("fold_tip_sites_against").get<int>());
+  EXPECT_GT(f.at("targeted_sites").get<int>(), 0);
+}
+
 // --switch: the run changes mode where asked; run.csv says which mode computed each iteration.
 TEST(RunCommand, SwitchesModesDuringTheRun) {
   const std::string dir = test::temp_dir("run_switch");

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "geometry/dog_model.h"
+#include "geometry/fold_tips.h"
 #include "solver/problem/crease_angles.h"
+#include "solver/problem/diagnostics.h"
 #include "solver/run/run_setup.h"
 #include "solver/terms/dihedral_angles.h"
 #include "tests/geometry/pattern_builders.h"
@@ -129,6 +131,33 @@ TEST(CreaseAngles, CurvedPleatsFoldAsDrawn) {
     ASSERT_NE(curve.fold, Fold::kUnassigned);
     EXPECT_NEAR(angles.at(k, setup.positions()), 60 * fold_sign(curve.fold), 3) << "site " << k << " of " << curve.id;
   }
+}
+
+// The v pleat's two creases end together inside the sheet (a fold tip, where folds fade): the fold
+// sites within kFoldTipRadius of it are counted apart from the others, and every site is counted
+// once.
+TEST(CreaseAngles, SitesNextToAFoldTipAreCountedApart) {
+  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("v_pleat.fold")), {21, 21});
+  ASSERT_EQ(model.fine.fold_tips.size(), 1u);
+  RunSetup setup(model, ModeKind::kStandard, fold_config(60, 10, 10));
+  ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);
+  const AngleAgreement a = angle_agreement(setup.problem(), setup.positions());
+  const FoldAngles angles(model.fine);
+  // The tip is the FOLD vertex (50, 38) of a 100-unit sheet on 20 grid edges, y pointing down in
+  // the FOLD file and up in the mesh: (10, 12.4).
+  int near = 0, against_near = 0;
+  for (size_t k = 0; k < angles.sites().size(); ++k) {
+    const Eigen::Vector2d flat = model.fine.stitching.points[angles.sites()[k].point].flat;
+    if (std::hypot(flat.x() - 10, flat.y() - 12.4) > kFoldTipRadius) continue;
+    ++near;
+    const auto& curve = model.fine.stitching.curves[angles.sites()[k].curve];
+    const double angle = angles.at(k, setup.positions());
+    if (std::abs(angle) > kBentDegrees && angle * fold_sign(curve.fold) < 0) ++against_near;
+  }
+  EXPECT_GT(near, 0);
+  EXPECT_EQ(a.tip_sites, near);
+  EXPECT_EQ(a.tip_against, against_near);
+  EXPECT_EQ(a.tip_sites + a.targeted_sites, static_cast<int>(angles.sites().size()));
 }
 
 }  // namespace
