@@ -199,8 +199,8 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
     // their angle targets; with as many, when the state is unfolded or its objective is higher.
     const double f = weighted_objective(problem_, x);
     const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
-    const int against = angle_agreement(problem_, x).against();
-    const int straight_against = angle_agreement(problem_, settling_->x).against();
+    const int against = angle_agreement(problem_, x).all_against();
+    const int straight_against = angle_agreement(problem_, settling_->x).all_against();
     if (straight.folded && (straight_against < against ||
                             (straight_against == against &&
                              (!report.folded || weighted_objective(problem_, settling_->x) < f - margin)))) {

@@ -28,6 +28,8 @@ struct AngleAgreement {
   double direction_agreement() const { return bent_sites > 0 ? double(bent_as_targeted) / bent_sites : 1.0; }
   /// Sites bent against their target (away from fold tips).
   int against() const { return bent_sites - bent_as_targeted; }
+  /// Sites bent against their target, next to fold tips too.
+  int all_against() const { return against() + tip_against; }
 };
 /// Whether the crease point `point` of `mesh` lies within kFoldTipRadius of a fold tip.
 bool near_fold_tip(const DogMesh& mesh, int point);
