@@ -31,6 +31,8 @@ TEST(RenderCommand, DefaultIsTheVertexTypePicture) {
   const std::string dir = test::temp_dir("render_default");
   const auto r = test::run_sdog("render " + kArcs + " --res 21x21 --size 480x240 --out " + dir + "/types.png");
   ASSERT_EQ(r.code, 0) << r.err;
+  // Nothing but what sdog says: no VTK log lines.
+  EXPECT_EQ(r.err.find("ERR|"), std::string::npos) << r.err;
   auto img = test::read_png(dir + "/types.png");
   EXPECT_GT(test::pixels_near(img, vis::vertex_type_color(VertexType::CoarseOnly)), 5);
 }

@@ -20,6 +20,9 @@ void render_picture(const DogModel& model, const SceneState& state, const Pictur
                      "dog-residual, edge-strain, bending)");
   auto window = offscreen_window(options.size);
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  // The scene's 2D actors measure themselves against the camera as they are added: without one VTK
+  // logs an error for each.
+  renderer->GetActiveCamera();
   renderer->SetBackground(1, 1, 1);
   if (options.transparent) renderer->SetBackgroundAlpha(0);
   window->AddRenderer(renderer);
