@@ -217,7 +217,8 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
     std::cerr << "warning: the final state misses the final constraint tolerance "
               << format_number(final_tolerance) << " (DOG residual " << format_number(last.diagnostics.dog_max)
               << ", stitch gap " << format_number(last.diagnostics.stitch_gap_max)
-              << "): more iterations or --hold may reach it\n";
+              << "): more iterations, --hold or a longer last projection (solver option projection_steps, and "
+                 "polish_factorizations 0) may reach it\n";
   const AngleAgreement& met = last.diagnostics.angles_met;
   if (met.targeted_sites > 0)
     std::cout << "fold angles: " << met.bent_as_targeted << " of the " << met.bent_sites << " fold sites bent more than "

@@ -32,6 +32,9 @@ const OptionTable<SqpOptions>& sqp_option_table() {
                      "exact-Hessian steps of the last iteration's polish at most"),
       integer_option("polish_factorizations", &S::polish_factorizations, Bounds::at_least(0),
                      "factorisations of the last iteration's polish and projection at most (0: no limit)"),
+      integer_option("projection_steps", &S::projection_steps, Bounds::at_least(1),
+                     "restoration steps of the last iteration's projection at most, then as many more with local "
+                     "steps if that stops short"),
       integer_option("local_rings", &S::local_rings, Bounds::at_least(0),
                      "rings of neighbours around the violated rows that a local restoration step moves"),
       real_option("local_fraction", &S::local_fraction, Bounds::between(-1, 1),

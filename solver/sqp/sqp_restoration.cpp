@@ -38,11 +38,11 @@ SqpReport SqpSolver::project(Dofs& x) {
   // First without local steps: they move the few vertices around the violated rows with the rest
   // frozen and can stall above the tolerance where chord and global steps reach it. Then, if that
   // stops short, with them, which finish the cases where the global steps stall.
-  Restoration restoration{options_.final_constraint_tolerance, kProjectionSteps, 0, options_.polish_epsilon,
+  Restoration restoration{options_.final_constraint_tolerance, options_.projection_steps, 0, options_.polish_epsilon,
                           options_.rho_max};
   bool ok = c.allFinite() && restore(x, c, restoration, report);
   if (ok && c.lpNorm<Eigen::Infinity>() > restoration.tolerance) {
-    restoration.max_steps = report.work.restoration_steps + kProjectionSteps;
+    restoration.max_steps = report.work.restoration_steps + options_.projection_steps;
     restoration.local_fraction = std::max(local_fraction(), SqpOptions::kDefaultLocalFraction);
     ok = restore(x, c, restoration, report);
   }

@@ -117,14 +117,13 @@ class SqpSolver {
 
   /// The projection onto the constraints that ends a run: chord and global restoration steps in
   /// the polishing metric (polish_epsilon) until |c|_inf <= final_constraint_tolerance, at most
-  /// kProjectionSteps, then as many more with local steps if that stops short. Used by the patch
+  /// projection_steps, then as many more with local steps if that stops short. Used by the patch
   /// modes' last iteration (final_projection.h) and by iterate() when its polish stops short of
   /// the final tolerance. Near flat regions the DOG constraints are nearly quadratic in the normal
   /// motion and these steps converge only linearly, hence the many steps. A projection that cannot
   /// reach the tolerance keeps its best state (reported in constraint_max); failed only for
   /// non-finite constraints.
   SqpReport project(Dofs& x);
-  static constexpr int kProjectionSteps = 100;
 
   /// The ordinary steps' restoration stops within max(tolerance, constraint_tolerance) (0, the
   /// default: constraint_tolerance). The standard mode loosens it between continuation sub-steps.

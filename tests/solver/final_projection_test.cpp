@@ -19,14 +19,20 @@ const DogModel& model() {
   return m;
 }
 
+// A standard run's state, every coordinate nudged by up to `amplitude`.
+Dofs nudged_run_state(double amplitude) {
+  const test::RunResult r = test::run_mode("standard", model(), test::short_run(30, 0));
+  EXPECT_FALSE(r.summary.failed()) << r.summary.failure;
+  Dofs x = r.x;
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += amplitude * std::sin(1.7 * i);
+  return x;
+}
+
 // A state off the DOG constraints by about 1e-4 (a standard run's state, nudged), projected: on
 // the constraints to the final tolerance, moved by little more than it was nudged.
 TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
-  const test::RunResult r = test::run_mode("standard", model(), test::short_run(30, 0));
-  ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
-  Dofs x = r.x;
-  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += 3e-5 * std::sin(1.7 * i);
+  Dofs x = nudged_run_state(3e-5);
   const double before = diagnose(problem, x).dog_max;
   ASSERT_GT(before, 1e-5);
   const Dofs nudged = x;
@@ -47,6 +53,31 @@ TEST(FinalProjection, MovesTheSheetOntoTheConstraintsByLittle) {
   ASSERT_TRUE(projection.project(x, again));
   EXPECT_EQ(again.work.restoration_steps, 0);
   EXPECT_TRUE(x == projected);
+}
+
+// projection_steps bounds the projection: with 1, one global step and then one that may be local,
+// which leave a state nudged further off short of the final tolerance that the default reaches
+// in more steps.
+TEST(FinalProjection, TakesAtMostProjectionStepsPerPhase) {
+  DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
+  const Dofs nudged = nudged_run_state(2e-3);
+  const double before = diagnose(problem, nudged).dog_max;
+  auto project = [&](int steps, StepReport& report) {
+    SqpOptions sqp;
+    if (steps > 0) sqp.projection_steps = steps;
+    Dofs x = nudged;
+    FinalProjection projection(problem, sqp);
+    EXPECT_TRUE(projection.project(x, report)) << report.failure;
+    return diagnose(problem, x).dog_max;
+  };
+  StepReport full, short_one;
+  ASSERT_LE(project(0, full), SqpOptions().final_constraint_tolerance);
+  ASSERT_GT(full.work.restoration_steps, 2);
+  const double after = project(1, short_one);
+  EXPECT_GE(short_one.work.restoration_steps, 1);
+  EXPECT_LE(short_one.work.restoration_steps, 2);
+  EXPECT_LT(after, before);
+  EXPECT_GT(after, SqpOptions().final_constraint_tolerance);
 }
 
 struct Finish {
