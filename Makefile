@@ -68,7 +68,7 @@ fuzz: fuzz-deps deps
 # Regenerates the dataset previews (datasets/README.md) and the README pictures (also the studio's).
 previews: build
 	@mkdir -p docs/datasets
-	@for f in datasets/*.svg; do n=$$(basename $$f .svg); \
+	@for f in datasets/*.svg datasets/*.fold; do n=$$(basename $${f%.*}); \
 	  $(XVFB) $(SDOG) render $$f --size 1200x600 --out docs/datasets/$$n.png || exit 1; done
 	$(XVFB) $(SDOG) render datasets/curved_pleats.svg --res 41x41 --scenario fold --iters 40 --view 3d \
 	  --overlay patches,crease-curves --size 1200x700 --out docs/curved_pleats_folded.png

@@ -3,6 +3,7 @@
 // the programs write.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -53,6 +54,27 @@ TEST(ReferenceDocs, TheGeneratedTablesListEveryOptionAndKey) {
                           "`backend`", "`fold_bias`", "`angle`"})
     EXPECT_NE(config.find(key), std::string::npos) << key;
   EXPECT_NE(config.find("| `rho_max` | number > 0 | `1e+12` |"), std::string::npos);
+}
+
+// datasets/README.md describes every dataset in its table and shows its preview (`make previews`).
+TEST(ReferenceDocs, EveryDatasetIsDescribedAndPreviewed) {
+  namespace fs = std::filesystem;
+  std::ifstream in(std::string(SDOG_DATASETS_DIR) + "/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str();
+  int datasets = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(SDOG_DATASETS_DIR)) {
+    const std::string ext = e.path().extension().string();
+    if (ext != ".svg" && ext != ".fold") continue;
+    ++datasets;
+    const std::string file = e.path().filename().string(), name = e.path().stem().string();
+    EXPECT_NE(readme.find("| `" + file + "` |"), std::string::npos) << file << " is not in the table";
+    EXPECT_NE(readme.find("![" + name + "](../docs/datasets/" + name + ".png)"), std::string::npos)
+        << file << " has no preview: run `make previews`";
+    EXPECT_TRUE(fs::exists(fs::path(SDOG_DOCS_DIR) / "datasets" / (name + ".png"))) << name << ".png";
+  }
+  EXPECT_GE(datasets, 17);
 }
 
 TEST(ReferenceDocs, TheOutputFilesPageNamesEveryColumn) {
