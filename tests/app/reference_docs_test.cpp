@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,18 +11,14 @@
 #include "solver/config/reference.h"
 #include "solver/experiments/tables.h"
 #include "solver/run/run_log.h"
+#include "tests/app/run_sdog.h"
 
 namespace sdog {
 namespace {
 
 const char* const kMarker = "<!-- generated tables below: make reference-docs -->\n";
 
-std::string page(const std::string& name) {
-  std::ifstream in(std::string(SDOG_DOCS_DIR) + "/reference/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string page(const std::string& name) { return test::slurp(std::string(SDOG_DOCS_DIR) + "/reference/" + name); }
 
 // The part of a reference page after the marker line.
 std::string generated_part(const std::string& name) {
@@ -59,10 +53,7 @@ TEST(ReferenceDocs, TheGeneratedTablesListEveryOptionAndKey) {
 // datasets/README.md describes every dataset in its table and shows its preview (`make previews`).
 TEST(ReferenceDocs, EveryDatasetIsDescribedAndPreviewed) {
   namespace fs = std::filesystem;
-  std::ifstream in(std::string(SDOG_DATASETS_DIR) + "/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string readme = text.str();
+  const std::string readme = test::slurp(std::string(SDOG_DATASETS_DIR) + "/README.md");
   int datasets = 0;
   for (const fs::directory_entry& e : fs::directory_iterator(SDOG_DATASETS_DIR)) {
     const std::string ext = e.path().extension().string();

@@ -62,18 +62,18 @@ TEST(FinalProjection, TakesAtMostProjectionStepsPerPhase) {
   DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
   const Dofs nudged = nudged_run_state(2e-3);
   const double before = diagnose(problem, nudged).dog_max;
-  auto project = [&](int steps, StepReport& report) {
-    SqpOptions sqp;
-    if (steps > 0) sqp.projection_steps = steps;
+  auto project = [&](const SqpOptions& sqp, StepReport& report) {
     Dofs x = nudged;
     FinalProjection projection(problem, sqp);
     EXPECT_TRUE(projection.project(x, report)) << report.failure;
     return diagnose(problem, x).dog_max;
   };
   StepReport full, short_one;
-  ASSERT_LE(project(0, full), SqpOptions().final_constraint_tolerance);
+  ASSERT_LE(project(SqpOptions(), full), SqpOptions().final_constraint_tolerance);
   ASSERT_GT(full.work.restoration_steps, 2);
-  const double after = project(1, short_one);
+  SqpOptions one_step;
+  one_step.projection_steps = 1;
+  const double after = project(one_step, short_one);
   EXPECT_GE(short_one.work.restoration_steps, 1);
   EXPECT_LE(short_one.work.restoration_steps, 2);
   EXPECT_LT(after, before);
