@@ -44,6 +44,7 @@ void apply_preset(Preset preset, RunConfig& o) {
   o.weights.angles = thesis ? kThesisAngleWeight : Weights{}.angles;
   o.standard.stitching = thesis ? Stitching::kSoft : defaults.stitching;
   o.standard.sqp.polish_factorizations = thesis ? 0 : defaults.sqp.polish_factorizations;
+  o.standard.sqp.projection_steps = thesis ? kThesisProjectionSteps : defaults.sqp.projection_steps;
   o.standard.converge = thesis ? false : defaults.converge;
   o.standard.max_fold_bias = thesis ? 1e14 : defaults.max_fold_bias;
 }
@@ -53,7 +54,7 @@ const OptionTable<RunConfig>& run_option_table() {
   static const OptionTable<C> table = {
       choice_option("preset", &C::preset, preset_names(),
                     "default: exact stitching, converging iterations; thesis: the thesis's solver (soft stitching, "
-                    "one step per iteration, no factorisation budget for the polish), for its numbers; applied before the other keys (also --preset)"),
+                    "one step per iteration, no factorisation budget for the polish, a shorter projection), for its numbers; applied before the other keys (also --preset)"),
       choice_option("scenario", &C::scenario, scenario_names(),
                     "corners: the thesis protocol; fold: every crease folds from flat to angle; none: only the "
                     "listed constraints; flatten: a folded sheet is left to unfold (also --scenario)"),

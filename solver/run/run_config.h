@@ -25,8 +25,8 @@ ScenarioKind parse_scenario(const std::string& name, const std::string& what = "
 
 /// Named sets of solver settings. kDefault: exact stitching, a polish with a factorisation
 /// budget. kThesis: the thesis's solver, for reproducing its numbers: soft stitching (weight 10), a
-/// polish without a budget, one step per iteration, the fold bias up to 1e14 and the angle weight
-/// 1000.
+/// polish without a budget and a projection of kThesisProjectionSteps steps per phase, one step per
+/// iteration, the fold bias up to 1e14 and the angle weight 1000.
 enum class Preset { kDefault, kThesis };
 std::vector<std::string> preset_names();
 /// Throws UsageError "`what`unknown preset 'name' (known: ...)" unless `name` is a preset.
@@ -75,6 +75,9 @@ struct ModeSwitch {
 
 /// The thesis's weight of its dihedral-angle term (the default is Weights::angles).
 constexpr double kThesisAngleWeight = 1000;
+/// The thesis preset's projection_steps: without a factorisation budget, this bounds its last
+/// iteration where the projection stalls.
+constexpr int kThesisProjectionSteps = 100;
 
 /// The run's configuration: the options of every mode (ModeOptions) and what the run asks for.
 struct RunConfig : ModeOptions {

@@ -24,7 +24,7 @@ struct SqpOptions {
   int max_restoration_steps = 20;            ///< per iteration (twice that in the last one)
   int polish_steps = 10;                     ///< exact-Hessian steps of the last iteration
   int polish_factorizations = 300;           ///< factorisations of the last iteration's polish (0: no limit)
-  int projection_steps = 100;                ///< restoration steps of the projection, per phase
+  int projection_steps = 400;                ///< restoration steps of the projection, per phase
   int local_rings = 2;                       ///< neighbourhood of a local restoration step
   /// Local steps while at most this share of rows is violated; negative: automatic (0 in the
   /// standard mode with exact stitching, else kDefaultLocalFraction).

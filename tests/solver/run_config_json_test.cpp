@@ -109,12 +109,14 @@ TEST(RunConfigJson, ThePresetIsAppliedBeforeTheOtherKeys) {
   EXPECT_EQ(c.standard.sqp.polish_factorizations, 7);
   EXPECT_FALSE(c.standard.converge);
   EXPECT_EQ(c.standard.max_fold_bias, 1e14);  // the reference's escalation, up to 10^14
+  EXPECT_EQ(c.standard.sqp.projection_steps, 100);  // its unbudgeted last iteration as before
   RunConfig d;
   apply_run_config(json::parse(R"({"preset": "default"})"), "d.json", d);
   EXPECT_EQ(d.standard.stitching, Stitching::kExact);
   EXPECT_TRUE(d.standard.converge);
   EXPECT_EQ(d.standard.max_fold_bias, 1e6);
   EXPECT_EQ(d.standard.sqp.polish_factorizations, SqpOptions().polish_factorizations);
+  EXPECT_EQ(d.standard.sqp.projection_steps, 400);
   RunConfig e;
   EXPECT_THROW(apply_run_config(json::parse(R"({"preset": "warp"})"), "e.json", e), InputError);
 }
