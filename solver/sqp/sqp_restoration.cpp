@@ -31,6 +31,7 @@ SqpReport SqpSolver::restore_constraints(Dofs& x) {
 }
 
 SqpReport SqpSolver::project(Dofs& x) {
+  const LastIterationBudget budget(*this);
   SqpReport report;
   factored_ = false;  // the factor of an earlier state does not fit x
   const Dofs x0 = x;

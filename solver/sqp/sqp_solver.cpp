@@ -180,7 +180,7 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
 // unpolished state, and keeps the more feasible result. A polish that fails or ends less feasible
 // is dropped; one that stops short is finished by the projection.
 void SqpSolver::polish(Dofs& x, SqpReport& report) {
-  if (options_.polish_factorizations > 0) factorization_stop_ = factorizations_ + options_.polish_factorizations;
+  const LastIterationBudget budget(*this);
   const Dofs x1 = x;
   const Eigen::VectorXd lambda1 = lambda_;
   Dofs best_x = x1;
@@ -206,7 +206,17 @@ void SqpSolver::polish(Dofs& x, SqpReport& report) {
     report.work += projection.work;
     if (!projection.failed) report.constraint_max = projection.constraint_max;
   }
-  factorization_stop_ = std::numeric_limits<long>::max();
+}
+
+SqpSolver::LastIterationBudget::LastIterationBudget(SqpSolver& solver)
+    : solver_(solver),
+      owner_(solver.factorization_stop_ == std::numeric_limits<long>::max() &&
+             solver.options_.polish_factorizations > 0) {
+  if (owner_) solver_.factorization_stop_ = solver_.factorizations_ + solver_.options_.polish_factorizations;
+}
+
+SqpSolver::LastIterationBudget::~LastIterationBudget() {
+  if (owner_) solver_.factorization_stop_ = std::numeric_limits<long>::max();
 }
 
 SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {

@@ -37,7 +37,8 @@
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
 //    at rho_max. If the state is still above final_constraint_tolerance, project() finishes it.
-//    The polish and that projection make at most polish_factorizations factorisations together.
+//    The polish and that projection make at most polish_factorizations factorisations together;
+//    a projection on its own (the patch modes' last iteration) has the same budget.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
@@ -122,7 +123,8 @@ class SqpSolver {
   /// the final tolerance. Near flat regions the DOG constraints are nearly quadratic in the normal
   /// motion and these steps converge only linearly, hence the many steps. A projection that cannot
   /// reach the tolerance keeps its best state (reported in constraint_max); failed only for
-  /// non-finite constraints.
+  /// non-finite constraints. At most polish_factorizations factorisations (0: no limit), shared
+  /// with the polish when the polish calls it.
   SqpReport project(Dofs& x);
 
   /// The ordinary steps' restoration stops within max(tolerance, constraint_tolerance) (0, the
@@ -180,8 +182,22 @@ class SqpSolver {
 
   // sqp_solver.cpp: the iteration and its polish.
   SqpReport run_pass(Dofs& x, const Pass& pass);
-  /// False once the polish has used its factorisations.
+  /// False once the last iteration (polish and projection) has used its factorisations.
   bool within_budget() const { return factorizations_ < factorization_stop_; }
+  /// The last iteration's factorisation budget (polish_factorizations, 0: none) from construction
+  /// to destruction. A budget opened inside another (the projection that finishes a polish) shares
+  /// the outer one.
+  class LastIterationBudget {
+   public:
+    explicit LastIterationBudget(SqpSolver& solver);
+    ~LastIterationBudget();
+    LastIterationBudget(const LastIterationBudget&) = delete;
+    LastIterationBudget& operator=(const LastIterationBudget&) = delete;
+
+   private:
+    SqpSolver& solver_;
+    bool owner_;
+  };
   // sqp_step.cpp: one optimality step (KKT solve and line search).
   StepOutcome optimality_step(Dofs& x, Linearization& lin, const Pass& pass, SqpReport& report);
   /// options_.local_fraction with the automatic value resolved.
@@ -247,7 +263,7 @@ class SqpSolver {
   LocalRestoration local_;
   long factorizations_ = 0;  ///< made so far
   int injected_failures_ = 0;  ///< inject_factorization_failures()
-  long factorization_stop_;  ///< no factorisation from this count on (the polish budget)
+  long factorization_stop_;  ///< no factorisation from this count on (LastIterationBudget)
 };
 
 }  // namespace sdog

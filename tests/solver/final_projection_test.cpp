@@ -80,6 +80,27 @@ TEST(FinalProjection, TakesAtMostProjectionStepsPerPhase) {
   EXPECT_GT(after, SqpOptions().final_constraint_tolerance);
 }
 
+// polish_factorizations bounds the projection on its own too (the patch modes' last iteration):
+// with a budget of 1 it stops at its first factorisation, short of the final tolerance that the
+// unbudgeted projection reaches with more steps.
+TEST(FinalProjection, MakesAtMostPolishFactorizations) {
+  DogProblem problem(model().fine, model().fine_topology, RunConfig().weights);
+  auto project = [&](int budget, StepReport& report) {
+    Dofs x = nudged_run_state(2e-3);
+    SqpOptions sqp;
+    sqp.polish_factorizations = budget;
+    FinalProjection projection(problem, sqp);
+    EXPECT_TRUE(projection.project(x, report)) << report.failure;
+    return diagnose(problem, x).dog_max;
+  };
+  StepReport unlimited, budgeted;
+  ASSERT_LE(project(0, unlimited), SqpOptions().final_constraint_tolerance);
+  ASSERT_GT(unlimited.work.restoration_steps, 1);
+  EXPECT_GT(project(1, budgeted), SqpOptions().final_constraint_tolerance);
+  EXPECT_EQ(budgeted.work.factorizations, 1);
+  EXPECT_LT(budgeted.work.restoration_steps, unlimited.work.restoration_steps);
+}
+
 struct Finish {
   Diagnostics diagnostics;
   int unfolded = 0;
