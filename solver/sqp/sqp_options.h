@@ -23,7 +23,7 @@ struct SqpOptions {
   double final_constraint_tolerance = 5e-7;  ///< ... after the last one
   int max_restoration_steps = 20;            ///< per iteration (twice that in the last one)
   int polish_steps = 10;                     ///< exact-Hessian steps of the last iteration
-  int polish_factorizations = 300;           ///< factorisations of the last iteration's polish (0: no limit)
+  int polish_factorizations = 300;           ///< factorisations of a last-iteration polish or projection (0: no limit)
   int projection_steps = 400;                ///< restoration steps of the projection, per phase
   int local_rings = 2;                       ///< neighbourhood of a local restoration step
   /// Local steps while at most this share of rows is violated; negative: automatic (0 in the

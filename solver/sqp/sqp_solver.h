@@ -38,7 +38,8 @@
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
 //    at rho_max. If the state is still above final_constraint_tolerance, project() finishes it.
 //    The polish and that projection make at most polish_factorizations factorisations together;
-//    a projection on its own (the patch modes' last iteration) has the same budget.
+//    a projection on its own (the start of a converging run's last iteration, the patch modes'
+//    last iteration) has the same budget.
 //
 // H is the objective's Hessian (exact for quadratic terms, clamped for isometry, Gauss-Newton
 // for the others). The constraints' curvature -sum lambda_i Hess c_i (per-row multipliers) is
