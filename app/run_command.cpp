@@ -75,6 +75,7 @@ nlohmann::json diagnostics_json(const IterationReport& r) {
                       {"dog_l2", d.dog_l2},
                       {"stitch_gap_max", d.stitch_gap_max},
                       {"edge_strain_max", d.edge_strain_max},
+                      {"sheet_strain_max", d.sheet_strain_max},
                       {"folded", r.step.folded}};
   const AngleAgreement& a = d.angles_met;
   if (a.targeted_sites > 0)
@@ -240,6 +241,14 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
                         ? std::string(", all next to a fold tip (see above)")
                         : ", " + std::to_string(c.against_near_tip) + " of them next to a fold tip (see above)")
                 << "\n";
+  const Diagnostics& d = last.diagnostics;
+  if (d.sheet_strain_max > kStretchedStrain)
+    std::cerr << "warning: the sheet stretches: an edge of patch " << d.sheet_strain_patch << " is "
+              << format_number(std::round(1000 * std::abs(d.sheet_strain_worst)) / 10) << "% "
+              << (d.sheet_strain_worst < 0 ? "shorter" : "longer")
+              << " than drawn (sheet_strain_max; the frames' edge_strain shows where): paper does not stretch, and the "
+                 "targets ask for more than the sheet gives without it (smaller fold angles or --fold-percent, targets "
+                 "closer to the sheet, or a larger isometry weight stretch it less)\n";
   if (totals.dog_misses > 0)
     std::cerr << "warning: the DOG constraints stayed above the solver's tolerance "
               << format_number(config.standard.sqp.constraint_tolerance) << " after " << totals.dog_misses << " of "

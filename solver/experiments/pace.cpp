@@ -62,6 +62,7 @@ PaceResult run_paced(const DogModel& model, RunConfig config, int k, int max_hol
     result.objective = r.diagnostics.objective;
     result.dog_max = r.diagnostics.dog_max;
     result.stitch_gap_max = r.diagnostics.stitch_gap_max;
+    result.sheet_strain_max = r.diagnostics.sheet_strain_max;
     result.folded = r.step.folded;
     result.positions = r.diagnostics.terms[kPositions];
     result.angles = r.diagnostics.angles_met;

@@ -19,6 +19,7 @@ struct PaceResult {
   double objective = 0;
   double dog_max = 0;
   double stitch_gap_max = 0;
+  double sheet_strain_max = 0;  ///< largest strain of the paper (Diagnostics::sheet_strain_max)
   bool folded = false;
   double handle_distance = 0;  ///< largest distance of a handle to its target, mesh units
   double positions = 0;        ///< the positions term

@@ -97,7 +97,13 @@ Diagnostics diagnose(const DogProblem& problem, const Dofs& x) {
   for (int b = 0; b < problem.isometry.block_count(); ++b) {
     const int* v = problem.isometry.block_vertices(b);
     const double len = (vertex_of(x, v[0]) - vertex_of(x, v[1])).norm();
-    d.edge_strain_max = std::max(d.edge_strain_max, std::abs(len / problem.isometry.rest_length(b) - 1));
+    const double strain = len / problem.isometry.rest_length(b) - 1;
+    d.edge_strain_max = std::max(d.edge_strain_max, std::abs(strain));
+    if (problem.sheet_edges[b] && (std::abs(strain) > d.sheet_strain_max || d.sheet_strain_patch < 0)) {
+      d.sheet_strain_max = std::abs(strain);
+      d.sheet_strain_worst = strain;
+      d.sheet_strain_patch = problem.mesh().vertex_patch[v[0]];
+    }
   }
   return d;
 }

@@ -12,6 +12,11 @@ namespace sdog {
 /// A fold site counts as bent (one way or the other) beyond this angle, degrees.
 constexpr double kBentDegrees = 5;
 
+/// A strain of the paper (|length / rest length - 1| of an edge of a cell wholly in its patch)
+/// above this means the sheet visibly stretches or shrinks: paper does not, so a run that ends
+/// there says so.
+constexpr double kStretchedStrain = 0.05;
+
 /// The signed difference angle - target wrapped into (-180, 180] degrees.
 double angle_difference(double angle, double target);
 
@@ -45,6 +50,11 @@ struct Diagnostics {
   double dog_l2 = 0;                        ///< |c|_2
   double stitch_gap_max = 0;                ///< largest distance between two copies of a crease point
   double edge_strain_max = 0;               ///< largest |length / rest length - 1| over quad edges
+  /// The same over the edges of the paper (DogProblem::sheet_edges), signed (< 0: shorter), and
+  /// the patch of that edge (-1: none).
+  double sheet_strain_max = 0;
+  double sheet_strain_worst = 0;
+  int sheet_strain_patch = -1;
   AngleAgreement angles_met;
 };
 

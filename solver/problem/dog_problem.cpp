@@ -23,6 +23,29 @@ DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const 
       rest_(to_dofs(mesh.V)),
       fold_sharpness_(fold_sharpness) {
   bending = make_bending_term(topology, rest_);
+  // A vertex lies on the paper when its cell corner lies in its patch: every corner of a cell wholly
+  // in the patch, and the corners a cut cell's piece keeps. An edge between two such vertices is
+  // paper unless a crease crosses it.
+  std::vector<char> on_paper(mesh.vertex_count(), 0), cut(mesh.F.rows(), 0);
+  const Eigen::Vector2d corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // of F(q, 0..3) in cell coordinates
+  for (const auto& piece : mesh.quad_pieces) {
+    cut[piece.quad] = 1;
+    for (int k = 0; k < 4; ++k)
+      for (const auto& uv : piece.uv)
+        if ((uv - corners[k]).norm() < 1e-9) on_paper[mesh.F(piece.quad, k)] = 1;
+  }
+  for (int q = 0; q < mesh.F.rows(); ++q)
+    for (int k = 0; k < 4 && !cut[q]; ++k) on_paper[mesh.F(q, k)] = 1;
+  auto edge = [](int a, int b) { return std::pair<int, int>(std::min(a, b), std::max(a, b)); };
+  std::vector<std::pair<int, int>> crossed;
+  for (const auto& point : mesh.stitching.points)
+    for (const EdgePoint& e : point.copies) crossed.push_back(edge(e.v1, e.v2));
+  std::sort(crossed.begin(), crossed.end());
+  for (int b = 0; b < isometry.block_count(); ++b) {
+    const int* v = isometry.block_vertices(b);
+    sheet_edges.push_back(on_paper[v[0]] && on_paper[v[1]] &&
+                          !std::binary_search(crossed.begin(), crossed.end(), edge(v[0], v[1])));
+  }
   for (const auto& pair : mesh.stitching.pairs) {
     const auto& p = mesh.stitching.points[pair.point];
     const EdgePoint& a = p.copies[pair.a];

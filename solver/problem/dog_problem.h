@@ -69,6 +69,10 @@ class DogProblem {
   FoldBiasTerm fold_bias;  ///< over free_sites
   FoldAngles fold_angles;  ///< what the angle term's sites measure (diagnostics)
   DogConstraints dog;
+  /// Per isometry block: whether its edge is paper: both ends lie in their patch's part of the
+  /// sheet and no crease crosses it (the parts of cells beyond a crease only carry the patch's
+  /// surface on).
+  std::vector<char> sheet_edges;
 
  private:
   const DogMesh& mesh_;

@@ -39,6 +39,7 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"dog_l2", [](const R& r) { return number(r.diagnostics.dog_l2); }},
       {"stitch_gap_max", [](const R& r) { return number(r.diagnostics.stitch_gap_max); }},
       {"edge_strain_max", [](const R& r) { return number(r.diagnostics.edge_strain_max); }},
+      {"sheet_strain_max", [](const R& r) { return number(r.diagnostics.sheet_strain_max); }},
       {"sqp_steps", [](const R& r) { return count(r.step.work.steps); }},
       {"step_length", [](const R& r) { return number(r.step.step_length); }},
       {"fold_retries", [](const R& r) { return count(r.step.work.fold_retries); }},

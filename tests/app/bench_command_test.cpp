@@ -1,5 +1,5 @@
-// sdog bench as a user runs it: the table as CSV, an unwritable CSV refused before the work, and
-// the pace benchmark.
+// sdog bench as a user runs it: the table as CSV, an unwritable CSV refused before the work, the
+// pace benchmark and the fold benchmark.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -112,6 +112,28 @@ TEST(BenchCommand, PaceTakesSolverSettingsFromAConfiguration) {
                                      "' --res 21x21 --config " + off_json);
   EXPECT_EQ(timing.code, 2);
   EXPECT_NE(timing.err.find("--config: only with --pace"), std::string::npos) << timing.err;
+}
+
+// The fold benchmark on the curved pleats: every run converges on the constraints with its fold
+// sites bent the drawn way, and the paper keeps its lengths (pleats along parallel curves fold
+// without stretching).
+TEST(BenchCommand, FoldReportsDirectionResidualsAndTheStrainOfThePaper) {
+  const std::string dir = test::temp_dir("bench_fold");
+  const auto r = test::run_sdog("bench --fold --pattern '" + test::dataset("curved_pleats.svg") +
+                                "' --res 21x21 --angles 30 90 --csv " + dir + "/fold.csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("strain"), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir + "/fold.csv");
+  ASSERT_EQ(csv.rows.size(), 2u);
+  for (const auto& row : csv.rows) {
+    const std::string angle = row[csv.column("angle")];
+    EXPECT_EQ(row[csv.column("converged")], "1") << angle;
+    EXPECT_GT(std::stod(row[csv.column("shape_s")]), 0) << angle;
+    EXPECT_GE(std::stod(row[csv.column("agreement")]), 0.95) << angle;
+    EXPECT_GT(std::stoi(row[csv.column("bent")]), 0) << angle;
+    EXPECT_LE(std::stod(row[csv.column("dog_max")]), 1e-6) << angle;
+    EXPECT_LT(std::stod(row[csv.column("sheet_strain")]), 0.02) << angle;
+  }
 }
 
 }  // namespace

@@ -42,8 +42,8 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
   const Csv csv = read_csv(dir + "/run.csv");
   const std::vector<std::string> required = {
       "iteration", "t", "objective", "bending", "isometry", "positions", "edge_points", "stitching", "angles",
-      "fold_bias", "objective_final_targets", "dog_max", "dog_l2", "stitch_gap_max", "edge_strain_max", "sqp_steps",
-      "step_length", "fold_retries", "folded", "iteration_ms", "factor_ms"};
+      "fold_bias", "objective_final_targets", "dog_max", "dog_l2", "stitch_gap_max", "edge_strain_max",
+      "sheet_strain_max", "sqp_steps", "step_length", "fold_retries", "folded", "iteration_ms", "factor_ms"};
   int previous = -1;
   for (const auto& name : required) {
     const int c = csv.column(name);
@@ -272,6 +272,28 @@ TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   ASSERT_EQ(csv.rows.size(), 12u);
   EXPECT_GT(std::stod(csv.rows.back()[csv.column("bending")]), 0);
   EXPECT_LT(std::stod(csv.rows.back()[csv.column("positions")]), 0.1);
+}
+
+// A corner pulled far off the sheet stretches it (the targets are soft): the run says so, names
+// the patch and the sense; the thesis drag of the same sheet stretches it less and gets no warning.
+TEST(RunCommand, WarnsWhenTheSheetStretches) {
+  const std::string dir = test::temp_dir("stretch");
+  const std::string config = test::write_file(dir, "c.json", R"({
+    "scenario": "none", "iterations": 5, "hold": 5,
+    "positions": [{"vertex": 0, "move": [0, 0, 0]}, {"near": [1e9, 1e9], "move": [6, 6, 0]}]
+  })");
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " + config +
+                                " --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Csv csv = read_csv(dir + "/out/run.csv");
+  const double strain = std::stod(csv.rows.back()[csv.column("sheet_strain_max")]);
+  EXPECT_GT(strain, 0.05);
+  EXPECT_NE(r.err.find("warning: the sheet stretches: an edge of patch 0 is "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("% longer than drawn"), std::string::npos) << r.err;
+
+  const auto drag = test::run_sdog(kSmallRun + " --frames-every 0 --out " + dir + "/drag");
+  ASSERT_EQ(drag.code, 0) << drag.err;
+  EXPECT_EQ(drag.err.find("stretches"), std::string::npos) << drag.err;
 }
 
 // The v pleat's creases end together inside the sheet: the run names that fold tip and both
