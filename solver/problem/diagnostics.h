@@ -12,9 +12,9 @@ namespace sdog {
 /// A fold site counts as bent (one way or the other) beyond this angle, degrees.
 constexpr double kBentDegrees = 5;
 
-/// A strain of the paper (|length / rest length - 1| of an edge of a cell wholly in its patch)
-/// above this means the sheet visibly stretches or shrinks: paper does not, so a run that ends
-/// there says so.
+/// A strain of the paper (|length / rest length - 1| of an edge in DogProblem::sheet_edges) above
+/// this means the sheet visibly stretches or shrinks: paper does not, so a run that ends there
+/// says so.
 constexpr double kStretchedStrain = 0.05;
 
 /// The signed difference angle - target wrapped into (-180, 180] degrees.
