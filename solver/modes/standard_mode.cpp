@@ -143,6 +143,9 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     if (wants_settling()) settle(x, report);
     return report;
   }
+  // The last iteration from a converged folded state: what it falls back on (finish_folded).
+  std::optional<std::pair<Dofs, Eigen::VectorXd>> converged_folded;
+  if (last && converged_ && options_.folding && folded(x)) converged_folded.emplace(x, sqp_->multipliers());
   ladder_failed_ = false;
   if (distance > 0) {
     report = follow(x, goal, distance);
@@ -161,7 +164,29 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   }
   if (converged_ && !last && wants_settling()) settle(x, report);
   if (last && !report.failed) finish(x, report);
+  if (converged_folded && (report.failed || !report.folded)) finish_folded(x, *converged_folded, report);
   return report;
+}
+
+void StandardMode::finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged, StepReport& report) {
+  // The held steps of a last iteration can move a converged folded sheet to where the projection
+  // unfolds it; the converged state projected without them is kept when it stays folded.
+  Dofs y = converged.first;
+  const Eigen::VectorXd lambda = sqp_->multipliers();
+  const double constraint_max = constraint_max_;
+  sqp_->set_multipliers(converged.second);
+  StepReport again;
+  again.converged = true;
+  finish(y, again);
+  report.work += again.work;
+  if (!again.folded) {
+    sqp_->set_multipliers(lambda);
+    constraint_max_ = constraint_max;
+    return;
+  }
+  x = y;
+  again.work = report.work;
+  report = std::move(again);
 }
 
 bool StandardMode::wants_settling() const {

@@ -49,6 +49,7 @@
 // target that moves again drops a settling in progress.
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "solver/modes/hard_constraints.h"
 #include "solver/modes/mode.h"
@@ -104,6 +105,10 @@ class StandardMode : public Mode {
   /// with a raised fold bias while that leaves a fold site unfolded; report.folded says whether x
   /// ends folded.
   void finish(Dofs& x, StepReport& report);
+  /// After a last iteration that ended unfolded or failed from a converged folded state: that
+  /// state (positions and multipliers) finished without the iteration's steps, kept when it ends
+  /// folded.
+  void finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged, StepReport& report);
   /// |c|_inf of x with the iterations' constraint scale (finish() runs with the final one).
   double iteration_residual(const Dofs& x);
   /// x projected to the final constraint tolerance (at the stitching rows' final scale).
