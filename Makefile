@@ -5,7 +5,9 @@ BUILD    ?= build
 FUZZ_BUILD ?= build-fuzz
 JOBS     ?= 2
 FUZZ_SECONDS ?= 60
-XVFB     = xvfb-run -a -s "-screen 0 1920x1080x24"
+# -noreset: Xvfb otherwise resets when its last client leaves, and a test that connects meanwhile
+# (the studio tests start one after another) fails with "could not connect to display".
+XVFB     = xvfb-run -a -s "-screen 0 1920x1080x24 -noreset"
 SDOG     = $(BUILD)/app/sdog
 DEMO_PATTERN = datasets/four_corner_arcs.svg
 DEMO_RES = 41x41
