@@ -104,18 +104,43 @@ std::optional<GridEdgePoint> shared_vertex(const PatchLayout::CreasePoint& a, co
   return std::nullopt;
 }
 
-// The layout's crease points and curves with every pair that passes close to a grid vertex
-// replaced by one point on it (build_dog_mesh): the vertex points are appended to `points`,
-// `taken` marks the points they replace, and the curves refer to the vertex points instead.
-void take_pairs_onto_vertices(const PatchLayout& layout, const DogMesh& mesh, int coarse_step,
-                              std::vector<PatchLayout::CreasePoint>& points, std::vector<PatchLayout::Curve>& curves,
-                              std::vector<bool>& taken) {
+// The layout's crease points and curves with every run of points at one place on a grid edge
+// taken as one of them, and every pair that passes close to a grid vertex replaced by one point on
+// it (build_dog_mesh): the vertex points are appended to `points`, `taken` marks the points left
+// out, and the curves refer to the points that stay.
+void merge_close_points(const PatchLayout& layout, const DogMesh& mesh, int coarse_step,
+                        std::vector<PatchLayout::CreasePoint>& points, std::vector<PatchLayout::Curve>& curves,
+                        std::vector<bool>& taken) {
   points = layout.points;
   curves = layout.curves;
   taken.assign(points.size(), false);
   std::vector<int> uses(points.size(), 0);
   for (const auto& c : curves)
     for (int p : c.points) ++uses[p];
+  // A crease that touches a grid line crosses it back and forth at one place: a run of
+  // consecutive points on one grid edge, between the same two patches and within
+  // kVertexCreaseDistance of the run's first, has nearly equal stitching rows that restoration
+  // cannot meet together once the sheet bends (the gaps stall equal and opposite). The run is
+  // taken as its middle point.
+  auto same_place = [&](int a, int b) {
+    const auto &p = points[a], &q = points[b];
+    return uses[a] == 1 && uses[b] == 1 && !p.edge.on_vertex() && p.patches.size() == 2 && p.patches == q.patches &&
+           p.edge.i0 == q.edge.i0 && p.edge.j0 == q.edge.j0 && p.edge.i1 == q.edge.i1 && p.edge.j1 == q.edge.j1 &&
+           (mesh.to_mesh(p.position) - mesh.to_mesh(q.position)).norm() < kVertexCreaseDistance;
+  };
+  for (auto& c : curves) {
+    std::vector<int> out;
+    for (size_t k = 0; k < c.points.size();) {
+      size_t m = k + 1;
+      while (m < c.points.size() && same_place(c.points[k], c.points[m])) ++m;
+      const size_t middle = k + (m - k) / 2;
+      for (size_t r = k; r < m; ++r)
+        if (r != middle) taken[c.points[r]] = true;
+      out.push_back(c.points[middle]);
+      k = m;
+    }
+    c.points = std::move(out);
+  }
   // The vertex point replacing a and b, or -1 when they stay.
   auto vertex_point = [&](int a, int b) {
     if (uses[a] != 1 || uses[b] != 1 || taken[a] || taken[b]) return -1;
@@ -153,7 +178,7 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh, 
   std::vector<PatchLayout::CreasePoint> points;
   std::vector<PatchLayout::Curve> curves;
   std::vector<bool> taken;
-  take_pairs_onto_vertices(layout, mesh, coarse_step, points, curves, taken);
+  merge_close_points(layout, mesh, coarse_step, points, curves, taken);
   std::vector<int> index(points.size(), -1), used;  // the points kept, renumbered
   for (size_t k = 0; k < points.size(); ++k)
     if (!taken[k]) {

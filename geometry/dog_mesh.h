@@ -106,7 +106,10 @@ constexpr double kVertexCreaseDistance = 0.02;
 /// vertices stay as the layout made them. `coarse_step` 2 marks the fine mesh of nested grids
 /// (coarse line k is line 2k): there a pair is taken onto a vertex only where the coarse mesh does
 /// the same (a coarse vertex) or has neither point (both lines fine-only), so that coarse crease
-/// points stay fine ones.
+/// points stay fine ones. A run of consecutive crease points on one grid edge, between the same two
+/// patches and within kVertexCreaseDistance of the first (a crease that touches a grid line), has
+/// nearly equal stitching rows that stall restoration in the same way; it is taken as its middle
+/// point.
 /// Throws std::logic_error if a crease point ends up with fewer than two copies.
 DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_origin, double scale,
                        int coarse_step = 1);

@@ -178,6 +178,32 @@ TEST(DogMesh, TwoCreasePointsOnOneGridEdgeAreBothKept) {
   EXPECT_EQ(ts.size(), 2u);
 }
 
+// The crease points of a mesh at `sheet` within `radius` sheet units.
+std::vector<const CreaseStitching::Point*> points_near(const DogMesh& mesh, const Eigen::Vector2d& sheet,
+                                                       double radius) {
+  std::vector<const CreaseStitching::Point*> near;
+  for (const auto& p : mesh.stitching.points)
+    if ((p.flat / mesh.scale + mesh.sheet_origin - sheet).norm() < radius) near.push_back(&p);
+  return near;
+}
+
+TEST(DogMesh, CreaseTouchingAGridLineIsStitchedOnceWhereItTouches) {
+  // Lines at 0, 25, 50, ...: the crease dips 0.001 below y = 50 between x = 37.45 and 37.55, so
+  // it crosses the grid edge (25,50)-(50,50) twice, 0.1 sheet units (0.004 mesh units) apart, as a
+  // flattened arc does where it touches a grid line.
+  const DogModel m = build_dog_model(
+      test::rectangle_pattern(100, 100, {{{0, 60}, {30, 52}, {37.45, 49.999}, {37.55, 49.999}, {45, 52}, {100, 60}}}),
+      {5, 5});
+  for (const DogMesh* mesh : {&m.fine, &m.coarse}) {
+    const auto near = points_near(*mesh, {37.5, 50}, 1);
+    ASSERT_EQ(near.size(), 1u) << (mesh == &m.fine ? "fine" : "coarse");
+    EXPECT_EQ(near[0]->copies.size(), 2u);
+  }
+  // Both meshes keep the same one of the two crossings.
+  EXPECT_EQ(points_near(m.fine, {37.5, 50}, 1)[0]->flat / m.fine.scale + m.fine.sheet_origin,
+            points_near(m.coarse, {37.5, 50}, 1)[0]->flat / m.coarse.scale + m.coarse.sheet_origin);
+}
+
 TEST(DogMesh, PatchesAreNumberedByTheirFirstCellInRowMajorOrder) {
   const DogModel m = build_dog_model(
       test::rectangle_pattern(100, 100,
