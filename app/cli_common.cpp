@@ -6,6 +6,7 @@
 #include "app/commands.h"
 
 #include "base/errors.h"
+#include "geometry/input/pattern_file.h"
 
 namespace sdog::cli {
 

@@ -18,7 +18,7 @@
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "base/statistics.h"
-#include "geometry/fold_tips.h"
+#include "geometry/pattern/fold_tips.h"
 #include "solver/config/run_config_json.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/crease_settings.h"

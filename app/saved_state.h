@@ -9,7 +9,7 @@
 
 #include "app/cli_common.h"
 #include "app/saved_run.h"
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/session/workspace.h"
 #include "ui/vis/saved_frames.h"
 #include "ui/vis/scene_state.h"

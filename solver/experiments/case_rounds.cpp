@@ -7,6 +7,7 @@
 
 #include "base/errors.h"
 #include "base/statistics.h"
+#include "geometry/input/pattern_file.h"
 #include "solver/run/run_setup.h"
 #include "solver/run/run_totals.h"
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "base/stopwatch.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/trimmed_surface.h"
 
 namespace sdog {
 

@@ -1,8 +1,8 @@
 #pragma once
-// What the trimmed surface (geometry/trimmed_surface.h) costs a run that draws or writes it: its
+// What the trimmed surface (geometry/surface/trimmed_surface.h) costs a run that draws or writes it: its
 // topology, built once per mesh, and each new state (positions, normals and the carried-over
 // arrays of a frame), for `sdog bench --trim`.
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 
 namespace sdog {
 

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/multilevel/prolongation.h"
 #include "solver/problem/scenario.h"

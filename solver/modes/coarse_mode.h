@@ -17,7 +17,7 @@
 // The coarse mesh and the carrying of position targets to it: coarse_level.h.
 #include <memory>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/coarse_level.h"
 #include "solver/multilevel/curve_interpolation.h"
 #include "solver/problem/dog_problem.h"

@@ -2,7 +2,7 @@
 // Solver modes made by kind (mode_kind.h) with their options (mode_options.h).
 #include <memory>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
 #include "solver/problem/dog_problem.h"

@@ -32,7 +32,7 @@
 // to the standard mode's (docs/design/modes.md).
 #include <memory>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/coarse_level.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"

@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 
 namespace sdog {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

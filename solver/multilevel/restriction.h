@@ -10,7 +10,7 @@
 // the fold, and its curvature, as the fine mesh does (an affine fit to link vertices alone put
 // coarse fold sites on the wrong side). Affine motions of the flat sheet are restricted exactly.
 // The result is close to a DOG, not exactly one (CoarseLevel restores the constraints).
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

@@ -5,7 +5,7 @@
 // against each other's old position at once.
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 
 namespace sdog {
 

@@ -5,7 +5,7 @@
 // standard solver. Measured against the Ceres patch problem (patch_solver.h) in the README.
 #include <memory>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/patches/patch_term.h"
 #include "solver/sqp/sqp_solver.h"

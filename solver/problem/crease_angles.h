@@ -16,7 +16,7 @@ struct CreaseFold {
   int sites = 0;           ///< fold sites with an angle target
   int bent = 0;            ///< of them bent by more than kBentDegrees
   int against = 0;         ///< of the bent ones, bent against their target's sign
-  int against_near_tip = 0;  ///< of those, within kFoldTipRadius of a fold tip (geometry/fold_tips.h)
+  int against_near_tip = 0;  ///< of those, within kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h)
   double target = 0;       ///< median target angle (degrees)
   double angle = 0;        ///< median angle reached (degrees)
   double median_error = 0;  ///< median |angle - target| (degrees)

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "base/statistics.h"
-#include "geometry/fold_tips.h"
+#include "geometry/pattern/fold_tips.h"
 
 namespace sdog {
 namespace {

@@ -23,7 +23,7 @@ double angle_difference(double angle, double target);
 /// The fold angles against the angle targets (problem.angles): of the fold sites with a nonzero
 /// target, how many bend by more than kBentDegrees and how many of those bend the way their target
 /// says; and the median |angle - target| over every site with a target (degrees). Sites within
-/// kFoldTipRadius of a fold tip (geometry/fold_tips.h), where folds fade, are counted apart.
+/// kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h), where folds fade, are counted apart.
 struct AngleAgreement {
   int targeted_sites = 0, bent_sites = 0, bent_as_targeted = 0;
   int tip_sites = 0;    ///< sites with a nonzero target near a fold tip, not in the counts above

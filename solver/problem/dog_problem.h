@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/mesh/quad_topology.h"
 #include "solver/terms/bending.h"
 #include "solver/terms/crease_geometry.h"
 #include "solver/terms/dog_constraints.h"

@@ -10,7 +10,7 @@
 // every patch starts as a plane tilted up, or down, away from its creases).
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

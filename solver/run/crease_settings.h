@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
 
 namespace sdog {

@@ -1,7 +1,7 @@
 #include "solver/run/flatten_scenario.h"
 
 #include "base/errors.h"
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/quad_topology.h"
 #include "base/text_format.h"
 #include "solver/modes/standard_mode.h"
 #include "solver/run/run.h"

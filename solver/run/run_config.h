@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "base/option_table.h"
-#include "geometry/crease_pattern.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "solver/modes/mode_kind.h"
 #include "solver/modes/mode_options.h"
 #include "solver/problem/weights.h"

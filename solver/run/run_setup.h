@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/scenario.h"

@@ -5,7 +5,7 @@
 //   r = 2 (p0 - p_b1) / L_b1 + 2 (p0 - p_b2) / L_b2,
 // with L the rest lengths. For a flat rest state this is |L(x) - L(x0)|^2 of the thesis, a
 // quadratic energy with a constant Hessian.
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/quad_topology.h"
 #include "solver/terms/linear_point_term.h"
 
 namespace sdog {

@@ -3,7 +3,7 @@
 // folding test of the thesis.
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

@@ -7,7 +7,7 @@
 //   bnd3 (1 row):  c = cos(b1, in) - cos(in, b2)         (b1, b2 on the boundary, `in` inside)
 // bnd2 and bnd4 vertices are unconstrained. Value, Jacobian and second derivatives all come
 // from this one definition (the reference mixed a rescaled Jacobian with unscaled values).
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/quad_topology.h"
 #include "solver/terms/cosine.h"
 #include "solver/terms/term.h"
 

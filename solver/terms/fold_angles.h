@@ -1,6 +1,6 @@
 #pragma once
 // The fold angle a state reaches at each fold site, signed as the FOLD format does (and as the
-// drawing's assignments, geometry/fold_conventions.h): positive for a valley (both sides of the
+// drawing's assignments, geometry/input/fold_conventions.h): positive for a valley (both sides of the
 // crease rise towards +z, the side the drawing is seen from), negative for a mountain.
 //
 // At a fold site with crease tangent T (fold_site_tangent), each of the two edge copies gives the

@@ -2,7 +2,7 @@
 // Isometry: one residual per quad edge (i, j), r = |p_i - p_j|^2 - l0^2 with l0 the rest length.
 // Second derivatives: Hessian(r) = 2 [I -I; -I I]; the exact Hessian of r^2 uses y = max(r, 0) so
 // that it stays positive semi-definite when the edge is compressed (as in the reference).
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/quad_topology.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/terms/term.h"
 
 namespace sdog {

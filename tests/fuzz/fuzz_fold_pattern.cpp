@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "geometry/fold_reader.h"
+#include "geometry/input/fold_reader.h"
 #include "tests/fuzz/pattern_fuzzing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -4,7 +4,8 @@
 #include <cstdint>
 #include <string>
 
-#include "geometry/crease_pattern.h"
+#include "geometry/input/svg_pattern.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "tests/fuzz/pattern_fuzzing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

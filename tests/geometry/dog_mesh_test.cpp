@@ -6,7 +6,7 @@
 #include <random>
 #include <set>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "tests/geometry/pattern_builders.h"
 
 namespace sdog {

@@ -1,7 +1,8 @@
 // The mesh must not depend on how finely curves are flattened.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "tests/test_support.h"
 
 namespace sdog {

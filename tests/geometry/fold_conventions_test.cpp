@@ -3,8 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/crease_pattern.h"
-#include "geometry/svg_reader.h"
+#include "geometry/input/svg_pattern.h"
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/input/svg_reader.h"
 
 namespace sdog {
 namespace {

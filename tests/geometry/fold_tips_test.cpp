@@ -1,12 +1,13 @@
-// Fold tips (geometry/fold_tips.h): two creases ending together inside the sheet at an angle.
+// Fold tips (geometry/pattern/fold_tips.h): two creases ending together inside the sheet at an angle.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "geometry/crease_pattern.h"
-#include "geometry/dog_model.h"
-#include "geometry/fold_tips.h"
-#include "geometry/pattern_cleaning.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/fold_tips.h"
+#include "geometry/pattern/pattern_cleaning.h"
 #include "tests/geometry/pattern_builders.h"
 #include "tests/test_support.h"
 

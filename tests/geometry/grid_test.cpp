@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/grid.h"
+#include "geometry/mesh/grid.h"
 
 namespace sdog {
 namespace {

@@ -6,7 +6,8 @@
 #include <filesystem>
 #include <map>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "base/errors.h"
 #include "tests/test_support.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Crease patterns built in code for tests (no SVG involved).
-#include "geometry/crease_pattern.h"
+#include "geometry/pattern/crease_pattern.h"
 
 namespace sdog::test {
 

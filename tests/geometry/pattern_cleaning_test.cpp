@@ -1,8 +1,9 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/patch_layout.h"
-#include "geometry/pattern_cleaning.h"
+#include "geometry/mesh/patch_layout.h"
+#include "geometry/pattern/pattern_cleaning.h"
+#include "geometry/pattern/pattern_faces.h"
 #include "tests/geometry/pattern_builders.h"
 
 namespace sdog {

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "geometry/pattern_cleaning.h"
-#include "geometry/plane_geometry.h"
+#include "geometry/pattern/pattern_cleaning.h"
+#include "geometry/pattern/plane_geometry.h"
 #include "tests/geometry/pattern_builders.h"
 
 namespace sdog {

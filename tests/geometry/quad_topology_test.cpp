@@ -1,9 +1,9 @@
 // Quad topology (quad_topology.h): neighbours and vertex classes.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_mesh.h"
-#include "geometry/dog_model.h"
-#include "geometry/quad_topology.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/mesh/quad_topology.h"
 #include "tests/geometry/pattern_builders.h"
 #include "tests/test_support.h"
 

@@ -1,4 +1,4 @@
-// Tests of the SVG reader (geometry/svg_reader.h) and its internal parsers. Expected values are
+// Tests of the SVG reader (geometry/input/svg_reader.h) and its internal parsers. Expected values are
 // computed independently of the implementation: analytic curves, hand-derived arc centres,
 // hand-composed transforms.
 #include <gtest/gtest.h>
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "base/errors.h"
-#include "geometry/svg_flatten.h"
-#include "geometry/svg_path_data.h"
-#include "geometry/svg_reader.h"
-#include "geometry/svg_style.h"
+#include "geometry/input/internal/svg_flatten.h"
+#include "geometry/input/internal/svg_path_data.h"
+#include "geometry/input/svg_reader.h"
+#include "geometry/input/internal/svg_style.h"
 
 namespace {
 

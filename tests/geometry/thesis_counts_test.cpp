@@ -1,7 +1,8 @@
 // Table 6.1 of the thesis: fine vertex counts and patch counts from the reference crease patterns.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "tests/test_support.h"
 
 namespace sdog {

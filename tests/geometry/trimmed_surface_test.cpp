@@ -1,7 +1,8 @@
 // The trimmed surface: patches clipped at their creases and at the sheet's boundary. Areas of
 // patterns whose patches are known in closed form, seams that close, and the sheet's area on every
 // dataset and reference pattern.
-#include "geometry/trimmed_surface.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/surface/trimmed_surface.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +10,8 @@
 #include <cmath>
 #include <map>
 
-#include "geometry/dog_model.h"
-#include "geometry/plane_geometry.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/plane_geometry.h"
 #include "tests/geometry/pattern_builders.h"
 #include "tests/test_support.h"
 

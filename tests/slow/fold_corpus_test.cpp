@@ -4,13 +4,14 @@
 // unassigned creases together) folds as drawn at two resolutions, two angles and two paces: the
 // run converges within the final tolerance, at least 95% of the fold sites bent by more than
 // 5 degrees bend the way their targets say (away from the v pleat's fold tip, where folds fade:
-// geometry/fold_tips.h), and the median angle error is small.
+// geometry/pattern/fold_tips.h), and the median angle error is small.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/experiments/pace.h"
 #include "tests/test_support.h"
 

@@ -6,7 +6,8 @@
 
 #include <string>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"

@@ -5,7 +5,8 @@
 // lower objective. Reads the pattern from ../shared/reference and skips without it.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/experiments/pace.h"
 #include "solver/run/run_config.h"
 #include "tests/test_support.h"

@@ -4,7 +4,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "base/errors.h"
 #include "solver/modes/admm_mode.h"
 #include "solver/terms/crease_geometry.h"

@@ -6,8 +6,9 @@
 #include <algorithm>
 #include <optional>
 
-#include "geometry/crease_pattern.h"
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/experiments/pace.h"
 #include "solver/session/session.h"
 #include "tests/solver/session_fixture.h"

@@ -3,8 +3,9 @@
 
 #include <cmath>
 
-#include "geometry/dog_model.h"
-#include "geometry/fold_tips.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/fold_tips.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run_setup.h"

@@ -3,7 +3,8 @@
 
 #include <Eigen/Geometry>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/multilevel/curve_interpolation.h"
 #include "tests/test_support.h"
 

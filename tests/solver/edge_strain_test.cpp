@@ -3,7 +3,7 @@
 // and the strain of every edge, the parts of cells beyond the crease included.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run_setup.h"
 #include "tests/geometry/pattern_builders.h"

@@ -5,8 +5,9 @@
 
 #include <filesystem>
 
-#include "geometry/dog_model.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run_config.h"
 #include "tests/solver/run_recorder.h"

@@ -4,7 +4,8 @@
 
 #include <cmath>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/terms/crease_geometry.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/modes/final_projection.h"

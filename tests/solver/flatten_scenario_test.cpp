@@ -2,7 +2,8 @@
 // flattens and an ADMM mode stitches together.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run_setup.h"
 #include "solver/terms/crease_geometry.h"

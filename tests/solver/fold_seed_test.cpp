@@ -1,7 +1,8 @@
 // The fold seed of a start state (fold_seed.h): valleys tilt up, mountains down.
 #include <gtest/gtest.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/fold_seed.h"
 #include "solver/terms/crease_geometry.h"
 #include "tests/test_support.h"

@@ -3,9 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/dog_model.h"
-#include "geometry/fold_reader.h"
-#include "geometry/svg_reader.h"
+#include "geometry/input/svg_pattern.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/input/fold_reader.h"
+#include "geometry/input/svg_reader.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/crease_settings.h"
 #include "solver/run/run_setup.h"

@@ -5,7 +5,8 @@
 
 #include <map>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode_factory.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"

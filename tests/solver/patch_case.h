@@ -5,7 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/scenario.h"
 #include "tests/test_support.h"

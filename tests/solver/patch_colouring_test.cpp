@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <set>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/patches/patch_colouring.h"
 #include "tests/test_support.h"
 

@@ -4,7 +4,8 @@
 
 #include <Eigen/Geometry>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/multilevel/restriction.h"
 #include "tests/test_support.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"

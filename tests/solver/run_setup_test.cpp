@@ -2,7 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/run/run_setup.h"
 #include "tests/test_support.h"
 

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "base/errors.h"
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
 #include "solver/run/run_setup.h"

@@ -5,7 +5,8 @@
 
 #include <cmath>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/fold_seed.h"
 #include "solver/problem/scenario.h"

@@ -1,6 +1,7 @@
 #pragma once
 // The model and configuration of the session and workspace tests.
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
 #include "tests/test_support.h"
 

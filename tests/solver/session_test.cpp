@@ -6,7 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "base/errors.h"
 #include "solver/problem/scenario.h"
 #include "solver/run/run_setup.h"

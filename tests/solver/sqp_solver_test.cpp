@@ -7,7 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/scenario.h"
 #include "solver/sqp/sqp_solver.h"

@@ -5,7 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/modes/standard_mode.h"

@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "base/errors.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"

@@ -7,7 +7,8 @@
 #include <memory>
 #include <random>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/terms/bending.h"
 #include "solver/patches/ceres/ceres_cost.h"
 #include "solver/terms/crease_geometry.h"

@@ -8,7 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/run/run.h"
 #include "solver/modes/subsolvers_mode.h"

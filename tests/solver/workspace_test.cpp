@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/errors.h"
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
 #include "tests/solver/session_fixture.h"

@@ -3,7 +3,8 @@
 // four_corner_arcs.svg at 21x21 at rest (also with the run's constraints), after 40 iterations of the standard mode (corners
 // scenario plus a 60 degree fold of crease 0, so that handles and angle sites show), and after 40
 // iterations of the twolevel mode (a moving coarse mesh for the links).
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
 #include "solver/run/run_setup.h"
 #include "tests/test_support.h"

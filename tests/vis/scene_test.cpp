@@ -17,7 +17,7 @@
 #include <stdexcept>
 
 #include "base/errors.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "solver/problem/diagnostics.h"
 #include "tests/vis/scene_fixture.h"
 #include "ui/vis/camera.h"

@@ -20,7 +20,7 @@
 #include <sstream>
 
 #include "base/errors.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "tests/vis/scene_fixture.h"
 #include "tests/vtk_read_back.h"
 #include "ui/vis/frame_writer.h"

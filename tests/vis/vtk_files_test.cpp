@@ -12,7 +12,8 @@
 #include <filesystem>
 
 #include "base/atomic_output.h"
-#include "geometry/dog_model.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 #include "base/errors.h"
 #include "tests/test_support.h"
 #include "ui/vis/model_files.h"

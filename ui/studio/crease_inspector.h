@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 
 namespace sdog::studio {
 

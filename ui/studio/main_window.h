@@ -224,6 +224,7 @@ class MainWindow : public QMainWindow {
   bool left_start() const;
   void build_menus();
   void build_file_menu();
+  void add_export_actions(QMenu* m);
   void build_edit_menu();
   void build_view_menu();
   void build_crease_menu();

@@ -17,7 +17,7 @@
 #include "ui/studio/screen_picking.h"
 #include "ui/studio/selection_marks.h"
 #include "ui/studio/solver_worker.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/frame_writer.h"
 #include "ui/vis/picture.h"

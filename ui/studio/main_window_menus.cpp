@@ -55,42 +55,8 @@ void MainWindow::build_menus() {
   for (QMenu* menu : menuBar()->findChildren<QMenu*>()) menu->setToolTipsVisible(true);
 }
 
-void MainWindow::build_file_menu() {
-  QMenu* m = menuBar()->addMenu("&File");
-  connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG or FOLD) at a resolution"),
-          &QAction::triggered, this, [this] {
-            if (!settle_unsaved("opening another pattern")) return;
-            const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg *.fold)");
-            if (path.isEmpty()) return;
-            bool ok = false;
-            const QString res = QInputDialog::getText(
-                this, "Resolution", "Grid lines XxY (odd values also build the coarse mesh), or auto (41 along the longer side):", QLineEdit::Normal,
-                resolution_.isEmpty() ? "auto" : resolution_, &ok);
-            if (ok) open_pattern(path, res, QString::fromStdString(mode_));
-          });
-  connect(add_action(m, "Change &resolution...", QKeySequence("Ctrl+R"),
-                     "Mesh the open pattern again at another resolution (odd values for the coarse modes)"),
-          &QAction::triggered, this, [this] {
-            if (!settle_unsaved("meshing the pattern again")) return;
-            bool ok = false;
-            const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY, or auto:", QLineEdit::Normal,
-                                                      resolution_, &ok);
-            if (ok) change_resolution(res);
-          });
-  m->addSeparator();
-  connect(add_action(m, "Open &workspace...", QKeySequence("Ctrl+Shift+O"),
-                     "Open a saved workspace: pattern, resolution, mode, settings, constraints, camera, positions"),
-          &QAction::triggered, this, [this] {
-            if (!settle_unsaved("opening a workspace")) return;
-            const QString path = QFileDialog::getOpenFileName(this, "Open workspace", {}, "Workspaces (*.json)");
-            if (!path.isEmpty()) open_workspace(path);
-          });
-  connect(add_action(m, "&Save workspace...", QKeySequence::Save, "Save the session as a workspace (JSON)"),
-          &QAction::triggered, this, [this] {
-            const QString path = save_path_sink_("Save workspace", "Workspaces (*.json)");
-            if (!path.isEmpty()) save_workspace(path);
-          });
-  m->addSeparator();
+// File > Export screenshot, Export surface and Record frames.
+void MainWindow::add_export_actions(QMenu* m) {
   connect(add_action(m, "Export &screenshot...", QKeySequence("Ctrl+E"),
                      "Render the view to PNG: file, size, transparent background, and the sheet framed to fill "
                      "the picture or the view's camera as it is"),
@@ -136,6 +102,45 @@ void MainWindow::build_file_menu() {
     last_recording_dir_ = dialog.dir();
     start_frames(dialog.dir(), dialog.options(), dialog.frame());
   });
+}
+
+void MainWindow::build_file_menu() {
+  QMenu* m = menuBar()->addMenu("&File");
+  connect(add_action(m, "&Open pattern...", QKeySequence::Open, "Mesh a crease pattern (SVG or FOLD) at a resolution"),
+          &QAction::triggered, this, [this] {
+            if (!settle_unsaved("opening another pattern")) return;
+            const QString path = QFileDialog::getOpenFileName(this, "Open crease pattern", {}, "Crease patterns (*.svg *.fold)");
+            if (path.isEmpty()) return;
+            bool ok = false;
+            const QString res = QInputDialog::getText(
+                this, "Resolution", "Grid lines XxY (odd values also build the coarse mesh), or auto (41 along the longer side):", QLineEdit::Normal,
+                resolution_.isEmpty() ? "auto" : resolution_, &ok);
+            if (ok) open_pattern(path, res, QString::fromStdString(mode_));
+          });
+  connect(add_action(m, "Change &resolution...", QKeySequence("Ctrl+R"),
+                     "Mesh the open pattern again at another resolution (odd values for the coarse modes)"),
+          &QAction::triggered, this, [this] {
+            if (!settle_unsaved("meshing the pattern again")) return;
+            bool ok = false;
+            const QString res = QInputDialog::getText(this, "Resolution", "Grid lines XxY, or auto:", QLineEdit::Normal,
+                                                      resolution_, &ok);
+            if (ok) change_resolution(res);
+          });
+  m->addSeparator();
+  connect(add_action(m, "Open &workspace...", QKeySequence("Ctrl+Shift+O"),
+                     "Open a saved workspace: pattern, resolution, mode, settings, constraints, camera, positions"),
+          &QAction::triggered, this, [this] {
+            if (!settle_unsaved("opening a workspace")) return;
+            const QString path = QFileDialog::getOpenFileName(this, "Open workspace", {}, "Workspaces (*.json)");
+            if (!path.isEmpty()) open_workspace(path);
+          });
+  connect(add_action(m, "&Save workspace...", QKeySequence::Save, "Save the session as a workspace (JSON)"),
+          &QAction::triggered, this, [this] {
+            const QString path = save_path_sink_("Save workspace", "Workspaces (*.json)");
+            if (!path.isEmpty()) save_workspace(path);
+          });
+  m->addSeparator();
+  add_export_actions(m);
   m->addSeparator();
   connect(add_action(m, "&Quit", QKeySequence::Quit, "Close the studio"), &QAction::triggered, this, &QWidget::close);
 }

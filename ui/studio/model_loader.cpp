@@ -1,6 +1,7 @@
 #include "ui/studio/model_loader.h"
 
-#include "geometry/crease_pattern.h"
+#include "geometry/input/pattern_file.h"
+#include "geometry/pattern/crease_pattern.h"
 
 namespace sdog::studio {
 

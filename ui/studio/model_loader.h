@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 
 namespace sdog::studio {
 

@@ -53,6 +53,24 @@ void ObjectiveChart::clear() {
   update();
 }
 
+void ObjectiveChart::draw_marks(QPainter& painter, const QRectF& area, const QRectF& top,
+                                const QRectF& bottom, const std::function<double(int)>& x_of) const {
+  // Marks: a dotted line through both boxes, the label at its top (staggered when they crowd).
+  double last_label_end = -1e9;
+  int row = 0;
+  for (const Mark& m : marks_) {
+    const double x = x_of(m.iteration);
+    if (x < area.left() - 0.5 || x > area.right() + 0.5) continue;
+    painter.setPen(QPen(QColor(90, 90, 90), 1.0, Qt::DotLine));
+    painter.drawLine(QPointF(x, top.top()), QPointF(x, bottom.bottom()));
+    row = x < last_label_end ? row + 1 : 0;
+    const double text_width = painter.fontMetrics().horizontalAdvance(m.label);
+    painter.setPen(QColor(60, 60, 60));
+    painter.drawText(QPointF(std::min(x + 3, area.right() - text_width), top.top() + 12 + 13 * (row % 3)), m.label);
+    last_label_end = x + 3 + text_width;
+  }
+}
+
 void ObjectiveChart::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.fillRect(rect(), Qt::white);
@@ -113,20 +131,7 @@ void ObjectiveChart::paintEvent(QPaintEvent*) {
     painter.setPen(series_pen(s).color());
     painter.drawText(QPointF(area.right() + 24, y), s < kTermCount ? term_name(s) : "dog residual");
   }
-  // Marks: a dotted line through both boxes, the label at its top (staggered when they crowd).
-  double last_label_end = -1e9;
-  int row = 0;
-  for (const Mark& m : marks_) {
-    const double x = x_of(m.iteration);
-    if (x < area.left() - 0.5 || x > area.right() + 0.5) continue;
-    painter.setPen(QPen(QColor(90, 90, 90), 1.0, Qt::DotLine));
-    painter.drawLine(QPointF(x, top.top()), QPointF(x, bottom.bottom()));
-    row = x < last_label_end ? row + 1 : 0;
-    const double text_width = painter.fontMetrics().horizontalAdvance(m.label);
-    painter.setPen(QColor(60, 60, 60));
-    painter.drawText(QPointF(std::min(x + 3, area.right() - text_width), top.top() + 12 + 13 * (row % 3)), m.label);
-    last_label_end = x + 3 + text_width;
-  }
+  draw_marks(painter, area, top, bottom, x_of);
   painter.setPen(Qt::black);
   if (!used.empty()) {
     painter.drawText(QPointF(margin, top.top() + 10), QString::number(std::ceil(hi)));

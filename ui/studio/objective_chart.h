@@ -7,8 +7,12 @@
 #include <QWidget>
 #include <array>
 #include <deque>
+#include <functional>
 
 #include "solver/run/run.h"
+
+class QPainter;
+class QRectF;
 
 namespace sdog::studio {
 
@@ -34,6 +38,9 @@ class ObjectiveChart : public QWidget {
   void paintEvent(QPaintEvent* event) override;
 
  private:
+  /// Marks: a dotted line through both boxes, the label at its top (staggered when they crowd).
+  void draw_marks(QPainter& painter, const QRectF& area, const QRectF& top, const QRectF& bottom,
+                  const std::function<double(int)>& x_of) const;
   struct Point {
     int iteration;
     std::array<double, kTermCount + 1> log_values;  // the terms, then the DOG residual

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/picture.h"
 #include "ui/vis/pvd_collection.h"
 #include "ui/vis/scene_state.h"

@@ -27,19 +27,8 @@ QString percent_text(int percent) { return QString::number(percent) + "%"; }
 
 }  // namespace
 
-SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent) : QWidget(parent) {
-  auto* layout = new QVBoxLayout(this);
-
-  auto* buttons = new QHBoxLayout;
-  for (QAction* action : controls) {
-    auto* b = new QToolButton;
-    b->setDefaultAction(action);
-    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    buttons->addWidget(b);
-  }
-  buttons->addStretch(1);
-  layout->addLayout(buttons);
-
+// The mode and scenario choices (with the button that reads a run configuration) and the fold slider.
+QFormLayout* SolverPanel::build_choices(QPushButton* from_file) {
   auto* choices = new QFormLayout;
   mode_ = new QComboBox;
   for (const std::string& name : mode_names()) mode_->addItem(QString::fromStdString(name));
@@ -50,9 +39,6 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
   for (const std::string& name : scenario_names()) scenario_->addItem(QString::fromStdString(name));
   scenario_->setToolTip("The base scenario's targets (a new scenario starts the session again)");
   scenario_row->addWidget(scenario_, 1);
-  auto* from_file = new QPushButton("From file...");
-  from_file->setToolTip("Scenario, weights, tolerances and constraints from a run configuration (JSON, as "
-                        "sdog run --config reads it)");
   scenario_row->addWidget(from_file);
   choices->addRow("scenario", scenario_row);
   auto* fold_row = new QHBoxLayout;
@@ -69,7 +55,26 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
   fold_pause_ = new QTimer(this);
   fold_pause_->setSingleShot(true);
   fold_pause_->setInterval(kFoldSliderPause);
-  layout->addLayout(choices);
+  return choices;
+}
+
+SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+
+  auto* buttons = new QHBoxLayout;
+  for (QAction* action : controls) {
+    auto* b = new QToolButton;
+    b->setDefaultAction(action);
+    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    buttons->addWidget(b);
+  }
+  buttons->addStretch(1);
+  layout->addLayout(buttons);
+
+  auto* from_file = new QPushButton("From file...");
+  from_file->setToolTip("Scenario, weights, tolerances and constraints from a run configuration (JSON, as "
+                        "sdog run --config reads it)");
+  layout->addLayout(build_choices(from_file));
 
   form_ = new SolverSettingsForm(RunConfig{});
   auto* scroll = new QScrollArea;

@@ -12,6 +12,7 @@
 
 class QAction;
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -46,6 +47,7 @@ class SolverPanel : public QWidget {
   void apply_wanted(const sdog::RunConfig& config);
 
  private:
+  QFormLayout* build_choices(QPushButton* from_file);
   /// Apply and Revert are enabled while the form holds edits not applied.
   void set_edited(bool edited);
   QComboBox* mode_;

@@ -3,7 +3,7 @@
 // mesh (the fine/coarse map), position and residuals in the shown state.
 #include <QString>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "ui/vis/scene_state.h"
 
 namespace sdog::studio {

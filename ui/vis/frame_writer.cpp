@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "geometry/mesh_arrays.h"
+#include "geometry/surface/mesh_arrays.h"
 #include "solver/problem/diagnostics.h"
 #include "ui/vis/vtk_meshes.h"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "base/atomic_output.h"
-#include "geometry/dog_model.h"
-#include "geometry/mesh_arrays.h"
+#include "geometry/mesh/dog_model.h"
+#include "geometry/surface/mesh_arrays.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
 #include "ui/vis/surface_series.h"

@@ -24,6 +24,36 @@ vtkSmartPointer<vtkCellArray> vertex_cells(vtkIdType n) {
   return verts;
 }
 
+// The colours of the vertex types (one colour for all without types), as 8-bit RGB.
+vtkSmartPointer<vtkUnsignedCharArray> vertex_type_colors(const DogMesh& mesh,
+                                                         const std::vector<VertexType>* types) {
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("vertex_type_color");
+  rgb->SetNumberOfComponents(3);
+  for (int v = 0; v < mesh.vertex_count(); ++v) {
+    const Rgb c = types ? vertex_type_color((*types)[v]) : kUntypedVertexColor;
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+  }
+  return rgb;
+}
+
+// Every quad edge once, as a line between two of the mesh's vertices.
+vtkSmartPointer<vtkCellArray> quad_edge_lines(const DogMesh& mesh) {
+  std::set<std::pair<vtkIdType, vtkIdType>> edges;
+  for (int q = 0; q < mesh.quad_count(); ++q)
+    for (int k = 0; k < 4; ++k) {
+      const vtkIdType a = mesh.F(q, k), b = mesh.F(q, (k + 1) % 4);
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  lines->AllocateExact(static_cast<vtkIdType>(edges.size()), 2 * static_cast<vtkIdType>(edges.size()));
+  for (const auto& [a, b] : edges) {
+    const vtkIdType ids[2] = {a, b};
+    lines->InsertNextCell(2, ids);
+  }
+  return lines;
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& color) {
@@ -83,36 +113,15 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   vertices_poly_ = vtkSmartPointer<vtkPolyData>::New();
   vertices_poly_->SetPoints(points_);
   vertices_poly_->SetVerts(vertex_cells(mesh.vertex_count()));
-  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  rgb->SetName("vertex_type_color");
-  rgb->SetNumberOfComponents(3);
-  for (int v = 0; v < mesh.vertex_count(); ++v) {
-    const Rgb c = types ? vertex_type_color((*types)[v]) : kUntypedVertexColor;
-    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
-  }
-  vertices_poly_->GetPointData()->SetScalars(rgb);
+  vertices_poly_->GetPointData()->SetScalars(vertex_type_colors(mesh, types));
   vertex_actor_ = flat_actor(vertices_poly_, {0.4, 0.4, 0.4});
   vertex_actor_->GetProperty()->RenderPointsAsSpheresOn();
 
   // The quad edges over the trimmed surface: each edge once, on the grid's points.
-  {
-    std::set<std::pair<vtkIdType, vtkIdType>> edges;
-    for (int q = 0; q < mesh.quad_count(); ++q)
-      for (int k = 0; k < 4; ++k) {
-        const vtkIdType a = mesh.F(q, k), b = mesh.F(q, (k + 1) % 4);
-        edges.insert({std::min(a, b), std::max(a, b)});
-      }
-    auto lines = vtkSmartPointer<vtkCellArray>::New();
-    lines->AllocateExact(static_cast<vtkIdType>(edges.size()), 2 * static_cast<vtkIdType>(edges.size()));
-    for (const auto& [a, b] : edges) {
-      const vtkIdType ids[2] = {a, b};
-      lines->InsertNextCell(2, ids);
-    }
-    quad_edges_ = vtkSmartPointer<vtkPolyData>::New();
-    quad_edges_->SetPoints(points_);
-    quad_edges_->SetLines(lines);
-    quad_edge_actor_ = flat_actor(quad_edges_, kEdgeColor);
-  }
+  quad_edges_ = vtkSmartPointer<vtkPolyData>::New();
+  quad_edges_->SetPoints(points_);
+  quad_edges_->SetLines(quad_edge_lines(mesh));
+  quad_edge_actor_ = flat_actor(quad_edges_, kEdgeColor);
 
   // Crease lines and crease points share the crease points' coordinates.
   crease_point_coords_ = vtkSmartPointer<vtkPoints>::New();

@@ -3,7 +3,7 @@
 // dots (vertex types), its crease polylines and crease points. Positions change in place
 // (set_positions), so the actors live as long as the view.
 //
-// The surface is the trimmed surface (geometry/trimmed_surface.h: each patch clipped at its
+// The surface is the trimmed surface (geometry/surface/trimmed_surface.h: each patch clipped at its
 // creases, smooth shaded) or, as the debugging view of the DOG itself, the full cells: every quad
 // whole, overhanging its patch's creases. The quad grid holds the arrays that colour the surface;
 // set_point_array and set_cell_array carry them over to the trimmed surface. With the trimmed
@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
-#include "geometry/fine_coarse_map.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/mesh/fine_coarse_map.h"
+#include "geometry/surface/trimmed_surface.h"
 
 namespace sdog::vis {
 

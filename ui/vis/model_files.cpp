@@ -1,7 +1,7 @@
 #include <limits>
 #include "ui/vis/model_files.h"
 
-#include "geometry/mesh_arrays.h"
+#include "geometry/surface/mesh_arrays.h"
 #include "ui/vis/vtk_meshes.h"
 
 namespace sdog::vis {

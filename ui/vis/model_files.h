@@ -9,7 +9,7 @@
 #include <string>
 
 #include "base/atomic_output.h"
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 
 namespace sdog::vis {
 

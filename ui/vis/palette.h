@@ -2,8 +2,8 @@
 // Colours shared by every picture (the thesis's conventions for the fine/coarse map).
 #include <array>
 
-#include "geometry/crease_pattern.h"
-#include "geometry/fine_coarse_map.h"
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/mesh/fine_coarse_map.h"
 
 namespace sdog::vis {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/offscreen.h"

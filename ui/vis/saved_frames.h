@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 
 namespace sdog::vis {
 

@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/legends.h"

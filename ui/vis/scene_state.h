@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_model.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/diagnostics.h"
 #include "solver/problem/scenario.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "geometry/fine_coarse_map.h"
+#include "geometry/mesh/fine_coarse_map.h"
 #include "ui/vis/color_maps.h"
 #include "ui/vis/palette.h"
 #include "ui/vis/scene_state.h"

@@ -5,8 +5,8 @@
 #include <array>
 #include <vector>
 
-#include "geometry/mesh_arrays.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/mesh_arrays.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/layers.h"
 
 namespace sdog::vis {

@@ -1,5 +1,5 @@
 #pragma once
-// The trimmed surface (geometry/trimmed_surface.h) as files for other programs (Blender, MeshLab,
+// The trimmed surface (geometry/surface/trimmed_surface.h) as files for other programs (Blender, MeshLab,
 // ParaView), in sheet units:
 // - OBJ (Wavefront, text): `v` positions, `vn` normals, `f a//a b//b c//c` triangles, through VTK's
 //   vtkOBJWriter (full double precision);
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
-#include "geometry/mesh_arrays.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/surface/mesh_arrays.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/layers.h"
 
 namespace sdog::vis {

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "base/atomic_output.h"
-#include "geometry/dog_mesh.h"
-#include "geometry/mesh_arrays.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/surface/mesh_arrays.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/pvd_collection.h"
 #include "ui/vis/surface_files.h"

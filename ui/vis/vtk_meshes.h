@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh_arrays.h"
-#include "geometry/trimmed_surface.h"
+#include "geometry/surface/mesh_arrays.h"
+#include "geometry/surface/trimmed_surface.h"
 
 namespace sdog::vis {
 
@@ -20,7 +20,7 @@ using Polyline3 = std::vector<Eigen::Vector3d>;
 vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
                                                const MeshArrays& arrays);
 
-/// The trimmed surface (geometry/trimmed_surface.h) as triangles with its normals ("Normals", the
+/// The trimmed surface (geometry/surface/trimmed_surface.h) as triangles with its normals ("Normals", the
 /// point normals for smooth shading) and the given arrays (trimmed_arrays: one value per surface
 /// vertex and per triangle).
 vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays);

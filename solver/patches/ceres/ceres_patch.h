@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/patches/ceres/ceres_patch_options.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/patches/patch_term.h"

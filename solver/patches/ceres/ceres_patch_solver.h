@@ -21,7 +21,7 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/dog_mesh.h"
+#include "geometry/mesh/dog_mesh.h"
 #include "solver/patches/ceres/ceres_cost.h"
 #include "solver/terms/dog_constraints.h"
 #include "solver/patches/patch_stepper.h"

@@ -1,0 +1,47 @@
+#pragma once
+// From a crease pattern and a resolution to the fine DOG, its coarse twin and the map between
+// them: the whole geometry pipeline in one call.
+#include <optional>
+
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/mesh/dog_mesh.h"
+#include "geometry/mesh/fine_coarse_map.h"
+#include "geometry/mesh/grid.h"
+#include "geometry/pattern/pattern_cleaning.h"
+#include "geometry/mesh/quad_topology.h"
+
+namespace sdog {
+
+struct MeshOptions {
+  CleaningOptions cleaning;
+  bool build_coarse = true;  ///< also build the coarse DOG and the map (needs odd resolutions)
+};
+
+struct DogModel {
+  CreasePattern pattern;  ///< as drawn
+  CleanPattern clean;     ///< after cleaning
+  int expected_patches = 0;
+  Resolution fine_res;
+  DogMesh fine;
+  QuadTopology fine_topology;
+  std::vector<Polyline2> fine_boundary;  ///< snapped sheet boundary, mesh units
+  bool has_coarse = false;
+  Resolution coarse_res;
+  DogMesh coarse;
+  QuadTopology coarse_topology;
+  int coarse_cover_cells = 0;  ///< coarse cells added so that coarse patches cover fine ones
+  FineCoarseMap map;
+};
+
+/// Cleans the pattern, lays out the grid (nested for odd resolutions), builds the meshes, their
+/// topology, the stitching and the map. Throws UsageError for resolutions that cannot work
+/// (range, parity, too low for the pattern) and InputError for patterns that cannot be meshed.
+DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
+                         const MeshOptions& options = {});
+
+/// What a user of the model should know: the warnings of reading and cleaning the pattern, then
+/// the grid's (cell_shape_warning) and the creases that cross no grid edge (no fold site), one
+/// line each.
+std::vector<std::string> model_warnings(const DogModel& model);
+
+}  // namespace sdog

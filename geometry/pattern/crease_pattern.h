@@ -1,0 +1,53 @@
+#pragma once
+// A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves with their
+// fold assignments, in sheet units (y up). The readers of geometry/input/ build it from SVG drawings
+// and FOLD files (geometry/input/pattern_file.h loads either).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/pattern/plane_geometry.h"
+
+namespace sdog {
+
+/// How a crease folds, as the drawing says (the FOLD format's M, V, F and U).
+enum class Fold { kUnassigned, kMountain, kValley, kFlat };
+
+/// "unassigned", "mountain", "valley", "flat".
+const char* fold_name(Fold fold);
+/// The Fold named by fold_name, if any.
+std::optional<Fold> find_fold(const std::string& name);
+/// +1 valley, -1 mountain, 0 flat or unassigned: the sign of the fold angle (FOLD's convention).
+double fold_sign(Fold fold);
+
+struct Crease {
+  Polyline2 points;  ///< closed creases do not repeat the first point
+  bool closed = false;
+  Fold fold = Fold::kUnassigned;
+  /// The fold angle the drawing gives, in degrees, 0 to 180 (its direction is `fold`'s); unset
+  /// when the drawing gives none.
+  std::optional<double> angle;
+  std::string id;      ///< the drawn element's id (SVG: its id attribute; FOLD: "edge N" of its first edge), or empty
+  std::string origin;  ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
+  /// Same assignment and angle: creases that may be joined into one.
+  bool folds_like(const Crease& other) const { return fold == other.fold && angle == other.angle; }
+};
+
+struct Sheet {
+  Polyline2 outer;               ///< counter-clockwise, first point not repeated
+  std::vector<Polyline2> holes;  ///< clockwise, first point not repeated
+  Box2 bbox;                     ///< bounding box of the outer boundary
+  bool from_viewbox = false;     ///< no black curve: the sheet is the viewBox rectangle
+};
+
+struct CreasePattern {
+  std::string source;  ///< file name, for messages
+  Sheet sheet;
+  std::vector<Crease> creases;  ///< drawing order
+  std::vector<std::string> warnings;  ///< what reading left out, one line each
+  /// L = max(width, height) of the sheet: the length all tolerances are relative to.
+  double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
+};
+
+}  // namespace sdog

@@ -1,0 +1,55 @@
+#pragma once
+// Pattern cleaning: makes a drawn crease pattern exact enough to mesh. Tolerances are fractions of
+// L = max(sheet width, height); the defaults are those of the reference implementation.
+//
+//  0. Crease segments drawn along the sheet boundary or along an earlier crease (within 1e-6 L)
+//     are removed, with a warning; the crease is split where they were.
+//  1. Crease ends closer than merge_tol = L/100 are merged (cluster mean); two crease ends that
+//     meet alone in the sheet's interior are joined into one crease.
+//  2. Creases are clipped to the sheet: parts outside (or in holes) are dropped, and the points
+//     where a crease leaves the sheet become crease ends, inserted into the boundary as vertices.
+//  3. Crossings and contacts between creases become junctions: crossings closer than merge_tol
+//     (and crease ends that close) merge into one junction at their mean, and every crease through
+//     it is rerouted through that exact point.
+//  4. A crease end that is still free snaps, within snap_tol = L/50, to the nearest crease vertex
+//     (junction or boundary end of another crease), else onto the boundary, else onto another
+//     crease (a T junction). Otherwise the pattern is rejected.
+//  5. Junction x and y coordinates closer than snap_tol are aligned (to the boundary end's value
+//     when one is in the group, else to the mean), so the grid does not get needlessly thin rows.
+// After cleaning, creases meet each other and the boundary only at shared polyline vertices.
+#include <string>
+#include <vector>
+
+#include "geometry/pattern/crease_pattern.h"
+
+namespace sdog {
+
+struct CleaningOptions {
+  double merge_fraction = 0.01;  ///< L/100: merging crease ends and nearby crossings
+  double snap_fraction = 0.02;   ///< L/50: snapping free ends, aligning junction coordinates
+  /// Empty when valid, else a message naming the bad field.
+  std::string validate() const;
+};
+
+struct CleanPattern {
+  std::string source;
+  Sheet sheet;                  ///< crease ends on the boundary are boundary vertices
+  std::vector<Crease> creases;  ///< cleaned creases (a crease cut by a hole becomes several)
+  std::vector<Eigen::Vector2d> junctions;  ///< interior points where creases meet or cross
+  /// Points that must be grid vertices: junctions, and crease ends on parts of the boundary that
+  /// are not on the sheet's bounding box (those lie on a grid line already).
+  std::vector<Eigen::Vector2d> pins;
+  std::vector<std::string> changes;   ///< what cleaning changed, one line each
+  /// What reading and cleaning dropped or merged from the drawing, one line each: facet lines,
+  /// creases drawn along the boundary or twice.
+  std::vector<std::string> warnings;
+  double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
+};
+
+/// Cleans the pattern (see above). Throws InputError for a crease that ends inside the sheet away
+/// from everything ("crease 3 (FILE:12: <path>) ends at (12.5, 40.1), 9.8 units from the sheet
+/// boundary and 20 from the nearest crease; creases must end on the boundary or on another
+/// crease"), for creases that overlap along a stretch, and for crossings it cannot resolve.
+CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& options = {});
+
+}  // namespace sdog
