@@ -1,9 +1,11 @@
 #include "app/cli_common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/versions.h"
 
 #include "base/errors.h"
 #include "geometry/input/pattern_file.h"
@@ -90,11 +92,31 @@ void register_sdog_commands(CLI::App& app, Runner& run, const std::string& comma
       "Scalable DOGs: crease patterns (SVG or FOLD) to discrete orthogonal geodesic nets (DOGs), "
       "their coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options.");
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_line("sdog"), "Print the version and exit");
   register_mesh_command(app, run);
   register_render_command(app, run);
   register_run_command(app, run);
   register_bench_command(app, run);
   register_compare_command(app, run, command_line);
+}
+
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  const std::string usage = " (run `" + app.get_name() + " --help` for usage)";
+  std::vector<std::string> names;
+  for (const CLI::App* c : app.get_subcommands({})) names.push_back(c->get_name());
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  if (argc < 2) throw UsageError("no command given; the commands are " + list + usage);
+  if (argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end())
+    throw UsageError(std::string("unknown command '") + argv[1] + "'; the commands are " + list + usage);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what() + usage);
+  }
+  return std::nullopt;
 }
 
 }  // namespace sdog::cli

@@ -4,6 +4,7 @@
 // codes).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace sdog::cli {
@@ -17,7 +18,11 @@ void register_bench_command(CLI::App& app, Runner& run);
 /// `command_line`: the whole command line as typed, recorded in compare.json.
 void register_compare_command(CLI::App& app, Runner& run, const std::string& command_line);
 
-/// The sdog application: its description and every subcommand above.
+/// The sdog application: its description, --version and every subcommand above.
 void register_sdog_commands(CLI::App& app, Runner& run, const std::string& command_line);
+
+/// Parses the command line. --help and --version print and give the exit code to end with (0);
+/// an unknown command or options that cannot be parsed are a UsageError. Nothing: go on and run.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
 
 }  // namespace sdog::cli

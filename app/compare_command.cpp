@@ -120,7 +120,8 @@ RunConfig compare_config(const CompareArgs& a) {
   if (a.hold_opt->count() || a.config.empty()) config.hold = a.hold;
   if (!config.switches.empty())
     throw UsageError(a.config + ": $.switches: sdog compare runs every mode on its own (use sdog run --switch)");
-  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
+  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line",
+                      a.config.empty() ? ErrorKind::kUsage : ErrorKind::kInput);
   return config;
 }
 
@@ -146,13 +147,16 @@ std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Ca
   for (size_t i = 0; i < done.size(); ++i) {
     const CaseResult& r = done[i];
     std::cerr << "sdog compare: case " << first_case + i + 1 << "/" << case_count << ": " << r.pattern << " " << r.res
-              << " " << mode_name(r.mode) << ": " << status_name(r.status) << " (" << place.size() << " cases in "
-              << format_number(seconds_since(place_start)) << " s, elapsed " << format_number(seconds_since(start))
-              << " s)" << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on"))
-              << "\n"
-              << std::flush;
+              << " " << mode_name(r.mode) << ": " << status_name(r.status)
+              << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on")) << "\n";
     print_fields(compare_fields(r));
   }
+  const std::string cases = done.size() == 1 ? "case " + std::to_string(first_case + 1)
+                                             : "cases " + std::to_string(first_case + 1) + " to " +
+                                                   std::to_string(first_case + done.size()) + " side by side";
+  std::cerr << "sdog compare: " << cases << " in " << format_number(seconds_since(place_start)) << " s (elapsed "
+            << format_number(seconds_since(start)) << " s)\n"
+            << std::flush;
   return done;
 }
 
@@ -218,7 +222,7 @@ void compare(const CompareArgs& a) {
   if (failed > 0)
     std::cerr << "sdog compare: " << failed << " of " << rows.size()
               << " runs did not complete (status column of compare.csv)\n";
-  std::cout << "sdog compare: " << rows.size() << " cases"
+  std::cout << "sdog compare: " << rows.size() << (rows.size() == 1 ? " case" : " cases")
             << (a.repeat > 1 ? " (" + std::to_string(a.repeat) + " rounds)" : std::string()) << " in "
             << format_number(seconds_since(start)) << " s; wrote " << a.out << "/{compare.csv, series.csv, compare.json"
             << (plots.empty() ? "" : ", " + join(plots, ", ")) << "}\n";

@@ -75,7 +75,7 @@ Drawing fresh_drawing(const RenderArgs& a, const std::vector<vis::Layer>& layers
   config.iterations = a.iterations;
   config.hold = 0;
   const ModeKind mode = parse_mode(a.mode, "--mode: ");
-  if (run) validate_run_config(config, "command line");
+  if (run) validate_run_config(config, "command line", ErrorKind::kUsage);
   Drawing d{build_model(a.pattern), {}, ""};
   d.caption = std::filesystem::path(a.pattern.pattern).stem().string() + " " + d.model.fine_res.str();
   if (run) {

@@ -110,13 +110,14 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
   for (const std::string& t : texts) {
     const size_t colon = t.find(':');
     int k = 0;
+    size_t used = 0;
     try {
-      size_t used = 0;
       if (colon != std::string::npos) k = std::stoi(t.substr(0, colon), &used);
-      if (colon == std::string::npos || used != colon || k < 1) throw std::invalid_argument(t);
-    } catch (const std::exception&) {
-      throw UsageError("--switch: expected ITERATION:MODE with ITERATION >= 1 (e.g. 100:twolevel), got '" + t + "'");
+    } catch (const std::exception&) {  // not a number, or out of int's range
+      used = 0;
     }
+    if (colon == std::string::npos || used != colon || k < 1)
+      throw UsageError("--switch: expected ITERATION:MODE with ITERATION >= 1 (e.g. 100:twolevel), got '" + t + "'");
     out.push_back({k, parse_mode(t.substr(colon + 1), "--switch " + t + ": ")});
   }
   return out;
@@ -162,7 +163,8 @@ RunConfig run_config(const RunArgs& a) {
   if (a.rho_opt->count()) config.admm.rho = a.rho;
   if (a.gamma_opt->count()) config.admm.gamma = a.gamma;
   if (!a.switches.empty()) config.switches = parse_switches(a.switches);
-  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line");
+  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line",
+                      a.config.empty() ? ErrorKind::kUsage : ErrorKind::kInput);
   return config;
 }
 

@@ -14,30 +14,12 @@ int main(int argc, char** argv) {
   sdog::cli::Runner run;
   sdog::cli::register_sdog_commands(app, run, sdog::cli::command_line_text(argc, argv));
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "sdog: " << e.what() << " (run `sdog --help` for usage)\n";
-    return 2;
-  }
-  try {
+    if (const auto done = sdog::cli::parse_command_line(app, argc, argv)) return *done;
     run();
     return 0;
-  } catch (const sdog::UsageError& e) {
+  } catch (const sdog::Error& e) {
     std::cerr << "sdog: " << e.what() << "\n";
-    return 2;
-  } catch (const sdog::InputError& e) {
-    std::cerr << "sdog: " << e.what() << "\n";
-    return 1;
-  } catch (const sdog::OutputError& e) {
-    std::cerr << "sdog: " << e.what() << "\n";
-    return 1;
-  } catch (const sdog::SolverError& e) {
-    std::cerr << "sdog: " << e.what() << "\n";
-    return 1;
+    return sdog::exit_code(e.kind());
   } catch (const std::exception& e) {
     std::cerr << "sdog: internal error: " << e.what() << " (please report this with the input)\n";
     return 3;

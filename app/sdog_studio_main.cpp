@@ -59,7 +59,7 @@ bool configure_window(sdog::studio::MainWindow& window, const StudioArgs& a) {
       for (sdog::vis::Layer l : sdog::vis::all_layers()) window.set_layer(l, false);
       for (sdog::vis::Layer l : layers) window.set_layer(l, true);
     }
-  } catch (const std::exception& e) {
+  } catch (const sdog::UsageError& e) {
     std::cerr << "sdog-studio: " << e.what() << "\n";
     return false;
   }
@@ -88,12 +88,9 @@ std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const Stud
         sdog::cli::saved_workspace(saved, *model, cli.count("--mode") ? std::optional<std::string>(a.mode) : std::nullopt);
     const std::string source = saved.run ? saved.run->record : saved.frame;
     if (window.open_state(model, state, QString::fromStdString(source))) return state.iteration;
-  } catch (const sdog::UsageError& e) {
+  } catch (const sdog::Error& e) {
     std::cerr << "sdog-studio: " << e.what() << "\n";
-    exit_code = 2;
-  } catch (const std::exception& e) {
-    std::cerr << "sdog-studio: " << e.what() << "\n";
-    exit_code = 1;
+    exit_code = sdog::exit_code(e.kind());
   }
   return std::nullopt;
 }
@@ -147,6 +144,9 @@ int main(int argc, char** argv) {
     if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {  // no window needed
       std::cout << cli.help();
       return 0;
+    } else if (std::string(argv[i]) == "--version") {
+      std::cout << sdog::cli::version_line("sdog-studio") << "\n";
+      return 0;
     }
   if (!has_display(argc, argv)) {
     std::cerr << "sdog-studio: no display to open windows on (DISPLAY is not set); run it in a desktop session, or "
@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
     sdog::cli::check_studio_args(a);
-  } catch (const CLI::CallForHelp& e) {
+  } catch (const CLI::Success& e) {  // --version
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "sdog-studio: " << e.what() << " (run `sdog-studio --help` for usage)\n";

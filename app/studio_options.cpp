@@ -1,5 +1,7 @@
 #include "app/studio_options.h"
 
+#include "app/versions.h"
+
 #include "solver/modes/mode_kind.h"
 #include "ui/vis/layers.h"
 
@@ -8,6 +10,7 @@ namespace sdog::cli {
 void add_studio_options(CLI::App& cli, StudioArgs& a) {
   cli.name("sdog-studio");
   cli.description("Scalable DOGs studio: see and steer the solver");
+  cli.set_version_flag("--version", version_line("sdog-studio"), "Print the version and exit");
   cli.add_option("PATTERN", a.pattern,
                  "crease pattern (SVG or FOLD) to open (with --frame or --run: the run's, from its run.json, "
                  "unless given)");

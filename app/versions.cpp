@@ -31,4 +31,8 @@ nlohmann::json software_versions() {
            dotted(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)}};
 }
 
+std::string version_line(const std::string& program) {
+  return program + " " + SDOG_VERSION + " (commit " + SDOG_GIT_COMMIT + ")";
+}
+
 }  // namespace sdog::cli

@@ -56,7 +56,8 @@ void Cleaner::snap_end(int k, int e, const VertexCounts& counts) {
                         ? " and " + format_number(crease.distance) + " from the nearest crease"
                         : std::string()) +
                    "; creases must end on the boundary or on another crease (tolerance " +
-                   format_number(snap_tol_) + " = L/50)");
+                   format_number(snap_tol_) + " = " + format_number(snap_fraction_) +
+                   " L, --snap-tol)");
 }
 
 // (a) Moves end e (at p) of crease k to the nearest crease vertex (a junction or a boundary end

@@ -27,6 +27,7 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
   const double L = pattern.size();
   merge_tol_ = options.merge_fraction * L;
   snap_tol_ = options.snap_fraction * L;
+  snap_fraction_ = options.snap_fraction;
   loops_.push_back(sheet_.outer);
   for (const auto& h : sheet_.holes) loops_.push_back(h);
 }

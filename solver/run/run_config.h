@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.h"
 #include "base/option_table.h"
 #include "geometry/pattern/crease_pattern.h"
 #include "solver/modes/mode_kind.h"
@@ -100,7 +101,9 @@ void apply_preset(Preset preset, RunConfig& config);
 /// The keys of the configuration's top level that hold one value: scenario, iterations, hold, angle.
 const OptionTable<RunConfig>& run_option_table();
 
-/// Checks the values (InputError "source: $.path: why").
-void validate_run_config(const RunConfig& config, const std::string& source);
+/// Checks the values: an Error of `kind` ("source: $.path: why"); kUsage when they all come from
+/// the command line, kInput when a configuration file gave some.
+void validate_run_config(const RunConfig& config, const std::string& source,
+                         ErrorKind kind = ErrorKind::kInput);
 
 }  // namespace sdog

@@ -145,6 +145,39 @@ TEST(BadInputFiles, UnknownOptionIsAUsageError) {
   EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
 }
 
+TEST(BadInputFiles, AnUnknownCommandIsNamed) {
+  const auto r = test::run_sdog("frobnicate " + test::dataset("one_curve.svg"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("unknown command 'frobnicate'; the commands are mesh, render, run, bench, compare"),
+            std::string::npos)
+      << r.err;
+  const auto none = test::run_sdog("");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("no command given"), std::string::npos) << none.err;
+}
+
+// A value out of range given on the command line is a usage error (2); the same value from a
+// configuration file is an input error (1).
+TEST(BadInputFiles, AnOptionValueThatCannotWorkIsAUsageError) {
+  const auto r = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 --rho -1 -q");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("command line: $.admm.rho must be positive"), std::string::npos) << r.err;
+  const std::string dir = test::temp_dir("rho_in_file");
+  const std::string config = test::write_file(dir, "c.json", R"({"admm": {"rho": -1}})");
+  const auto f = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 -q --config " + config);
+  EXPECT_EQ(f.code, 1) << f.err;
+  EXPECT_NE(f.err.find("c.json"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("rho"), std::string::npos) << f.err;
+}
+
+TEST(Version, NamesTheReleaseAndTheCommit) {
+  const auto r = test::run_sdog("--version");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("sdog 0.", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("(commit "), std::string::npos) << r.out;
+}
+
 TEST(NoCreases, IsOnePatchNotAnError) {
   const std::string dir = test::temp_dir("no_creases");
   const std::string path = test::write_file(dir, "empty.svg", svg(""));

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -66,6 +69,40 @@ TEST(ReferenceDocs, EveryDatasetIsDescribedAndPreviewed) {
     EXPECT_TRUE(fs::exists(fs::path(SDOG_DOCS_DIR) / "datasets" / (name + ".png"))) << name << ".png";
   }
   EXPECT_GE(datasets, 17);
+}
+
+// The keys in the first column of the table under `heading` (up to the next heading).
+std::set<std::string> table_keys(const std::string& text, const std::string& heading) {
+  std::set<std::string> keys;
+  const size_t start = text.find("\n" + heading + "\n");
+  if (start == std::string::npos) return {"(no heading " + heading + ")"};
+  std::istringstream in(text.substr(start + heading.size() + 2));
+  for (std::string line; std::getline(in, line) && line.rfind("#", 0) != 0;)
+    if (line.rfind("| `", 0) == 0) keys.insert(line.substr(3, line.find('`', 3) - 3));
+  return keys;
+}
+
+std::set<std::string> json_keys(const nlohmann::json& j) {
+  std::set<std::string> keys;
+  for (const auto& item : j.items()) keys.insert(item.key());
+  return keys;
+}
+
+// The tables of `sdog mesh --json` and run.json list exactly the keys the programs write.
+TEST(ReferenceDocs, TheJsonTablesListExactlyTheKeysWritten) {
+  const std::string text = page("output-files.md");
+  const auto mesh = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 11x11 --json");
+  ASSERT_EQ(mesh.code, 0) << mesh.err;
+  EXPECT_EQ(table_keys(text, "## `sdog mesh --json`"), json_keys(nlohmann::json::parse(mesh.out)));
+  const std::string dir = test::temp_dir("run_json_keys");
+  const auto run = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 --scenario fold --iters 2 --hold 0 -q --out " +
+                                  dir + "/run");
+  ASSERT_EQ(run.code, 0) << run.err;
+  // A fold run has every key but `failure` (failed runs only).
+  std::set<std::string> written = json_keys(nlohmann::json::parse(test::slurp(dir + "/run/run.json")));
+  EXPECT_EQ(written.count("creases"), 1u);
+  written.insert("failure");
+  EXPECT_EQ(table_keys(text, "### `run.json`"), written);
 }
 
 TEST(ReferenceDocs, TheOutputFilesPageNamesEveryColumn) {

@@ -1,7 +1,10 @@
 // The signed fold angle reached at fold sites (crease_angles.h): FOLD's sign, valleys positive.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
@@ -52,6 +55,30 @@ TEST(CreaseAngles, SignedFoldAngleOfAStraightCrease) {
     EXPECT_NEAR(angles.at(k, folded(model, -M_PI / 6)), -60, 1e-9) << "mountain";
     EXPECT_NEAR(angles.at(k, folded(model, 0.4 * M_PI)), 144, 1e-9);
   }
+}
+
+// creases.csv: a header and one row per fold site, with the site's crease, assignment, place,
+// target and the angle reached (60 degrees on the valley folded by 2 x 30 degrees).
+TEST(CreaseAngles, CreasesCsvHasOneRowPerFoldSite) {
+  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const FoldAngles angles(model.fine);
+  const std::string csv = creases_csv(model.fine, fold_scenario(model.fine, 75), folded(model, M_PI / 6));
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "crease_point,crease,id,assignment,x,y,target_angle,angle");
+  size_t rows = 0;
+  while (std::getline(in, line)) {
+    ASSERT_FALSE(line.empty()) << "blank line after row " << rows;
+    const size_t last_comma = line.rfind(',');
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 7) << line;
+    EXPECT_NE(line.find(",unassigned,4.5,"), std::string::npos) << line;
+    EXPECT_NE(line.find(",75,"), std::string::npos) << line;
+    EXPECT_NEAR(std::stod(line.substr(last_comma + 1)), 60, 1e-4) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, angles.sites().size());
+  EXPECT_GT(rows, 5u);
 }
 
 // The angle term (dihedral_angles.h) measures the same signed angle, and its residual vanishes at

@@ -170,7 +170,7 @@ TEST_F(SceneTest, CreaseCurvesAreColouredByAssignment) {
   EXPECT_LT(rgb->GetComponent(0, 2), 50);
   EXPECT_GT(rgb->GetComponent(1, 2), 200);
   s.crease_folds.pop_back();
-  EXPECT_THROW(scene.update(s), std::invalid_argument);
+  EXPECT_THROW(scene.update(s), std::logic_error);
 }
 
 TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {
@@ -308,10 +308,10 @@ TEST_F(SceneTest, StateOfTheWrongSizeIsRejected) {
   vis::Scene scene(arcs_model(), renderer);
   vis::SceneState s = vis::rest_scene_state(arcs_model());
   s.fields.bending.pop_back();
-  EXPECT_THROW(scene.update(s), std::invalid_argument);
+  EXPECT_THROW(scene.update(s), std::logic_error);
   s = vis::rest_scene_state(arcs_model());
   s.constraints.handles.push_back({arcs_model().fine.vertex_count(), Eigen::Vector3d::Zero()});
-  EXPECT_THROW(scene.update(s), std::invalid_argument);
+  EXPECT_THROW(scene.update(s), std::logic_error);
 }
 
 }  // namespace

@@ -215,7 +215,7 @@ TEST_F(SurfaceFileTest, CategoricalColoursAreThePalettes) {
           << v;
     }
   }
-  EXPECT_THROW(vis::surface_colours(vis::Layer::Handles, surface, arrays), std::invalid_argument);
+  EXPECT_THROW(vis::surface_colours(vis::Layer::Handles, surface, arrays), std::logic_error);
 }
 
 // Edge strain is one value per quad: a vertex takes the mean over its triangles, coloured through

@@ -130,7 +130,7 @@ void render_line_chart(const LineChart& chart, const ImageSize& size, const std:
   int points = 0;
   for (const auto& s : chart.series) {
     if (s.x.size() != s.y.size())
-      throw std::invalid_argument("render_line_chart: series '" + s.name + "' has " + std::to_string(s.x.size()) +
+      throw std::logic_error("render_line_chart: series '" + s.name + "' has " + std::to_string(s.x.size()) +
                                   " x and " + std::to_string(s.y.size()) + " y values");
     for (size_t i = 0; i < s.x.size(); ++i) points += drawable(s.x[i], s.y[i], chart);
   }

@@ -64,7 +64,7 @@ std::vector<double> quad_patches(const DogMesh& mesh) {
 
 void check_size(size_t got, int expected, const char* what) {
   if (static_cast<int>(got) != expected)
-    throw std::invalid_argument(std::string("scene state: ") + what + " has " + std::to_string(got) +
+    throw std::logic_error(std::string("scene state: ") + what + " has " + std::to_string(got) +
                                 " entries, the model " + std::to_string(expected));
 }
 
@@ -246,10 +246,10 @@ void Scene::update(const SceneState& state) {
   check_size(state.fields.stitch_gap.size(), static_cast<int>(model_.fine.stitching.points.size()), "stitch_gap");
   for (const auto& h : state.constraints.handles)
     if (h.vertex < 0 || h.vertex >= model_.fine.vertex_count())
-      throw std::invalid_argument("scene state: handle on vertex " + std::to_string(h.vertex) + " out of range");
+      throw std::logic_error("scene state: handle on vertex " + std::to_string(h.vertex) + " out of range");
   for (const auto& a : state.constraints.angle_sites)
     if (a.point < 0 || a.point >= static_cast<int>(model_.fine.stitching.points.size()))
-      throw std::invalid_argument("scene state: angle site at crease point " + std::to_string(a.point) +
+      throw std::logic_error("scene state: angle site at crease point " + std::to_string(a.point) +
                                   " out of range");
   if (!state.crease_folds.empty())
     check_size(state.crease_folds.size(), static_cast<int>(model_.fine.stitching.curves.size()),

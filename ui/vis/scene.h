@@ -66,7 +66,7 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   /// New positions, fields and constraints: refreshes the data of the existing actors (the
-  /// camera stays). Throws std::invalid_argument when the sizes do not match the model.
+  /// camera stays). Throws std::logic_error when the sizes do not match the model.
   void update(const SceneState& state);
   const SceneState& state() const { return state_; }
 

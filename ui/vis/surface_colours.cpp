@@ -27,7 +27,7 @@ const NamedArray* find(const std::vector<NamedArray>& arrays, const std::string&
 
 const NamedArray& require(const std::vector<NamedArray>& arrays, const std::string& name) {
   const NamedArray* a = find(arrays, name);
-  if (!a) throw std::invalid_argument("surface colours: the mesh has no array '" + name + "'");
+  if (!a) throw std::logic_error("surface colours: the mesh has no array '" + name + "'");
   return *a;
 }
 
@@ -93,7 +93,7 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
       return robust_colours(strain.values, cell_means_at_vertices(surface, strain.values));
     }
     default:
-      throw std::invalid_argument(std::string("surface colours: '") + layer_name(layer) +
+      throw std::logic_error(std::string("surface colours: '") + layer_name(layer) +
                                   "' is not a colour layer");
   }
 }

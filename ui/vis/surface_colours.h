@@ -24,7 +24,7 @@ using Rgb8 = std::array<unsigned char, 3>;
 /// - bending: sequential_lut over robust_range of the mesh's values, of the interpolated value;
 /// - edge-strain: the same for the mesh's edge_strain, of the mean over the vertex's triangles of
 ///   their quads' values (a vertex has one colour, a quad's strain is one value).
-/// Throws std::invalid_argument for a layer that is not a colour layer or a missing array.
+/// Throws std::logic_error for a layer that is not a colour layer or a missing array.
 std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
                                   const MeshArrays& mesh_arrays);
 

@@ -19,15 +19,17 @@
 #include <string_view>
 #include <vector>
 
+#include "base/errors.h"
+
 namespace sdog::svg {
 
 using Point = Eigen::Vector2d;
 
 /// A problem with one element's attribute or geometry. The message has no file/element prefix:
-/// the reader adds "FILE:LINE: <path id=\"x\">: path data: " and rethrows it as InputError.
-class ElementError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
+/// the reader adds "FILE:LINE: <path id=\"x\">: path data: " and rethrows it as an InputError of its
+/// own.
+struct ElementError : InputError {
+  using InputError::InputError;
 };
 
 /// SVG white space: space, tab, CR, LF (and form feed, which some tools emit).

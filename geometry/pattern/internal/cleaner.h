@@ -135,6 +135,7 @@ class Cleaner {
   std::vector<Crease> creases_;
   std::vector<Polyline2> loops_;  ///< outer boundary, then the holes
   double merge_tol_ = 0, snap_tol_ = 0;
+  double snap_fraction_ = 0;  ///< snap_tol_ / L, for messages
   std::vector<Vec2> junctions_, pins_;
   std::vector<std::string> changes_, warnings_;
 };
