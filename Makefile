@@ -14,7 +14,7 @@ DEMO_RES = 41x41
 
 DEPS = cmake ninja-build g++ libeigen3-dev libcgal-dev libceres-dev libsuitesparse-dev \
        libopenblas-dev libtbb-dev libvtk9-dev libvtk9-qt-dev qtbase5-dev libgtest-dev \
-       libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth
+       libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth python3
 FUZZ_DEPS = clang libclang-rt-14-dev
 
 .PHONY: all deps fuzz-deps configure build demo test fuzz previews reference-docs clean
