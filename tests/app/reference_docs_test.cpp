@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -103,6 +104,33 @@ TEST(ReferenceDocs, TheJsonTablesListExactlyTheKeysWritten) {
   EXPECT_EQ(written.count("creases"), 1u);
   written.insert("failure");
   EXPECT_EQ(table_keys(text, "### `run.json`"), written);
+}
+
+// CHANGELOG.md: releases as "## X.Y.Z (YYYY-MM-DD)" (newest first, above them at most an
+// "## Unreleased"), the newest being the version sdog reports; lines of at most 100 characters.
+TEST(ReferenceDocs, TheChangelogIsInDatedReleasesOfTheReportedVersion) {
+  const std::string text = test::slurp(std::string(SDOG_DOCS_DIR) + "/../CHANGELOG.md");
+  std::istringstream in(text);
+  std::vector<std::string> releases;
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    size_t chars = 0;  // UTF-8 characters
+    for (unsigned char c : line) chars += (c & 0xC0) != 0x80;
+    EXPECT_LE(chars, 100u) << "CHANGELOG.md:" << number;
+    if (line.rfind("## ", 0) != 0) continue;
+    if (line == "## Unreleased") {
+      EXPECT_TRUE(releases.empty()) << "CHANGELOG.md:" << number << ": Unreleased comes first";
+      continue;
+    }
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(line, m, std::regex(R"(## (\d+\.\d+\.\d+) \(\d{4}-\d{2}-\d{2}\))")))
+        << "CHANGELOG.md:" << number << ": " << line;
+    releases.push_back(m[1].str());
+  }
+  ASSERT_FALSE(releases.empty());
+  const auto version = test::run_sdog("--version");
+  EXPECT_EQ(version.out.rfind("sdog " + releases.front() + " ", 0), 0u) << version.out;
 }
 
 TEST(ReferenceDocs, TheOutputFilesPageNamesEveryColumn) {

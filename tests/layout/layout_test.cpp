@@ -148,4 +148,23 @@ TEST(Layout, NoFunctionIsLong) {
   EXPECT_GT(functions, 1000);
 }
 
+
+// tests/ mirrors the sources: a test folder under tests/base, tests/geometry or tests/solver tests
+// the source folder of the same name.
+TEST(Layout, TestFoldersMirrorTheSources) {
+  const fs::path root = SDOG_SOURCE_DIR;
+  int files = 0;
+  for (const char* top : {"base", "geometry", "solver"}) {
+    for (const auto& e : fs::recursive_directory_iterator(root / "tests" / top)) {
+      if (e.path().extension() != ".cpp") continue;
+      const fs::path source = fs::relative(e.path().parent_path(), root / "tests");
+      ++files;
+      EXPECT_TRUE(fs::is_directory(root / source)) << e.path().generic_string() << ": no source folder " << source;
+      if (source.generic_string() == "geometry" || source.generic_string() == "solver")
+        ADD_FAILURE() << e.path().generic_string() << ": belongs in the folder of the layer it tests";
+    }
+  }
+  EXPECT_GT(files, 50);
+}
+
 }  // namespace
