@@ -3,7 +3,8 @@
 // executable exits (exit_code). The rule for reporting a problem:
 //  - A call that cannot do what it was asked because of its input, its options or its output
 //    throws an Error of the matching kind, with one line that names the file, element or option
-//    and says what to change. InputError, UsageError, OutputError and SolverError are shorthands.
+//    and says what to change: an InputError, UsageError, OutputError or SolverError, or
+//    throw_error(kind, ...) when the kind is known only at run time.
 //  - An options struct's validate() returns that line (empty when the options are fine) instead
 //    of throwing, so that its caller can name where the options came from (a configuration file,
 //    the command line) and choose the kind.
@@ -27,10 +28,13 @@ enum class ErrorKind {
 /// option must be changed), 1 for the others (a file or a setting must be fixed).
 inline int exit_code(ErrorKind kind) { return kind == ErrorKind::kUsage ? 2 : 1; }
 
+/// The base of the shorthands below; thrown only as one of them (throw_error picks it by kind).
 class Error : public std::runtime_error {
  public:
-  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
   ErrorKind kind() const { return kind_; }
+
+ protected:
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
 
  private:
   ErrorKind kind_;
@@ -57,5 +61,21 @@ struct OutputError : Error {
 struct SolverError : Error {
   explicit SolverError(const std::string& message) : Error(ErrorKind::kSolver, message) {}
 };
+
+/// Throws the shorthand of `kind` (an InputError for kInput, ...), so that callers that catch one
+/// shorthand catch it.
+[[noreturn]] inline void throw_error(ErrorKind kind, const std::string& message) {
+  switch (kind) {
+    case ErrorKind::kInput:
+      throw InputError(message);
+    case ErrorKind::kUsage:
+      throw UsageError(message);
+    case ErrorKind::kOutput:
+      throw OutputError(message);
+    case ErrorKind::kSolver:
+      break;
+  }
+  throw SolverError(message);
+}
 
 }  // namespace sdog

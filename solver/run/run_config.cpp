@@ -71,22 +71,22 @@ const OptionTable<RunConfig>& run_option_table() {
 }
 
 void validate_run_config(const RunConfig& c, const std::string& source, ErrorKind kind) {
-  if (std::string m = check_option_bounds(run_option_table(), c); !m.empty()) throw Error(kind, source + ": $." + m);
-  if (c.iterations + c.hold < 1) throw Error(kind, source + ": iterations + hold must be at least 1");
-  if (const std::string m = c.weights.validate(); !m.empty()) throw Error(kind, source + ": $.weights: " + m);
-  if (const std::string m = c.standard.validate(); !m.empty()) throw Error(kind, source + ": $.solver: " + m);
-  if (const std::string m = c.subsolvers.validate(); !m.empty()) throw Error(kind, source + ": $.patch_solver: " + m);
-  if (const std::string m = c.admm.validate(); !m.empty()) throw Error(kind, source + ": $.admm." + m);
-  if (const std::string m = c.coarse.validate(); !m.empty()) throw Error(kind, source + ": $.coarse." + m);
-  if (const std::string m = c.twolevel.validate(); !m.empty()) throw Error(kind, source + ": $.twolevel." + m);
+  if (std::string m = check_option_bounds(run_option_table(), c); !m.empty()) throw_error(kind, source + ": $." + m);
+  if (c.iterations + c.hold < 1) throw_error(kind, source + ": iterations + hold must be at least 1");
+  if (const std::string m = c.weights.validate(); !m.empty()) throw_error(kind, source + ": $.weights: " + m);
+  if (const std::string m = c.standard.validate(); !m.empty()) throw_error(kind, source + ": $.solver: " + m);
+  if (const std::string m = c.subsolvers.validate(); !m.empty()) throw_error(kind, source + ": $.patch_solver: " + m);
+  if (const std::string m = c.admm.validate(); !m.empty()) throw_error(kind, source + ": $.admm." + m);
+  if (const std::string m = c.coarse.validate(); !m.empty()) throw_error(kind, source + ": $.coarse." + m);
+  if (const std::string m = c.twolevel.validate(); !m.empty()) throw_error(kind, source + ": $.twolevel." + m);
   for (size_t i = 0; i < c.switches.size(); ++i) {
     const int k = c.switches[i].iteration;
     const std::string where = source + ": $.switches[" + std::to_string(i) + "]: ";
     if (k < 1 || k > c.iterations + c.hold)
-      throw Error(kind, where + "iteration " + std::to_string(k) + " is not in the run (1 to " +
+      throw_error(kind, where + "iteration " + std::to_string(k) + " is not in the run (1 to " +
                   std::to_string(c.iterations + c.hold) + ")");
     if (i > 0 && k <= c.switches[i - 1].iteration)
-      throw Error(kind, where + "switches must be in ascending order of iteration");
+      throw_error(kind, where + "switches must be in ascending order of iteration");
   }
 }
 
