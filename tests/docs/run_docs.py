@@ -171,9 +171,10 @@ def main():
     work = tempfile.mkdtemp(prefix="sdog_docs_")
     shutil.copytree(os.path.join(a.source, "datasets"), os.path.join(work, "datasets"))
     os.symlink(os.path.abspath(a.build), os.path.join(work, "build"))
-    failures, log, last_output, last_code, ran = [], [], None, 0, 0
+    failures, log, last_output, ran = [], [], None, 0
     replacements = []
-    for kind, first, last in blocks(lines):
+    page_blocks = blocks(lines)
+    for n, (kind, first, last) in enumerate(page_blocks):
         where = "%s:%d" % (os.path.basename(a.page), first)
         if kind in ("sh", "bash"):
             script = []
@@ -192,13 +193,12 @@ def main():
             p = subprocess.run(["bash", "-c", checked], cwd=work, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
             ran += len(script)
-            last_output, last_code = p.stdout.rstrip("\n").split("\n"), p.returncode
+            last_output = p.stdout.rstrip("\n").split("\n")
             print("ran %s: exit %d, %d output lines" % (where, p.returncode, len(last_output)))
-            pending = (where, p.returncode, last_output)
             # An error exit is fine only when the next block quotes the error.
-            following = [b for b in blocks(lines) if b[1] > last]
-            quotes_error = following and following[0][0].startswith("output") and any(
-                l.strip().startswith(("sdog: ", "sdog-studio: ")) for l in lines[following[0][1]:following[0][2]])
+            following = page_blocks[n + 1] if n + 1 < len(page_blocks) else None
+            quotes_error = following and following[0].startswith("output") and any(
+                l.strip().startswith(("sdog: ", "sdog-studio: ")) for l in lines[following[1]:following[2]])
             if p.returncode != 0 and not quotes_error:
                 failures.append("%s: exit %d:\n  %s" % (where, p.returncode, "\n  ".join(last_output[-15:])))
         elif kind in ("output", "output-shape"):

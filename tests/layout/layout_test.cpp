@@ -1,4 +1,4 @@
-// The rules of the source layout (README.md, Code layout), checked on the source files:
+// The rules of the source layout (docs/development.md), checked on the source files:
 // each layer includes only itself and the layers below it, headers under internal/ stay inside
 // their layer, and no file or function grows past the size limits.
 #include <gtest/gtest.h>
