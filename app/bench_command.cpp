@@ -29,7 +29,7 @@ class CaseProgress : public RunObserver {
   CaseProgress(const Case& c, int round, int rounds, int total) : c_(c), round_(round), rounds_(rounds), total_(total) {}
   void on_iteration(const IterationReport& r, const Dofs&) override {
     if (r.iteration % 10 == 0 || r.iteration == total_)
-      std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c_.res.c_str(), mode_name(c_.mode),
+      std::fprintf(stderr, "\r  %s %s: round %d/%d, iteration %d/%d   ", c_.res.c_str(), enum_name(c_.mode),
                    round_ + 1, rounds_, r.iteration, total_);
   }
 
@@ -65,7 +65,7 @@ void print_row(const CaseResult& r) {
   if (r.speedup) std::snprintf(speedup, sizeof speedup, "%.2f", *r.speedup);
   const Work& w = r.window_work;
   std::printf("%-18s %-6s %-9s %6d %6d %9.2f %9.5f %6.2f %9.2f %7.2f %10.4g %9.2g %7s\n", r.pattern.c_str(),
-              r.res.c_str(), mode_name(r.mode), r.vertices, r.dof, r.median_ms, r.ms_per_dof(),
+              r.res.c_str(), enum_name(r.mode), r.vertices, r.dof, r.median_ms, r.ms_per_dof(),
               r.per_window_iteration(w.steps), r.per_window_iteration(w.factor_ms),
               r.per_window_iteration(w.factorizations), r.final_objective, r.dog_max, speedup);
   std::fflush(stdout);
@@ -227,7 +227,7 @@ void bench_fold(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
 void bench(const BenchArgs& a) {
   set_thread_count(a.threads);
   std::vector<ModeKind> modes;
-  for (const auto& m : a.modes) modes.push_back(parse_mode(m, "--modes: "));
+  for (const auto& m : a.modes) modes.push_back(parse_enum<ModeKind>(m, "--modes: "));
   const std::vector<std::vector<Case>> places = bench_places(a, modes);
   std::unique_ptr<OutputSet> out;
   std::string csv_name;
@@ -269,7 +269,7 @@ void bench(const BenchArgs& a) {
       const TrimCost t = measure_trim_cost(build_case_model(cases.front()).fine, 21);
       std::printf("  trimmed surface: %d triangles, topology %.1f ms once, %.2f ms per state (%.2f%% of a %s iteration)\n",
                   t.triangles, t.build_ms, t.state_ms, 100 * t.state_ms / results.front().median_ms,
-                  mode_name(cases.front().mode));
+                  enum_name(cases.front().mode));
     }
   }
   write_csv(out, csv_name, csv);

@@ -16,12 +16,12 @@ void add_preset_option(CLI::App& cmd, std::string& preset) {
   cmd.add_option("--preset", preset,
                  "solver settings to start from, before --config and the other options: default (exact "
                  "stitching) or thesis (the thesis's solver, for its numbers)")
-      ->check(CLI::IsMember(preset_names()));
+      ->check(CLI::IsMember(enum_names<Preset>()));
 }
 
 void apply_preset_option(const std::string& preset, bool thesis_grid, RunConfig& config) {
   const std::string name = !preset.empty() ? preset : thesis_grid ? "thesis" : "";
-  if (!name.empty()) apply_preset(config.preset = parse_preset(name, "--preset: "), config);
+  if (!name.empty()) apply_preset(config.preset = parse_enum<Preset>(name, "--preset: "), config);
 }
 
 void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required) {

@@ -52,13 +52,13 @@ struct CompareArgs {
 std::vector<ModeKind> resolve_modes(const std::vector<std::string>& requested) {
   std::vector<ModeKind> modes;
   for (const auto& m : requested) {
-    const std::vector<std::string> names = m == "all" ? mode_names() : std::vector<std::string>{m};
+    const std::vector<std::string> names = m == "all" ? enum_names<ModeKind>() : std::vector<std::string>{m};
     for (const auto& n : names) {
-      const ModeKind mode = parse_mode(n, "--modes: ");
+      const ModeKind mode = parse_enum<ModeKind>(n, "--modes: ");
       if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
     }
   }
-  if (modes.empty()) throw UsageError("--modes: give at least one mode (" + known_modes() + ") or 'all'");
+  if (modes.empty()) throw UsageError("--modes: give at least one mode (" + known_names<ModeKind>() + ") or 'all'");
   std::stable_partition(modes.begin(), modes.end(), [](ModeKind m) { return m == ModeKind::kStandard; });
   return modes;
 }
@@ -99,8 +99,8 @@ void print_fields(const std::vector<std::string>& fields) {
 
 nlohmann::json row_json(const CaseResult& r) {
   auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-  nlohmann::json j = {{"pattern", r.pattern}, {"res", r.res}, {"mode", mode_name(r.mode)},
-                      {"status", status_name(r.status)}, {"note", r.note}};
+  nlohmann::json j = {{"pattern", r.pattern}, {"res", r.res}, {"mode", enum_name(r.mode)},
+                      {"status", enum_name(r.status)}, {"note", r.note}};
   if (r.status == CaseStatus::kSkipped) return j;
   j.update({{"vertices", r.vertices}, {"dof", r.dof}, {"iterations", r.iterations},
             {"final_objective", r.final_objective}, {"objective_ratio", optional(r.objective_ratio)},
@@ -115,7 +115,7 @@ RunConfig compare_config(const CompareArgs& a) {
   RunConfig config;
   apply_preset_option(a.preset, a.thesis_grid, config);
   if (!a.config.empty()) read_run_config(a.config, config);
-  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
+  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
   if (a.iterations_opt->count() || a.config.empty()) config.iterations = a.iterations;
   if (a.hold_opt->count() || a.config.empty()) config.hold = a.hold;
   if (!config.switches.empty())
@@ -138,7 +138,7 @@ std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Ca
     progress = std::make_unique<ProgressBar>(config.iterations + config.hold, true);
     if (a.repeat > 1)
       std::cerr << "sdog compare: " << std::filesystem::path(c.pattern).stem().string() << " " << c.res
-                << ": round " << round + 1 << "/" << a.repeat << ": " << mode_name(c.mode) << "\n"
+                << ": round " << round + 1 << "/" << a.repeat << ": " << enum_name(c.mode) << "\n"
                 << std::flush;
     return {progress.get()};
   };
@@ -147,7 +147,7 @@ std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Ca
   for (size_t i = 0; i < done.size(); ++i) {
     const CaseResult& r = done[i];
     std::cerr << "sdog compare: case " << first_case + i + 1 << "/" << case_count << ": " << r.pattern << " " << r.res
-              << " " << mode_name(r.mode) << ": " << status_name(r.status)
+              << " " << enum_name(r.mode) << ": " << enum_name(r.status)
               << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on")) << "\n";
     print_fields(compare_fields(r));
   }
@@ -165,7 +165,7 @@ nlohmann::json compare_json(const CompareArgs& a, const std::vector<ModeKind>& m
   nlohmann::json json_rows = nlohmann::json::array();
   for (const auto& r : rows) json_rows.push_back(row_json(r));
   std::vector<std::string> mode_list;
-  for (ModeKind m : modes) mode_list.push_back(mode_name(m));
+  for (ModeKind m : modes) mode_list.push_back(enum_name(m));
   return {{"command_line", a.command_line},
           {"patterns", a.thesis_grid ? std::vector<std::string>{a.patterns_dir} : a.patterns},
           {"thesis_grid", a.thesis_grid},
@@ -184,7 +184,7 @@ void compare(const CompareArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   // Usage errors first (exit 2), then what cannot be written (exit 1), then the work.
   const std::vector<ModeKind> modes = resolve_modes(a.modes);
-  parse_scenario(a.scenario, "--scenario: ");
+  parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
   const vis::ImageSize plot_size = vis::parse_image_size(a.plot_size);
   const RunConfig config = compare_config(a);
   const std::vector<std::vector<Case>> places = make_places(a, modes);
@@ -242,7 +242,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
       "xvfb-run on a headless machine)");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");
-  cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_modes() + ")")
+  cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_names<ModeKind>() + ")")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_flag("--thesis-grid", a->thesis_grid,
@@ -258,7 +258,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
                     ->check(CLI::Range(0, 1000000))
                     ->capture_default_str();
   a->scenario_opt =
-      cmd->add_option("--scenario", a->scenario, "scenario of every run (" + join(scenario_names(), ", ") + ")")
+      cmd->add_option("--scenario", a->scenario, "scenario of every run (" + join(enum_names<ScenarioKind>(), ", ") + ")")
           ->capture_default_str();
   cmd->add_option("--config", a->config,
                   "JSON file of weights, solver and mode options (as for sdog run; no switches) for every run; "

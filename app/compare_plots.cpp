@@ -19,7 +19,7 @@ vis::Rgb mode_color(ModeKind mode) {
 
 vis::ChartSeries mode_series(const CaseResult& r) {
   vis::ChartSeries s;
-  s.name = std::string(mode_name(r.mode)) + (r.completed() ? "" : std::string(" (") + status_name(r.status) + ")");
+  s.name = std::string(enum_name(r.mode)) + (r.completed() ? "" : std::string(" (") + enum_name(r.status) + ")");
   s.color = mode_color(r.mode);
   return s;
 }
@@ -64,7 +64,7 @@ std::optional<vis::LineChart> scaling_chart(const std::string& pattern, const st
     it->second.y.push_back(r.ms_per_dof());
   }
   if (resolutions.size() < 2) return std::nullopt;
-  for (ModeKind mode : all_modes()) {
+  for (ModeKind mode : enum_values<ModeKind>()) {
     const auto it = by_mode.find(mode);
     if (it == by_mode.end()) continue;
     vis::ChartSeries s = it->second;

@@ -20,10 +20,10 @@ struct MeshArgs {
 };
 
 nlohmann::json classes_json(const QuadTopology& t) {
-  return {{"star", t.count(VertexClass::Star)},
-          {"bnd3", t.count(VertexClass::Bnd3)},
-          {"bnd2", t.count(VertexClass::Bnd2)},
-          {"bnd4", t.count(VertexClass::Bnd4)}};
+  return {{"star", t.count(VertexClass::kStar)},
+          {"bnd3", t.count(VertexClass::kBnd3)},
+          {"bnd2", t.count(VertexClass::kBnd2)},
+          {"bnd4", t.count(VertexClass::kBnd4)}};
 }
 
 nlohmann::json mesh_json(const DogMesh& m, const QuadTopology& t, const Resolution& r) {
@@ -43,7 +43,7 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
   nlohmann::json creases = nlohmann::json::array();
   for (size_t k = 0; k < m.clean.creases.size(); ++k) {
     const Crease& c = m.clean.creases[k];
-    creases.push_back({{"index", k}, {"element", c.origin}, {"id", c.id}, {"assignment", fold_name(c.fold)},
+    creases.push_back({{"index", k}, {"element", c.origin}, {"id", c.id}, {"assignment", enum_name(c.fold)},
                        {"angle", c.angle ? nlohmann::json(*c.angle) : nlohmann::json(nullptr)}});
   }
   nlohmann::json j = {
@@ -83,9 +83,9 @@ void print_mesh(std::ostream& os, const char* label, const DogMesh& m, const Qua
      << "              crease points " << m.stitching.points.size() << ", stitching pairs "
      << m.stitching.pairs.size() << ", junctions of >2 patches " << m.stitching.junctions.size()
      << "\n"
-     << "              vertex classes: star " << t.count(VertexClass::Star) << ", bnd3 "
-     << t.count(VertexClass::Bnd3) << ", bnd2 " << t.count(VertexClass::Bnd2) << ", bnd4 "
-     << t.count(VertexClass::Bnd4) << "\n";
+     << "              vertex classes: star " << t.count(VertexClass::kStar) << ", bnd3 "
+     << t.count(VertexClass::kBnd3) << ", bnd2 " << t.count(VertexClass::kBnd2) << ", bnd4 "
+     << t.count(VertexClass::kBnd4) << "\n";
 }
 
 void print_summary(std::ostream& os, const DogModel& m, double seconds,
@@ -100,7 +100,7 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
      << " after cleaning, " << m.clean.junctions.size() << " junction(s)\n";
   for (size_t k = 0; k < m.clean.creases.size(); ++k) {
     const Crease& c = m.clean.creases[k];
-    os << "  crease " << k << "  " << c.origin << "  " << fold_name(c.fold);
+    os << "  crease " << k << "  " << c.origin << "  " << enum_name(c.fold);
     if (c.angle) os << ", " << format_number(*c.angle) << " degrees";
     os << "\n";
   }

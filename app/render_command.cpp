@@ -53,7 +53,7 @@ bool has_layer(const std::vector<vis::Layer>& layers, vis::Layer layer) {
 std::string overlay_help() {
   std::string help = "comma-separated overlays (at most one of vertex-types, patches, dog-residual, edge-strain, "
                      "bending, which colour the mesh):";
-  for (vis::Layer l : vis::all_layers()) help += std::string("\n  ") + vis::layer_name(l) + ": " + vis::layer_description(l);
+  for (vis::Layer l : enum_values<vis::Layer>()) help += std::string("\n  ") + enum_name(l) + ": " + vis::layer_description(l);
   return help;
 }
 
@@ -63,7 +63,7 @@ vis::SceneState run_state(const DogModel& model, ModeKind mode, const RunConfig&
   RunSetup setup(model, mode, config);
   const RunSummary summary = setup.run({});
   if (summary.failed())
-    throw SolverError(std::string("the solver (") + mode_name(mode) + ") failed at " + summary.failure);
+    throw SolverError(std::string("the solver (") + enum_name(mode) + ") failed at " + summary.failure);
   return vis::scene_state(setup.problem(), setup.positions(), setup.mode().coarse_positions(), &setup.scenario(), 1);
 }
 
@@ -71,17 +71,17 @@ vis::SceneState run_state(const DogModel& model, ModeKind mode, const RunConfig&
 Drawing fresh_drawing(const RenderArgs& a, const std::vector<vis::Layer>& layers) {
   const bool run = a.iterations_opt->count() > 0;
   RunConfig config;
-  config.scenario = parse_scenario(a.scenario, "--scenario: ");
+  config.scenario = parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
   config.iterations = a.iterations;
   config.hold = 0;
-  const ModeKind mode = parse_mode(a.mode, "--mode: ");
+  const ModeKind mode = parse_enum<ModeKind>(a.mode, "--mode: ");
   if (run) validate_run_config(config, "command line", ErrorKind::kUsage);
   Drawing d{build_model(a.pattern), {}, ""};
   d.caption = std::filesystem::path(a.pattern.pattern).stem().string() + " " + d.model.fine_res.str();
   if (run) {
     d.state = run_state(d.model, mode, config);
     d.caption += ", " + a.mode + ", " + std::to_string(a.iterations) + " iterations of " + a.scenario;
-  } else if (has_layer(layers, vis::Layer::Handles)) {
+  } else if (has_layer(layers, vis::Layer::kHandles)) {
     const Scenario scenario = make_scenario(config, d.model.fine);
     d.state = vis::rest_scene_state(d.model, &scenario);
     d.caption += ", targets of " + a.scenario;
@@ -102,10 +102,10 @@ Drawing saved_drawing(const RenderArgs& a, const std::vector<vis::Layer>& layers
   const SavedState saved = load_saved_state(request);
   if (saved.run && a.scenario_opt->count())
     throw UsageError("--scenario: a saved state is drawn with its run's scenario (" +
-                     std::string(scenario_name(saved.run->config.scenario)) + ", from " + saved.run->record +
+                     std::string(enum_name(saved.run->config.scenario)) + ", from " + saved.run->record +
                      "); leave --scenario out");
-  const bool handles = has_layer(layers, vis::Layer::Handles);
-  const RunConfig config = saved_state_config(saved, parse_scenario(a.scenario, "--scenario: "));
+  const bool handles = has_layer(layers, vis::Layer::kHandles);
+  const RunConfig config = saved_state_config(saved, parse_enum<ScenarioKind>(a.scenario, "--scenario: "));
   Drawing d{saved_state_model(saved), {}, ""};
   d.state = saved_scene_state(saved, d.model, config, handles);
   d.caption = std::filesystem::path(saved.pattern.pattern).stem().string() + " " + d.model.fine_res.str();
@@ -113,9 +113,9 @@ Drawing saved_drawing(const RenderArgs& a, const std::vector<vis::Layer>& layers
                                            : std::filesystem::path(saved.frame).filename().string();
   if (saved.run)
     d.caption += ", " + saved.run->mode_at(saved.iteration.value_or(0)) + ", " + when + " of " +
-                 scenario_name(config.scenario);
+                 enum_name(config.scenario);
   else
-    d.caption += ", " + when + (handles ? std::string(", targets of ") + scenario_name(config.scenario) : "");
+    d.caption += ", " + when + (handles ? std::string(", targets of ") + enum_name(config.scenario) : "");
   return d;
 }
 
@@ -129,11 +129,11 @@ void render(const RenderArgs& a) {
   // The paper style draws the crease curves alone unless overlays are asked for.
   options.layers = vis::parse_layers(options.paper && a.overlay_opt->count() == 0 ? "crease-curves" : a.overlay);
   options.effects = vis::parse_paper_effects(a.effects);
-  options.scene.view = vis::parse_view(a.view);
+  options.scene.view = parse_enum<vis::View>(a.view);
   options.scene.coarse = a.coarse;
   options.transparent = a.transparent;
-  parse_mode(a.mode, "--mode: ");
-  parse_scenario(a.scenario, "--scenario: ");
+  parse_enum<ModeKind>(a.mode, "--mode: ");
+  parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
   if (!a.camera.empty()) options.camera = vis::load_camera(a.camera);
   // Fail on a missing display or an unusable output directory before the work.
   vis::require_display();
@@ -181,13 +181,13 @@ void register_render_command(CLI::App& app, Runner& run) {
       cmd->add_option("--iteration", args->iteration, "with --run: the frame of this iteration (one listed in frames.pvd)")
           ->check(CLI::Range(0, 100000000))
           ->needs(run_dir);
-  cmd->add_option("--mode", args->mode, "solver mode of the run (" + known_modes() + ")")
+  cmd->add_option("--mode", args->mode, "solver mode of the run (" + known_names<ModeKind>() + ")")
       ->capture_default_str()
       ->needs(args->iterations_opt);
   args->scenario_opt = cmd->add_option("--scenario", args->scenario,
                                        "scenario of the run, and whose targets the handles overlay shows without a "
                                        "run (a saved state: its run's scenario)")
-                           ->check(CLI::IsMember(scenario_names()))
+                           ->check(CLI::IsMember(enum_names<ScenarioKind>()))
                            ->capture_default_str();
   cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT in pixels")->capture_default_str();
   cmd->add_option("--camera", args->camera,

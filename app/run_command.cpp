@@ -94,7 +94,7 @@ nlohmann::json creases_json(const DogModel& model, const std::vector<CreaseFold>
   for (const CreaseFold& c : creases)
     out.push_back({{"crease", c.curve},
                    {"id", model.fine.stitching.curves[c.curve].id},
-                   {"assignment", fold_name(model.fine.stitching.curves[c.curve].fold)},
+                   {"assignment", enum_name(model.fine.stitching.curves[c.curve].fold)},
                    {"sites", c.sites},
                    {"bent", c.bent},
                    {"against_target", c.against},
@@ -118,7 +118,7 @@ std::vector<ModeSwitch> parse_switches(const std::vector<std::string>& texts) {
     }
     if (colon == std::string::npos || used != colon || k < 1)
       throw UsageError("--switch: expected ITERATION:MODE with ITERATION >= 1 (e.g. 100:twolevel), got '" + t + "'");
-    out.push_back({k, parse_mode(t.substr(colon + 1), "--switch " + t + ": ")});
+    out.push_back({k, parse_enum<ModeKind>(t.substr(colon + 1), "--switch " + t + ": ")});
   }
   return out;
 }
@@ -131,7 +131,7 @@ vis::SurfaceExport surface_export(const RunArgs& a) {
     if (a.out.empty()) throw UsageError("--export writes into the --out directory: add --out DIR");
   }
   exports.colour = vis::parse_colour_layer(a.export_colour, "--export-colour: ");
-  const bool ply = std::find(exports.formats.begin(), exports.formats.end(), vis::SurfaceFormat::Ply) !=
+  const bool ply = std::find(exports.formats.begin(), exports.formats.end(), vis::SurfaceFormat::kPly) !=
                    exports.formats.end();
   if (a.export_colour_opt->count() && !ply)
     throw UsageError("--export-colour colours the PLY files: add --export ply");
@@ -142,7 +142,7 @@ vis::SurfaceExport surface_export(const RunArgs& a) {
 std::string export_files_text(const vis::SurfaceSeries& surfaces, bool with_frames) {
   std::string text;
   for (vis::SurfaceFormat f : surfaces.exports().formats) {
-    const std::string ext = vis::format_extension(f);
+    const std::string ext = enum_name(f);
     text += ", surface." + ext;
     if (with_frames) text += " and " + std::to_string(surfaces.frame_count()) + " surface_NNNN." + ext;
   }
@@ -153,7 +153,7 @@ RunConfig run_config(const RunArgs& a) {
   RunConfig config;
   apply_preset_option(a.preset, false, config);
   if (!a.config.empty()) read_run_config(a.config, config);
-  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_scenario(a.scenario, "--scenario: ");
+  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
   if (a.iterations_opt->count()) config.iterations = a.iterations;
   if (a.hold_opt->count()) config.hold = a.hold;
   if (a.angle_opt->count()) config.fold_angle = a.angle;
@@ -172,7 +172,7 @@ nlohmann::json run_json(const RunArgs& a, RunSetup& setup, const RunSummary& sum
   const DogModel& model = setup.model();
   const Scenario& scenario = setup.scenario();
   nlohmann::json j = {
-      {"status", termination_name(summary.termination)},
+      {"status", enum_name(summary.termination)},
       {"pattern", a.pattern.pattern},
       {"resolution", {{"fine", model.fine_res.str()}, {"coarse", model.has_coarse ? model.coarse_res.str() : ""}}},
       {"mesh", {{"vertices", model.fine.vertex_count()}, {"quads", model.fine.quad_count()},
@@ -204,7 +204,7 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
   const IterationReport& last = summary.last;
   std::string modes = a.mode;
   for (const ModeSwitch& s : config.switches)
-    modes += std::string(", ") + mode_name(s.mode) + " from iteration " + std::to_string(s.iteration);
+    modes += std::string(", ") + enum_name(s.mode) + " from iteration " + std::to_string(s.iteration);
   const double final_tolerance = config.standard.sqp.final_constraint_tolerance;
   const bool within = within_final_tolerance(last.diagnostics, final_tolerance);
   std::cout << "sdog run: " << summary.iterations << " iterations of " << modes << " (" << setup.scenario().name
@@ -260,7 +260,7 @@ void report_success(const RunArgs& a, RunSetup& setup, const RunSummary& summary
 
 void run(const RunArgs& a) {
   const auto start = std::chrono::steady_clock::now();
-  const ModeKind mode = parse_mode(a.mode, "--mode: ");
+  const ModeKind mode = parse_enum<ModeKind>(a.mode, "--mode: ");
   set_thread_count(a.threads);
   const RunConfig config = run_config(a);
   const vis::SurfaceExport exports = surface_export(a);
@@ -334,7 +334,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
   CLI::App* cmd = app.add_subcommand("run", "Deform the DOG of a crease pattern with a solver mode over a scenario; "
                                             "write the run log, run.json and VTK frames");
   add_pattern_options(*cmd, a->pattern);
-  cmd->add_option("--mode", a->mode, "solver mode (" + known_modes() + ")")->capture_default_str();
+  cmd->add_option("--mode", a->mode, "solver mode (" + known_names<ModeKind>() + ")")->capture_default_str();
   cmd->add_option("--switch", a->switches,
                   "ITERATION:MODE: from that iteration on the run continues with MODE (repeatable, ascending; "
                   "$.switches)");
@@ -343,7 +343,7 @@ void register_run_command(CLI::App& app, Runner& runner) {
                                     "fold: every crease folds from flat towards its assignment, to its own angle or --angle; none: only the --config constraints; "
                                     "flatten: start with every crease folded to --angle, one corner held, nothing else "
                                     "asked (the thesis's ADMM test)")
-                        ->check(CLI::IsMember(scenario_names()))
+                        ->check(CLI::IsMember(enum_names<ScenarioKind>()))
                         ->capture_default_str();
   a->angle_opt = cmd->add_option("--angle", a->angle, "final dihedral angle of the fold scenario, start angle of the flatten scenario (degrees)")
                      ->check(CLI::Range(-180.0, 180.0))

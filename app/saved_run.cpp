@@ -20,7 +20,7 @@ void add_model_record(nlohmann::json& run_json, const PatternOptions& o) {
 std::string SavedRun::mode_at(int iteration) const {
   std::string current = mode;
   for (const ModeSwitch& s : config.switches)
-    if (s.iteration <= iteration) current = mode_name(s.mode);
+    if (s.iteration <= iteration) current = enum_name(s.mode);
   return current;
 }
 
@@ -33,7 +33,7 @@ SavedRun read_saved_run(const std::string& path) {
   SavedRun run;
   run.record = path;
   run.mode = root["mode"].text();
-  if (!find_mode(run.mode)) root["mode"].fail("unknown mode '" + run.mode + "' (known: " + known_modes() + ")");
+  if (!find_enum<ModeKind>(run.mode)) root["mode"].fail("unknown mode '" + run.mode + "' (known: " + known_names<ModeKind>() + ")");
   apply_run_config(j["config"], path + " ($.config)", run.config);
 
   PatternOptions& o = run.pattern;

@@ -104,7 +104,7 @@ Workspace saved_workspace(const SavedState& s, const DogModel& model, const std:
   w.pattern = s.pattern.pattern;
   w.resolution = model.fine_res.str();
   w.iteration = s.iteration.value_or(0);
-  w.mode = mode ? *mode : s.run ? s.run->mode_at(w.iteration) : mode_name(ModeKind::kStandard);
+  w.mode = mode ? *mode : s.run ? s.run->mode_at(w.iteration) : enum_name(ModeKind::kStandard);
   w.config = saved_state_config(s, ScenarioKind::kCorners);
   w.positions = to_dofs(s.data.positions);
   return w;

@@ -53,10 +53,10 @@ bool configure_window(sdog::studio::MainWindow& window, const StudioArgs& a) {
   try {
     const sdog::vis::ImageSize size = sdog::vis::parse_image_size(a.size);
     window.resize(size.width, size.height);
-    window.set_view(sdog::vis::parse_view(a.view));
+    window.set_view(sdog::parse_enum<sdog::vis::View>(a.view));
     if (!a.overlay.empty()) {
       const auto layers = sdog::vis::parse_layers(a.overlay);
-      for (sdog::vis::Layer l : sdog::vis::all_layers()) window.set_layer(l, false);
+      for (sdog::vis::Layer l : sdog::enum_values<sdog::vis::Layer>()) window.set_layer(l, false);
       for (sdog::vis::Layer l : layers) window.set_layer(l, true);
     }
   } catch (const sdog::UsageError& e) {

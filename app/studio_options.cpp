@@ -16,9 +16,9 @@ void add_studio_options(CLI::App& cli, StudioArgs& a) {
                  "unless given)");
   cli.add_option("--res", a.res, "grid lines XxY (odd values also build the coarse mesh), or auto: 41 along the longer side")
       ->capture_default_str();
-  cli.add_option("--mode", a.mode, "solver mode (" + known_modes() + ")")->capture_default_str();
+  cli.add_option("--mode", a.mode, "solver mode (" + known_names<ModeKind>() + ")")->capture_default_str();
   cli.add_option("--overlay", a.overlay,
-                 "comma-separated overlays to show instead of vertex-types,wireframe (" + vis::known_layers() + ")");
+                 "comma-separated overlays to show instead of vertex-types,wireframe (" + known_names<vis::Layer>() + ")");
   cli.add_option("--view", a.view, "3d, flat or side-by-side")->capture_default_str();
   cli.add_option("--iters", a.iterations, "step the solver N iterations first (from a saved state: N more)")
       ->check(CLI::Range(0, 100000));

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
+
 namespace sdog {
 
 enum class OptionType { kReal, kInteger, kBoolean, kChoice };
@@ -79,11 +81,12 @@ Option<S> boolean_option(const char* key, bool S::*member, const char* help) {
           [member](S& s, std::optional<double> v) { s.*member = *v != 0; }};
 }
 
-/// An enum member; names[i] is the name of the enum's value i.
+/// An enum member, its choices the names of its table (base/enum_names.h).
 template <class S, class E>
-Option<S> choice_option(const char* key, E S::*member, std::vector<std::string> names, const char* help) {
+Option<S> choice_option(const char* key, E S::*member, const char* help) {
+  const std::vector<std::string>& names = enum_names<E>();
   const double last = static_cast<double>(names.size()) - 1;
-  return {key, OptionType::kChoice, Bounds::between(0, last), std::move(names), help, {},
+  return {key, OptionType::kChoice, Bounds::between(0, last), names, help, {},
           [member](const S& s) { return std::optional<double>(static_cast<int>(s.*member)); },
           [member](S& s, std::optional<double> v) { s.*member = static_cast<E>(static_cast<int>(*v)); }};
 }

@@ -12,7 +12,7 @@ namespace {
 constexpr double kHalfTurn = 180;
 
 Fold fold_of_attribute(const std::string& value, const std::string& where) {
-  if (const std::optional<Fold> fold = find_fold(value)) return *fold;
+  if (const std::optional<Fold> fold = find_enum<Fold>(value)) return *fold;
   throw InputError(where + ": data-fold=\"" + value +
                    "\": expected \"mountain\", \"valley\", \"flat\" or \"unassigned\"");
 }

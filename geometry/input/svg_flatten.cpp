@@ -202,16 +202,16 @@ void flatten_ellipse(const Point& center, double rx, double ry, double tol, Poin
 
 void flatten_segment(const PathSegment& segment, double tol, PointSink& out) {
   switch (segment.kind) {
-    case SegmentKind::line:
+    case SegmentKind::kLine:
       out.push(segment.to);
       return;
-    case SegmentKind::quadratic:
+    case SegmentKind::kQuadratic:
       flatten_quadratic(segment.from, segment.c1, segment.to, tol, out);
       return;
-    case SegmentKind::cubic:
+    case SegmentKind::kCubic:
       flatten_cubic(segment.from, segment.c1, segment.c2, segment.to, tol, out);
       return;
-    case SegmentKind::arc:
+    case SegmentKind::kArc:
       flatten_arc(segment.from, segment.rx, segment.ry, segment.rotation_deg, segment.large_arc,
                   segment.sweep, segment.to, tol, out);
       return;

@@ -87,7 +87,7 @@ NumberScan scan_number(std::string_view text, std::size_t& pos, double& value) {
     if (int_digits || j > i + 1) i = j;
   }
   if (i == mantissa_begin)
-    return spells_non_finite(text, pos) ? NumberScan::not_finite : NumberScan::absent;
+    return spells_non_finite(text, pos) ? NumberScan::kNotFinite : NumberScan::kAbsent;
   const std::size_t mantissa_end = i;
   long long exponent = 0;
   if (i < n && (text[i] == 'e' || text[i] == 'E')) {
@@ -113,14 +113,14 @@ NumberScan scan_number(std::string_view text, std::size_t& pos, double& value) {
   const auto result = std::from_chars(first, last, v, std::chars_format::general);
   if (result.ec == std::errc::result_out_of_range) {
     if (overflows(text.substr(mantissa_begin, mantissa_end - mantissa_begin), exponent))
-      return NumberScan::not_finite;
+      return NumberScan::kNotFinite;
     v = 0;
   } else if (result.ec != std::errc() || result.ptr != last || !std::isfinite(v)) {
-    return NumberScan::not_finite;
+    return NumberScan::kNotFinite;
   }
   value = negative ? -v : v;
   pos = i;
-  return NumberScan::ok;
+  return NumberScan::kOk;
 }
 
 std::string position_note(std::string_view text, std::size_t pos) {
@@ -149,11 +149,11 @@ std::vector<double> parse_number_list(std::string_view text) {
   while (pos < text.size()) {
     double v = 0;
     switch (scan_number(text, pos, v)) {
-      case NumberScan::ok:
+      case NumberScan::kOk:
         break;
-      case NumberScan::not_finite:
+      case NumberScan::kNotFinite:
         throw ElementError("coordinate is not a finite number " + position_note(text, pos));
-      case NumberScan::absent:
+      case NumberScan::kAbsent:
         throw ElementError("expected a number " + position_note(text, pos));
     }
     numbers.push_back(v);
@@ -275,12 +275,12 @@ class PathParser {
     if (!first) skip_comma_wsp(d_, pos_);
     double v = 0;
     const std::size_t at = pos_;
-    switch (pos_ < d_.size() ? scan_number(d_, pos_, v) : NumberScan::absent) {
-      case NumberScan::ok:
+    switch (pos_ < d_.size() ? scan_number(d_, pos_, v) : NumberScan::kAbsent) {
+      case NumberScan::kOk:
         return v;
-      case NumberScan::not_finite:
+      case NumberScan::kNotFinite:
         fail("coordinate is not a finite number", at);
-      case NumberScan::absent:
+      case NumberScan::kAbsent:
         break;
     }
     fail(expected_number(command), at);
@@ -325,7 +325,7 @@ class PathParser {
 
   void line_to(const Point& p) {
     PathSegment s;
-    s.kind = SegmentKind::line;
+    s.kind = SegmentKind::kLine;
     s.to = p;
     add(s);
   }
@@ -404,7 +404,7 @@ class PathParser {
   /// C/c, or S/s (`smooth`: the first control point reflects the previous cubic's second one).
   void cubic_to(const Command& c, bool smooth) {
     PathSegment s;
-    s.kind = SegmentKind::cubic;
+    s.kind = SegmentKind::kCubic;
     if (smooth)
       s.c1 = last_was_cubic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
     else
@@ -418,7 +418,7 @@ class PathParser {
   /// Q/q, or T/t (`smooth`: the control point reflects the previous quadratic's one).
   void quadratic_to(const Command& c, bool smooth) {
     PathSegment s;
-    s.kind = SegmentKind::quadratic;
+    s.kind = SegmentKind::kQuadratic;
     if (smooth)
       s.c1 = last_was_quadratic_ ? checked(Point(current_ + (current_ - last_control_))) : current_;
     else
@@ -431,7 +431,7 @@ class PathParser {
   /// A/a.
   void arc_to(const Command& c) {
     PathSegment s;
-    s.kind = SegmentKind::arc;
+    s.kind = SegmentKind::kArc;
     s.rx = std::abs(number(c.letter, true));
     s.ry = std::abs(number(c.letter, false));
     s.rotation_deg = number(c.letter, false);
@@ -440,7 +440,7 @@ class PathParser {
     s.to = absolute(c, pair(c.letter, false));
     // F.6.2: identical endpoints omit the arc; a zero radius makes it a straight line.
     if (s.to == current_) return;
-    if (s.rx == 0 || s.ry == 0) s.kind = SegmentKind::line;
+    if (s.rx == 0 || s.ry == 0) s.kind = SegmentKind::kLine;
     add(s);
   }
 

@@ -84,7 +84,7 @@ std::vector<double> dash_lengths(const std::optional<std::string>& dasharray) {
   std::size_t pos = 0;
   while (pos < value.size()) {
     double v = 0;
-    if (svg::scan_number(value, pos, v) != svg::NumberScan::ok) return {1};
+    if (svg::scan_number(value, pos, v) != svg::NumberScan::kOk) return {1};
     values.push_back(std::abs(v));
     while (pos < value.size() && ((value[pos] >= 'a' && value[pos] <= 'z') || value[pos] == '%'))
       ++pos;  // unit
@@ -333,13 +333,13 @@ class Reader {
     if (style.stroke) {
       const svg::Paint stroke =
           guarded(node, "stroke", [&] { return svg::parse_paint(*style.stroke); });
-      if (stroke.kind == svg::Paint::Kind::color) return stroke.color;
-      if (stroke.kind == svg::Paint::Kind::current_color) return color_property();
+      if (stroke.kind == svg::Paint::Kind::kColor) return stroke.color;
+      if (stroke.kind == svg::Paint::Kind::kCurrentColor) return color_property();
     }
     if (style.fill) {
       const svg::Paint fill = guarded(node, "fill", [&] { return svg::parse_paint(*style.fill); });
-      if (fill.kind == svg::Paint::Kind::color) return fill.color;
-      if (fill.kind == svg::Paint::Kind::current_color) return color_property();
+      if (fill.kind == svg::Paint::Kind::kColor) return fill.color;
+      if (fill.kind == svg::Paint::Kind::kCurrentColor) return color_property();
     }
     return "#000000";  // SVG's initial fill; also what an unpainted line is taken to be
   }
@@ -426,10 +426,10 @@ class Reader {
         add(subpath.start);
         for (const PathSegment& segment : subpath.segments) {
           add(segment.to);
-          if (segment.kind == SegmentKind::quadratic || segment.kind == SegmentKind::cubic)
+          if (segment.kind == SegmentKind::kQuadratic || segment.kind == SegmentKind::kCubic)
             add(segment.c1);
-          if (segment.kind == SegmentKind::cubic) add(segment.c2);
-          if (segment.kind == SegmentKind::arc) {
+          if (segment.kind == SegmentKind::kCubic) add(segment.c2);
+          if (segment.kind == SegmentKind::kArc) {
             svg::ArcCenter arc;
             try {
               if (!svg::arc_center(segment.from, segment.rx, segment.ry, segment.rotation_deg,

@@ -199,7 +199,7 @@ std::string parse_rgb(std::string_view original, std::string_view lowered) {
   skip_wsp(inner, pos);
   while (pos < inner.size()) {
     double v = 0;
-    if (scan_number(inner, pos, v) != NumberScan::ok) bad_color(original);
+    if (scan_number(inner, pos, v) != NumberScan::kOk) bad_color(original);
     if (pos < inner.size() && inner[pos] == '%') {
       v = v * 255 / 100;  // not v * 2.55: 50% must give exactly 127.5, rounded to 128
       ++pos;
@@ -331,10 +331,10 @@ Affine parse_transform(std::string_view text) {
       if (!args.empty()) skip_comma_wsp(text, pos);
       double v = 0;
       const std::size_t at = pos;
-      const NumberScan scan = pos < text.size() ? scan_number(text, pos, v) : NumberScan::absent;
-      if (scan == NumberScan::not_finite)
+      const NumberScan scan = pos < text.size() ? scan_number(text, pos, v) : NumberScan::kAbsent;
+      if (scan == NumberScan::kNotFinite)
         transform_error("coordinate is not a finite number", text, at);
-      if (scan == NumberScan::absent)
+      if (scan == NumberScan::kAbsent)
         transform_error("expected a number or ')' in '" + std::string(name) + "(...)'", text, at);
       args.push_back(v);
       skip_wsp(text, pos);
@@ -371,7 +371,7 @@ Paint parse_paint(std::string_view text) {
   Paint paint;
   if (lowered == "none" || lowered == "transparent") return paint;
   if (lowered == "currentcolor") {
-    paint.kind = Paint::Kind::current_color;
+    paint.kind = Paint::Kind::kCurrentColor;
     return paint;
   }
   if (starts_with(lowered, "url(")) {
@@ -383,7 +383,7 @@ Paint parse_paint(std::string_view text) {
                          std::string(value) + "'; use a plain colour");
     return parse_paint(fallback);
   }
-  paint.kind = Paint::Kind::color;
+  paint.kind = Paint::Kind::kColor;
   paint.color = parse_color(value);
   return paint;
 }
@@ -507,7 +507,7 @@ double parse_opacity(std::string_view text) {
   const std::string_view value = trim(text);
   std::size_t pos = 0;
   double v = 0;
-  if (scan_number(value, pos, v) != NumberScan::ok)
+  if (scan_number(value, pos, v) != NumberScan::kOk)
     throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) + "'");
   const std::string_view rest = trim(value.substr(pos));
   if (rest == "%") v /= 100;
@@ -521,11 +521,11 @@ double parse_length(std::string_view text) {
   std::size_t pos = 0;
   double v = 0;
   switch (scan_number(value, pos, v)) {
-    case NumberScan::ok:
+    case NumberScan::kOk:
       break;
-    case NumberScan::not_finite:
+    case NumberScan::kNotFinite:
       throw ElementError("coordinate is not a finite number ('" + std::string(value) + "')");
-    case NumberScan::absent:
+    case NumberScan::kAbsent:
       throw ElementError("expected a length, found '" + std::string(value) + "'");
   }
   const std::string unit = to_lower(trim(value.substr(pos)));

@@ -9,20 +9,6 @@
 
 namespace sdog {
 
-const char* to_string(VertexType t) {
-  switch (t) {
-    case VertexType::Link:
-      return "link";
-    case VertexType::I:
-      return "I";
-    case VertexType::X:
-      return "X";
-    case VertexType::CoarseOnly:
-      return "coarse-only";
-  }
-  return "?";
-}
-
 std::vector<int> match_coarse_patches(const PatchLayout& fine, const PatchLayout& coarse) {
   const int nf = fine.patch_count, nc = coarse.patch_count;
   const int ccx = coarse.nx() - 1, fcx = fine.nx() - 1;
@@ -123,20 +109,20 @@ void map_vertices(const DogMesh& fine, const DogMesh& coarse, FineCoarseMap& map
     if (i % 2 == 0 && j % 2 == 0) {
       const int c = coarse.vertex_at(p, i / 2, j / 2);
       if (c < 0) throw uncovered(fine, f);
-      map.fine_type[f] = VertexType::Link;
+      map.fine_type[f] = VertexType::kLink;
       map.fine_to_coarse[f] = c;
       map.coarse_to_fine[c] = f;
-      map.coarse_type[c] = VertexType::Link;
+      map.coarse_type[c] = VertexType::kLink;
     } else if (i % 2 == 1 && j % 2 == 1) {
       auto it = coarse_quad.find({p, (i - 1) / 2, (j - 1) / 2});
       if (it == coarse_quad.end()) throw uncovered(fine, f);
-      map.fine_type[f] = VertexType::X;
+      map.fine_type[f] = VertexType::kX;
       map.fine_to_coarse_quad[f] = it->second;
     } else {
       const int a = coarse.vertex_at(p, (i - i % 2) / 2, (j - j % 2) / 2);
       const int b = coarse.vertex_at(p, (i + i % 2) / 2, (j + j % 2) / 2);
       if (a < 0 || b < 0) throw uncovered(fine, f);
-      map.fine_type[f] = VertexType::I;
+      map.fine_type[f] = VertexType::kI;
       map.fine_to_coarse_edge[f] = {a, b};
     }
   }
@@ -145,12 +131,12 @@ void map_vertices(const DogMesh& fine, const DogMesh& coarse, FineCoarseMap& map
 // The number of vertices of each type.
 void count_types(FineCoarseMap& map) {
   for (auto t : map.fine_type) {
-    if (t == VertexType::Link) ++map.link_count;
-    if (t == VertexType::I) ++map.i_count;
-    if (t == VertexType::X) ++map.x_count;
+    if (t == VertexType::kLink) ++map.link_count;
+    if (t == VertexType::kI) ++map.i_count;
+    if (t == VertexType::kX) ++map.x_count;
   }
   map.coarse_only_count = static_cast<int>(
-      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::CoarseOnly));
+      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::kCoarseOnly));
 }
 
 // Fine crease curve k against coarse curve k: coarse crease points are fine crease points at the
@@ -191,8 +177,8 @@ std::vector<FineCoarseMap::CurvePoint> map_curve(const CreaseStitching& fs,
 FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) {
   const int nf = fine.vertex_count(), nc = coarse.vertex_count();
   FineCoarseMap map;
-  map.fine_type.assign(nf, VertexType::X);
-  map.coarse_type.assign(nc, VertexType::CoarseOnly);
+  map.fine_type.assign(nf, VertexType::kX);
+  map.coarse_type.assign(nc, VertexType::kCoarseOnly);
   map.fine_to_coarse.assign(nf, -1);
   map.coarse_to_fine.assign(nc, -1);
   map.fine_to_coarse_edge.assign(nf, {-1, -1});

@@ -10,13 +10,23 @@
 #include <array>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "geometry/mesh/dog_mesh.h"
 #include "geometry/mesh/patch_layout.h"
 
 namespace sdog {
 
-enum class VertexType : int { Link = 0, I = 1, X = 2, CoarseOnly = 3 };
-const char* to_string(VertexType t);
+enum class VertexType : int { kLink = 0, kI = 1, kX = 2, kCoarseOnly = 3 };
+template <>
+struct EnumNames<VertexType> {
+  static constexpr const char* noun = "vertex type";
+  static constexpr EnumName<VertexType> rows[] = {
+      {VertexType::kLink, "link"},
+      {VertexType::kI, "I"},
+      {VertexType::kX, "X"},
+      {VertexType::kCoarseOnly, "coarse-only"},
+  };
+};
 
 struct FineCoarseMap {
   std::vector<VertexType> fine_type;                    ///< Link, I or X

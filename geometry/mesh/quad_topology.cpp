@@ -5,20 +5,6 @@
 
 namespace sdog {
 
-const char* to_string(VertexClass c) {
-  switch (c) {
-    case VertexClass::Star:
-      return "star";
-    case VertexClass::Bnd3:
-      return "bnd3";
-    case VertexClass::Bnd2:
-      return "bnd2";
-    case VertexClass::Bnd4:
-      return "bnd4";
-  }
-  return "?";
-}
-
 int QuadTopology::count(VertexClass c) const {
   return static_cast<int>(std::count(vertex_class.begin(), vertex_class.end(), c));
 }
@@ -49,13 +35,13 @@ QuadTopology quad_topology(const DogMesh& mesh) {
     const int nb = static_cast<int>(std::count_if(
         topo.neighbors[v].begin(), topo.neighbors[v].end(), [](int u) { return u >= 0; }));
     if (topo.quads_around[v] == 4)
-      topo.vertex_class[v] = VertexClass::Star;
+      topo.vertex_class[v] = VertexClass::kStar;
     else if (nb == 4)
-      topo.vertex_class[v] = VertexClass::Bnd4;
+      topo.vertex_class[v] = VertexClass::kBnd4;
     else if (nb == 3)
-      topo.vertex_class[v] = VertexClass::Bnd3;
+      topo.vertex_class[v] = VertexClass::kBnd3;
     else if (nb == 2)
-      topo.vertex_class[v] = VertexClass::Bnd2;
+      topo.vertex_class[v] = VertexClass::kBnd2;
     else
       throw std::logic_error("vertex " + std::to_string(v) + " has " + std::to_string(nb) +
                              " neighbours");

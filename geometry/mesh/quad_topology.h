@@ -9,12 +9,22 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "geometry/mesh/dog_mesh.h"
 
 namespace sdog {
 
-enum class VertexClass : int { Star = 0, Bnd3 = 1, Bnd2 = 2, Bnd4 = 3 };
-const char* to_string(VertexClass c);
+enum class VertexClass : int { kStar = 0, kBnd3 = 1, kBnd2 = 2, kBnd4 = 3 };
+template <>
+struct EnumNames<VertexClass> {
+  static constexpr const char* noun = "vertex class";
+  static constexpr EnumName<VertexClass> rows[] = {
+      {VertexClass::kStar, "star"},
+      {VertexClass::kBnd3, "bnd3"},
+      {VertexClass::kBnd2, "bnd2"},
+      {VertexClass::kBnd4, "bnd4"},
+  };
+};
 
 /// Neighbour slots, in cyclic (counter-clockwise) order, so that 0/2 and 1/3 are opposite.
 enum Direction : int { kXForward = 0, kYForward = 1, kXBackward = 2, kYBackward = 3 };

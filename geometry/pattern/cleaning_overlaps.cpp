@@ -110,7 +110,7 @@ void Cleaner::drop_overlapping_segments() {
     for (int j : duplicated) {
       std::string what = name(k) + " is drawn again along " + name(j) + "; merged into it";
       if (!creases_[j].folds_like(crease))
-        what += " (its assignment " + std::string(fold_name(crease.fold)) + " dropped for " + fold_name(creases_[j].fold) + ")";
+        what += " (its assignment " + std::string(enum_name(crease.fold)) + " dropped for " + enum_name(creases_[j].fold) + ")";
       warn(what);
     }
     // The runs of kept segments become creases (a closed crease starts after a dropped segment).

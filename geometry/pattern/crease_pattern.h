@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "geometry/pattern/plane_geometry.h"
 
 namespace sdog {
@@ -14,10 +15,16 @@ namespace sdog {
 /// How a crease folds, as the drawing says (the FOLD format's M, V, F and U).
 enum class Fold { kUnassigned, kMountain, kValley, kFlat };
 
-/// "unassigned", "mountain", "valley", "flat".
-const char* fold_name(Fold fold);
-/// The Fold named by fold_name, if any.
-std::optional<Fold> find_fold(const std::string& name);
+template <>
+struct EnumNames<Fold> {
+  static constexpr const char* noun = "fold";
+  static constexpr EnumName<Fold> rows[] = {
+      {Fold::kUnassigned, "unassigned"},
+      {Fold::kMountain, "mountain"},
+      {Fold::kValley, "valley"},
+      {Fold::kFlat, "flat"},
+  };
+};
 /// +1 valley, -1 mountain, 0 flat or unassigned: the sign of the fold angle (FOLD's convention).
 double fold_sign(Fold fold);
 

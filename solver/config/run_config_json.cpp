@@ -53,7 +53,7 @@ CreaseSetting crease_setting(const Field& f) {
   if (f.has("curve")) c.curve = f["curve"].integer(0);
   if (f.has("id")) c.id = f["id"].text();
   if (f.has("fold")) {
-    c.fold = find_fold(f["fold"].text());
+    c.fold = find_enum<Fold>(f["fold"].text());
     if (!c.fold) f["fold"].fail("unknown assignment \"" + f["fold"].text() + "\" (mountain, valley, flat or unassigned)");
   }
   if (f.has("angle")) {
@@ -68,8 +68,8 @@ ModeSwitch mode_switch(const Field& f) {
   f.expect_object({"iteration", "mode"});
   if (!f.has("iteration") || !f.has("mode")) f.fail("give \"iteration\" (1-based) and \"mode\"");
   const int iteration = f["iteration"].integer(1);
-  const std::optional<ModeKind> mode = find_mode(f["mode"].text());
-  if (!mode) f["mode"].fail("unknown mode \"" + f["mode"].text() + "\" (known: " + known_modes() + ")");
+  const std::optional<ModeKind> mode = find_enum<ModeKind>(f["mode"].text());
+  if (!mode) f["mode"].fail("unknown mode \"" + f["mode"].text() + "\" (known: " + known_names<ModeKind>() + ")");
   return {iteration, *mode};
 }
 
@@ -158,11 +158,11 @@ json to_json(const RunConfig& c) {
     json e = json::object();
     if (s.curve) e["curve"] = *s.curve;
     if (s.id) e["id"] = *s.id;
-    if (s.fold) e["fold"] = fold_name(*s.fold);
+    if (s.fold) e["fold"] = enum_name(*s.fold);
     if (s.angle) e["angle"] = *s.angle;
     creases.push_back(e);
   }
-  for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", mode_name(s.mode)}});
+  for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", enum_name(s.mode)}});
   j["positions"] = positions;
   j["angles"] = angles;
   j["creases"] = creases;

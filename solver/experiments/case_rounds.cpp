@@ -90,25 +90,13 @@ void run_once(CaseRuns& runs, const RunConfig& config, std::vector<RunObserver*>
   }
   record_run(r, s, totals, series);
   if (!s.failed()) return;
-  if (!record) throw SolverError(r.pattern + " " + r.res + " " + mode_name(r.mode) + ": " + s.failure);
+  if (!record) throw SolverError(r.pattern + " " + r.res + " " + enum_name(r.mode) + ": " + s.failure);
   r.status = CaseStatus::kFailed;
   r.note = s.failure;
   runs.stopped = true;
 }
 
 }  // namespace
-
-const char* status_name(CaseStatus s) {
-  switch (s) {
-    case CaseStatus::kCompleted:
-      return "completed";
-    case CaseStatus::kFailed:
-      return "failed";
-    case CaseStatus::kSkipped:
-      break;
-  }
-  return "skipped";
-}
 
 DogModel build_case_model(const Case& c) {
   MeshOptions mesh_options;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "geometry/mesh/dog_model.h"
 #include "solver/run/run.h"
 #include "solver/run/run_config.h"
@@ -33,7 +34,15 @@ struct SeriesPoint {
 /// "completed", "failed" (the solver stopped: diverged, failed factorisation), "skipped" (the mode
 /// cannot run the case, e.g. an even resolution for a mode that needs the coarse mesh).
 enum class CaseStatus { kCompleted, kFailed, kSkipped };
-const char* status_name(CaseStatus s);
+template <>
+struct EnumNames<CaseStatus> {
+  static constexpr const char* noun = "case status";
+  static constexpr EnumName<CaseStatus> rows[] = {
+      {CaseStatus::kCompleted, "completed"},
+      {CaseStatus::kFailed, "failed"},
+      {CaseStatus::kSkipped, "skipped"},
+  };
+};
 
 /// What the runs of a case measured.
 struct CaseResult {

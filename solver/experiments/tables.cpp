@@ -15,7 +15,7 @@ std::vector<std::string> bench_fields(const CaseResult& r) {
   const Work& w = r.window_work;
   return {r.pattern,
           r.res,
-          mode_name(r.mode),
+          enum_name(r.mode),
           std::to_string(r.vertices),
           std::to_string(r.dof),
           csv_number(r.median_ms, 4),
@@ -38,7 +38,7 @@ std::vector<std::string> compare_columns() {
 }
 
 std::vector<std::string> compare_fields(const CaseResult& r) {
-  std::vector<std::string> f{r.pattern, r.res, mode_name(r.mode)};
+  std::vector<std::string> f{r.pattern, r.res, enum_name(r.mode)};
   if (r.status == CaseStatus::kSkipped) {
     f.resize(compare_columns().size() - 2);
   } else {
@@ -49,7 +49,7 @@ std::vector<std::string> compare_fields(const CaseResult& r) {
                        csv_number(r.dog_max, 3), csv_number(r.dog_max_run, 3), csv_number(r.stitch_gap_max, 3),
                        r.folded ? "1" : "0"});
   }
-  f.push_back(status_name(r.status));
+  f.push_back(enum_name(r.status));
   f.push_back(r.note);
   return f;
 }
@@ -61,7 +61,7 @@ std::vector<std::string> series_columns() {
 std::string series_rows(const CaseResult& r) {
   std::string out;
   for (const auto& p : r.series)
-    out += csv_line({r.pattern, r.res, mode_name(r.mode), std::to_string(p.iteration), csv_number(p.objective, 9),
+    out += csv_line({r.pattern, r.res, enum_name(r.mode), std::to_string(p.iteration), csv_number(p.objective, 9),
                      csv_number(p.ms, 4), csv_number(p.dog_max, 3), csv_number(p.stitch_gap_max, 3)});
   return out;
 }

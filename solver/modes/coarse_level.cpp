@@ -19,7 +19,7 @@ const DogModel& checked(const DogModel& model, ModeKind mode) {
 
 void CoarseLevel::check_usable(const DogModel& model, ModeKind mode) {
   if (!model.has_coarse)
-    throw UsageError(std::string("mode ") + mode_name(mode) + " needs the coarse mesh (odd resolutions, not --fine-only)");
+    throw UsageError(std::string("mode ") + enum_name(mode) + " needs the coarse mesh (odd resolutions, not --fine-only)");
 }
 
 CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,

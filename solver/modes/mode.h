@@ -26,24 +26,6 @@ struct IterationContext {
   bool last() const { return iterations_left == 0; }
 };
 
-/// What settling (standard_mode.h) did in an iteration.
-enum class Settling {
-  kNone,      ///< nothing
-  kRunning,   ///< the fold straight from the run's start took an iteration; the state is unchanged
-  kKept,      ///< it ended and the run's own state, with the lower objective, stays
-  kReplaced,  ///< it ended with the lower objective and replaced the state
-};
-/// "", "running", "kept", "replaced".
-inline const char* settling_name(Settling s) {
-  switch (s) {
-    case Settling::kRunning: return "running";
-    case Settling::kKept: return "kept";
-    case Settling::kReplaced: return "replaced";
-    case Settling::kNone: break;
-  }
-  return "";
-}
-
 /// Solver-side facts of one iteration (the run driver adds the diagnostics).
 struct StepReport {
   Work work;
@@ -55,7 +37,9 @@ struct StepReport {
   /// How far along this iteration's requested target motion the reported targets are (1: all
   /// the way; less when a converging iteration approached far targets in sub-steps).
   double target_fraction = 1;
-  Settling settling = Settling::kNone;
+  /// What a mode's own policy did in the iteration besides its steps, as the run log's `settling`
+  /// column shows it (the standard mode's settling, settling_plan.h); empty: nothing.
+  std::string stage;
   bool failed = false;
   std::string failure;               ///< why; the mode rolled x back
   std::vector<PatchReport> patches;  ///< per-patch solves of the multi-patch modes, in patch order
@@ -65,7 +49,7 @@ class Mode {
  public:
   virtual ~Mode() = default;
   virtual ModeKind kind() const = 0;
-  const char* name() const { return mode_name(kind()); }
+  const char* name() const { return enum_name(kind()); }
   /// One iteration on the fine positions x with the targets of ctx.t (rolled back on failure).
   virtual StepReport iterate(const IterationContext& ctx, Dofs& x) = 0;
   /// Takes x as the state the next iteration starts from although the mode did not compute it
@@ -73,10 +57,6 @@ class Mode {
   /// the two-resolution modes) derives that state from x. Fresh modes of the other kinds need
   /// nothing: their multipliers and targets start from x in their first iteration.
   virtual void start_from(const Dofs& /*x*/) {}
-  /// The state the run started from when it is not the one this mode's first iteration starts
-  /// from (the studio makes a new mode after every edit); the standard mode settles from it
-  /// (standard_mode.h). The other modes ignore it.
-  virtual void set_origin(const Dofs& /*x*/) {}
   /// The coarse DOG's current state for modes that step a coarse mesh (coarse, twolevel), else
   /// nullptr; pictures and the studio show it next to the fine mesh.
   virtual const Dofs* coarse_positions() const { return nullptr; }

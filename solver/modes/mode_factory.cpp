@@ -12,7 +12,7 @@ namespace sdog {
 namespace {
 
 const DogModel& required(const DogModel* model, ModeKind mode) {
-  if (!model) throw std::logic_error(std::string("make_mode: mode ") + mode_name(mode) + " needs the model");
+  if (!model) throw std::logic_error(std::string("make_mode: mode ") + enum_name(mode) + " needs the model");
   return *model;
 }
 
@@ -24,15 +24,15 @@ void check_mode_usable(ModeKind mode, const DogModel& model) {
 
 std::unique_ptr<Mode> switch_mode(ModeKind mode, DogProblem& problem, const Scenario& scenario,
                                   const ModeOptions& options, const Weights& weights, const DogModel& model,
-                                  const Dofs& x) {
+                                  const Dofs& x, const Dofs* origin) {
   problem.weights = weights;
-  auto made = make_mode(mode, problem, scenario, options, &model);
+  auto made = make_mode(mode, problem, scenario, options, &model, origin);
   made->start_from(x);
   return made;
 }
 
 std::unique_ptr<Mode> make_mode(ModeKind mode, DogProblem& problem, const Scenario& scenario,
-                                const ModeOptions& options, const DogModel* model) {
+                                const ModeOptions& options, const DogModel* model, const Dofs* origin) {
   const SqpOptions& sqp = options.standard.sqp;
   switch (mode) {
     case ModeKind::kStandard: {
@@ -40,7 +40,8 @@ std::unique_ptr<Mode> make_mode(ModeKind mode, DogProblem& problem, const Scenar
       // creases, where local restoration steps cost more than the global ones they replace.
       StandardOptions standard = options.standard;
       if (standard.sqp.local_fraction < 0 && standard.stitching == Stitching::kExact) standard.sqp.local_fraction = 0;
-      return std::make_unique<StandardMode>(problem, scenario, standard);
+      return std::make_unique<StandardMode>(problem, scenario, standard,
+                                            origin ? std::optional<Dofs>(*origin) : std::nullopt);
     }
     case ModeKind::kSubsolvers:
       return std::make_unique<SubsolversMode>(problem, scenario, options.subsolvers, sqp);

@@ -4,10 +4,6 @@
 
 namespace sdog {
 
-std::vector<std::string> stitching_names() { return {"exact", "soft"}; }
-std::vector<std::string> patch_backend_names() { return {"sqp", "ceres"}; }
-std::vector<std::string> patch_sweep_names() { return {"jacobi", "colours"}; }
-
 const OptionTable<StandardOptions>& standard_option_table() {
   using O = StandardOptions;
   static const OptionTable<O> table = concatenate(
@@ -37,8 +33,7 @@ const OptionTable<StandardOptions>& standard_option_table() {
                          "once the targets rest and the shape has converged, also fold from the run's start "
                          "state straight to them and keep the fold with the lower objective (converging "
                          "iterations only)"),
-          choice_option("stitching", &O::stitching, stitching_names(),
-                        "exact: the copies of a crease point coincide as hard constraints; soft: only the "
+          choice_option("stitching", &O::stitching, "exact: the copies of a crease point coincide as hard constraints; soft: only the "
                         "stitching term pulls them together (the thesis)"),
       });
   return table;
@@ -48,10 +43,8 @@ const OptionTable<SubsolverOptions>& subsolver_option_table() {
   using O = SubsolverOptions;
   static const OptionTable<O> table = concatenate(
       OptionTable<O>{
-          choice_option("backend", &O::backend, patch_backend_names(),
-                        "how a patch step is solved: sqp (the standard solver on the patch) or ceres"),
-          choice_option("sweep", &O::sweep, patch_sweep_names(),
-                        "jacobi: every patch steps from the same state; colours: the patch graph's colours "
+          choice_option("backend", &O::backend, "how a patch step is solved: sqp (the standard solver on the patch) or ceres"),
+          choice_option("sweep", &O::sweep, "jacobi: every patch steps from the same state; colours: the patch graph's colours "
                         "one after another"),
       },
       nested_options(&O::patch, ceres_patch_option_table()));

@@ -3,6 +3,7 @@
 // the Qt settings panel and the configuration layer include this without the solvers.
 #include <string>
 
+#include "base/enum_names.h"
 #include "base/option_table.h"
 #include "solver/patches/ceres/ceres_patch_options.h"
 #include "solver/sqp/sqp_options.h"
@@ -12,6 +13,14 @@ namespace sdog {
 /// How the two copies of a crease point are held together: as hard constraints beside the DOG
 /// constraints (kExact) or by the soft stitching term alone (kSoft, the thesis).
 enum class Stitching { kExact, kSoft };
+template <>
+struct EnumNames<Stitching> {
+  static constexpr const char* noun = "stitching";
+  static constexpr EnumName<Stitching> rows[] = {
+      {Stitching::kExact, "exact"},
+      {Stitching::kSoft, "soft"},
+  };
+};
 
 /// The standard mode (standard_mode.h) and the standard iterations of the other modes.
 struct StandardOptions {
@@ -54,6 +63,22 @@ enum class PatchBackend { kSqp, kCeres };
 /// kJacobi: every patch steps at once from the same state; kColours: the patch graph's colours
 /// (patch_colouring.h) step one after another, each from the state the previous left.
 enum class PatchSweep { kJacobi, kColours };
+template <>
+struct EnumNames<PatchBackend> {
+  static constexpr const char* noun = "patch backend";
+  static constexpr EnumName<PatchBackend> rows[] = {
+      {PatchBackend::kSqp, "sqp"},
+      {PatchBackend::kCeres, "ceres"},
+  };
+};
+template <>
+struct EnumNames<PatchSweep> {
+  static constexpr const char* noun = "patch sweep";
+  static constexpr EnumName<PatchSweep> rows[] = {
+      {PatchSweep::kJacobi, "jacobi"},
+      {PatchSweep::kColours, "colours"},
+  };
+};
 
 /// The per-patch steps of the patch modes (subsolvers, twolevel).
 struct SubsolverOptions {
@@ -118,10 +143,6 @@ struct ModeOptions {
   AdmmOptions admm;
   TwoLevelOptions twolevel;
 };
-
-std::vector<std::string> stitching_names();
-std::vector<std::string> patch_backend_names();
-std::vector<std::string> patch_sweep_names();
 
 /// The keys of the configuration's "solver" (StandardOptions with its SqpOptions),
 /// "patch_solver" (SubsolverOptions with its CeresPatchOptions), "coarse", "twolevel" and "admm"

@@ -10,19 +10,6 @@
 namespace sdog {
 namespace {
 
-// Each retry multiplies the fold-bias weight by this.
-constexpr double kFoldBiasGrowth = 10;
-// The smallest continuation sub-step (fraction of the remaining target motion); when even it is
-// not kept the iteration leaves x where it was.
-constexpr double kSmallestSubstep = 1.0 / 1024;
-// A sub-step that moves the targets at most this fraction of max_target_step is short.
-constexpr double kShortSubstep = 1.0 / 4;
-// Held iterations in a row that do not lower the objective below the lowest one since the targets
-// last moved (by more than converged_decrease) before the state counts as converged.
-constexpr int kHeldWithoutProgress = 5;
-// Iterations of the straight fold at most; a settling that has not converged by then is dropped.
-constexpr int kMaxSettlingIterations = 200;
-
 // The largest side of the bounding box of the rest state.
 double sheet_size(const Dofs& rest) {
   const auto p = rest.reshaped(3, rest.size() / 3);
@@ -37,16 +24,24 @@ struct StandardMode::StraightFold {
   int iterations = 0;
 };
 
-StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options)
+StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options,
+                           std::optional<Dofs> origin)
     : problem_(problem),
       scenario_(scenario),
       options_(options),
       constraints_(problem, options.stitching),
-      base_fold_bias_(problem.weights.fold_bias),
+      ladder_(problem.weights.fold_bias, options.max_fold_bias,
+              [this](double weight) {
+                problem_.weights.fold_bias = weight;
+                sqp_->set_weight(kFoldBias, weight);
+              }),
+      substeps_(options.substep_step_length),
+      held_(options.sqp.converged_decrease),
+      settling_(options.settle, std::move(origin)),
       steps_{options.max_target_step * sheet_size(problem.rest()), options.max_angle_step * M_PI / 180} {
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
-  if (!options_.folding) problem_.weights.fold_bias = 0;
+  if (!options_.folding) problem_.weights.fold_bias = 0;  // before the solver reads the weights
   sqp_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(),
                                      constraints_.term(), options_.sqp);
 }
@@ -108,25 +103,23 @@ StepReport StandardMode::attempt(Dofs& x, bool last, int max_steps) {
   const FoldCheck check = check_folded(problem_.mesh(), problem_.free_sites, x);
   report.folded = check.folded;
   if (report.folded) {
-    set_fold_bias(base_fold_bias_);
+    ladder_.to_base();
     return report;
   }
   const bool converging = max_steps > 0;
-  if (converging && ladder_failed_) return report;
+  if (converging && !ladder_.may_climb()) return report;
   escalate_fold_bias(x, x0, lambda0, last, max_steps, check.violations, constraint_max, report);
-  if (converging && !report.folded) ladder_failed_ = true;
+  if (converging && !report.folded) ladder_.climb_failed();
   return report;
 }
 
 StepReport StandardMode::converge(Dofs& x, bool last) {
   const Targets goal = Targets::of(problem_);
-  if (goals_ == 0) away_from_origin_ = origin_ && *origin_ != x;  // this mode's first iteration
-  if (!origin_) origin_ = x;
+  settling_.begin_iteration(x);
   if (!goal_ || !goal_->matches(goal) || goal_->distance(goal, steps_) > 0) {
     goal_ = goal;
-    ++goals_;
-    settled_ = false;
-    settling_.reset();
+    settling_.new_goal();
+    straight_.reset();
   }
   if (!reached_ || !reached_->matches(goal)) {
     reached_ = Targets::met_by(problem_, x);
@@ -135,18 +128,18 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   const double distance = reached_->distance(goal, steps_);
   if (distance > 0) {
     converged_ = false;
-    held_best_.reset();
+    held_.reset();
   }
   StepReport report;
   if (converged_ && !last) {  // nothing left to do but settling: no factorisation of x
     report.converged = true;
-    if (wants_settling()) settle(x, report);
+    if (settling_.wanted()) settle(x, report);
     return report;
   }
   // The last iteration from a converged folded state: what it falls back on (finish_folded).
   std::optional<std::pair<Dofs, Eigen::VectorXd>> converged_folded;
   if (last && converged_ && options_.folding && folded(x)) converged_folded.emplace(x, sqp_->multipliers());
-  ladder_failed_ = false;
+  ladder_.new_iteration();
   if (distance > 0) {
     report = follow(x, goal, distance);
   } else {  // held targets: steps until converged
@@ -156,13 +149,13 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
     report.target_fraction = report.failed ? 0 : 1;
   }
   // A raised fold bias serves the iteration that raised it only.
-  if (options_.folding) set_fold_bias(base_fold_bias_);
-  if (distance == 0 && !report.failed && !converged_ && !lowers_objective(x) &&
+  if (options_.folding) ladder_.to_base();
+  if (distance == 0 && !report.failed && !converged_ && !held_.lowers(sqp_->objective(x)) &&
       sqp_->constraint_values(x).lpNorm<Eigen::Infinity>() <= options_.sqp.constraint_tolerance) {
     converged_ = true;
     report.converged = true;
   }
-  if (converged_ && !last && wants_settling()) settle(x, report);
+  if (converged_ && !last && settling_.wanted()) settle(x, report);
   if (last && !report.failed) finish(x, report);
   if (converged_folded && (report.failed || !report.folded)) finish_folded(x, *converged_folded, report);
   return report;
@@ -189,60 +182,52 @@ void StandardMode::finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>
   report = std::move(again);
 }
 
-bool StandardMode::wants_settling() const {
-  return options_.settle && !settled_ && (goals_ > 1 || away_from_origin_);
-}
-
 void StandardMode::settle(Dofs& x, StepReport& report) {
-  if (!settling_) {
+  if (!straight_) {
     StandardOptions options = options_;
     options.settle = false;
-    settling_ = std::make_unique<StraightFold>();
-    settling_->mode = std::make_unique<StandardMode>(problem_, scenario_, options);  // installs the scenario
-    settling_->x = *origin_;
+    straight_ = std::make_unique<StraightFold>();
+    straight_->mode = std::make_unique<StandardMode>(problem_, scenario_, options);  // installs the scenario
+    straight_->x = settling_.origin();
   }
   goal_->install(problem_);
-  const StepReport r = settling_->mode->step(settling_->x, false);
+  const StepReport r = straight_->mode->step(straight_->x, false);
   goal_->install(problem_);  // the straight fold may have stopped short of them
   report.work += r.work;
-  ++settling_->iterations;
+  ++straight_->iterations;
   const bool done = r.failed || (r.converged.value_or(false) && r.target_fraction >= 1);
-  if (!done && settling_->iterations < kMaxSettlingIterations) {
+  if (!done && straight_->iterations < SettlingPlan::kMaxIterations) {
     report.converged = false;
-    report.settling = Settling::kRunning;
+    report.stage = settling_stage::kRunning;
     return;
   }
-  report.settling = Settling::kKept;
+  report.stage = settling_stage::kKept;
   if (done && !r.failed) {
     // Both compared as a run's last iteration leaves them, at the final constraint tolerance: the
     // projection there raises the objective by up to several percent, differently for each state.
     finish(x, report);
     StepReport straight;
-    settling_->mode->finish(settling_->x, straight);
+    straight_->mode->finish(straight_->x, straight);
     report.work += straight.work;
-    // The straight fold replaces the state when it is folded and bends no more fold sites against
-    // their angle targets; with as many, when the state is unfolded or its objective is higher.
     const double f = weighted_objective(problem_, x);
-    const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
-    const int against = angle_agreement(problem_, x).all_against();
-    const int straight_against = angle_agreement(problem_, settling_->x).all_against();
-    if (straight.folded && (straight_against < against ||
-                            (straight_against == against &&
-                             (!report.folded || weighted_objective(problem_, settling_->x) < f - margin)))) {
-      x = settling_->x;
-      sqp_->set_multipliers(settling_->mode->sqp().multipliers());
-      report.settling = Settling::kReplaced;
+    const SettledFold run{report.folded, angle_agreement(problem_, x).all_against(), f};
+    const SettledFold other{straight.folded, angle_agreement(problem_, straight_->x).all_against(),
+                            weighted_objective(problem_, straight_->x)};
+    if (straight_fold_wins(run, other, options_.sqp.converged_decrease * std::max(std::abs(f), 1.0))) {
+      x = straight_->x;
+      sqp_->set_multipliers(straight_->mode->sqp().multipliers());
+      report.stage = settling_stage::kReplaced;
       report.folded = true;
     }
   }
-  settling_.reset();
-  settled_ = true;
+  straight_.reset();
+  settling_.done();
   report.converged = true;
 }
 
 StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   // Distances count sub-steps of the largest size (steps_).
-  if (distance <= kShortSubstep) {  // targets that move little, as in the thesis protocol
+  if (SubstepSchedule::short_move(distance)) {  // targets that move little, as in the thesis protocol
     goal.install(problem_);
     StepReport report = attempt(x, false, 0);
     if (!report.failed) reached_ = goal;
@@ -259,17 +244,16 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   for (int attempts = 0; attempts < options_.max_iteration_steps; ++attempts) {
     const double remaining = reached_->distance(goal, steps_);
     if (remaining == 0) break;
-    const double s = std::min({1.0, 1 / remaining, substep_});
+    const double s = substeps_.next(remaining);
     const Targets at = reached_->towards(goal, s);
     at.install(problem_);
     const Dofs x0 = x;
     const Eigen::VectorXd lambda0 = sqp_->multipliers();
     StepReport r = attempt(x, false, 1);
     report.work += r.work;
-    const bool smallest = s <= kSmallestSubstep;
-    if (!r.failed && (r.step_length >= options_.substep_step_length || s * remaining <= kShortSubstep || smallest)) {
+    if (substeps_.keeps(s, remaining, r.failed, r.step_length)) {
       reached_ = at;
-      substep_ = std::min(1.0, 2 * substep_);
+      substeps_.kept();
       report.step_length = r.step_length;
       rejected.reset();
       continue;
@@ -277,8 +261,8 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     x = x0;
     sqp_->set_multipliers(lambda0);
     rejected = std::move(r);
-    if (smallest) break;  // x stays where it was, at the targets it met
-    substep_ = std::min(substep_, s) / 2;
+    if (SubstepSchedule::smallest(s)) break;  // x stays where it was, at the targets it met
+    substeps_.rejected(s);
   }
   sqp_->set_restoration_tolerance(0);
   reached_->install(problem_);
@@ -298,18 +282,6 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   }
   report.folded = folded(x);
   return report;
-}
-
-bool StandardMode::lowers_objective(const Dofs& x) {
-  const double f = sqp_->objective(x);
-  const double margin = options_.sqp.converged_decrease * std::max(std::abs(f), 1.0);
-  if (!held_best_ || f < *held_best_ - margin) {
-    held_best_ = f;
-    held_without_progress_ = 0;
-    return true;
-  }
-  held_best_ = std::min(*held_best_, f);
-  return ++held_without_progress_ < kHeldWithoutProgress;
 }
 
 void StandardMode::finish(Dofs& x, StepReport& report) {
@@ -337,12 +309,12 @@ void StandardMode::finish(Dofs& x, StepReport& report) {
     if (!folded(x)) {
       const Dofs first = x;
       const double first_constraint_max = constraint_max_;
-      double weight = base_fold_bias_;
+      double weight = ladder_.base();
       while (!folded(x) && raise_fold_bias(weight, report)) {
         x = x0;
         project(x, report);
       }
-      set_fold_bias(base_fold_bias_);
+      ladder_.to_base();
       if (!folded(x) || !x.allFinite() || !(iteration_residual(x) <= residual0)) {
         x = first;
         constraint_max_ = first_constraint_max;
@@ -406,45 +378,35 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
     sqp_->set_multipliers(best.lambda);
     report.step_length = best.step_length;
     report.converged = best.converged;
-    set_fold_bias(base_fold_bias_);
+    ladder_.to_base();
   }
 }
 
 void StandardMode::start_from(const Dofs&) {
   sqp_->set_multipliers(Eigen::VectorXd::Zero(sqp_->multipliers().size()));
-  if (!origin_given_) origin_.reset();
+  settling_.restart();
   goal_.reset();
-  goals_ = 0;
-  settling_.reset();
-  settled_ = false;
+  straight_.reset();
   restore_first_ = options_.stitching == Stitching::kExact;
   reached_.reset();
-  held_best_.reset();
-  substep_ = 1;
+  held_.reset();
+  substeps_.reset();
   converged_ = false;
-  if (options_.folding) set_fold_bias(base_fold_bias_);
-}
-
-void StandardMode::set_origin(const Dofs& x) {
-  origin_ = x;
-  origin_given_ = true;
+  if (options_.folding) ladder_.to_base();
 }
 
 void StandardMode::set_folding(bool on) {
   options_.folding = on;
-  set_fold_bias(on ? base_fold_bias_ : 0.0);
+  if (on)
+    ladder_.to_base();
+  else
+    ladder_.off();
 }
 
 bool StandardMode::raise_fold_bias(double& weight, StepReport& report) {
-  if (!(weight > 0 && weight * kFoldBiasGrowth <= options_.max_fold_bias)) return false;
-  set_fold_bias(weight *= kFoldBiasGrowth);
+  if (!ladder_.raise(weight)) return false;
   ++report.work.fold_retries;
   return true;
-}
-
-void StandardMode::set_fold_bias(double weight) {
-  problem_.weights.fold_bias = weight;
-  sqp_->set_weight(kFoldBias, weight);
 }
 
 }  // namespace sdog

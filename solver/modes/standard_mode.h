@@ -36,24 +36,28 @@
 // once an escalation has ended unfolded the iteration's later sub-steps take none. The last
 // iteration of a run projects x to the final constraint tolerance (finish()).
 //
-// Settling (StandardOptions::settle, with converging iterations). A folded sheet has several
-// stationary states a few percent apart in objective, and which one a run reaches depends on the
-// path its targets took. Once the targets have come to rest and the state has converged, the mode
-// also folds the sheet from the state the run started from (the first iteration's, or
-// set_origin's) straight to the resting targets, one iteration of its own per held iteration of
-// the run; once that has converged, both states are projected to the final constraint tolerance
-// (finish(), which changes their objectives by different amounts) and the folded one with the
-// lower objective is kept, there. The held iterations report the shape converged only once that
-// is done. A run whose targets moved
-// once from the origin (set at once) has taken that straight path already and does not settle; a
-// target that moves again drops a settling in progress.
+// Settling (StandardOptions::settle, with converging iterations; settling_plan.h). Once the
+// targets have come to rest and the state has converged, the mode also folds the sheet from the
+// origin straight to the resting targets, one iteration of its own per held iteration of the run;
+// once that has converged, both states are projected to the final constraint tolerance (finish(),
+// which changes their objectives by different amounts) and the better fold is kept, there. The
+// held iterations report the shape converged only once that is done; a target that moves again
+// drops a settling in progress.
+//
+// The policies are small classes of their own: the fold-bias ladder (fold_bias_ladder.h), the
+// sub-step sizes of continuation (substep_schedule.h), convergence of held iterations without
+// progress (held_progress.h) and settling (settling_plan.h).
 #include <memory>
 #include <optional>
 #include <utility>
 
+#include "solver/modes/fold_bias_ladder.h"
 #include "solver/modes/hard_constraints.h"
+#include "solver/modes/held_progress.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
+#include "solver/modes/settling_plan.h"
+#include "solver/modes/substep_schedule.h"
 #include "solver/problem/dog_problem.h"
 #include "solver/problem/targets.h"
 
@@ -63,15 +67,16 @@ class SqpSolver;
 
 class StandardMode : public Mode {
  public:
-  /// The problem must outlive the mode; the scenario is installed into it.
-  StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options);
+  /// The problem must outlive the mode; the scenario is installed into it. `origin`: the state the
+  /// run started from when this mode's first iteration does not start there (settling_plan.h).
+  StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options,
+               std::optional<Dofs> origin = std::nullopt);
   ~StandardMode() override;
   ModeKind kind() const override { return ModeKind::kStandard; }
   StepReport iterate(const IterationContext& ctx, Dofs& x) override;
   /// Zero multipliers and the base fold bias: a fresh start from x. With exact stitching the next
   /// iteration first restores the constraints (a state from a patch mode has gaps at the creases).
   void start_from(const Dofs& x) override;
-  void set_origin(const Dofs& x) override;
 
   /// Sets the targets of scenario time t.
   void set_time(double t);
@@ -92,12 +97,6 @@ class StandardMode : public Mode {
   StepReport converge(Dofs& x, bool last);
   /// Continuation sub-steps from reached_ towards `goal`, `distance` away (moved targets).
   StepReport follow(Dofs& x, const Targets& goal, double distance);
-  /// After a held iteration that has not converged: false once kHeldWithoutProgress held
-  /// iterations in a row have not lowered the objective by more than converged_decrease below its
-  /// lowest value since the targets last moved.
-  bool lowers_objective(const Dofs& x);
-  /// The targets have come to rest and x has converged, but settling has not been done for them.
-  bool wants_settling() const;
   /// One iteration of the straight fold from origin_ (settling), and at its end the choice of the
   /// lower state; report.converged becomes true when the settling is done.
   void settle(Dofs& x, StepReport& report);
@@ -118,35 +117,24 @@ class StandardMode : public Mode {
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
   void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int max_steps,
                           int violations, double constraint_max, StepReport& report);
-  /// The next rung of a fold-bias escalation: weight raised kFoldBiasGrowth times and installed,
-  /// a retry counted in `report`; false (nothing changed) once that would pass max_fold_bias.
+  /// The next rung of the fold-bias ladder, a retry counted in `report`; false at the top.
   bool raise_fold_bias(double& weight, StepReport& report);
-  void set_fold_bias(double weight);
   DogProblem& problem_;
   Scenario scenario_;
   StandardOptions options_;
   HardConstraints constraints_;
   std::unique_ptr<SqpSolver> sqp_;
-  double base_fold_bias_;
+  FoldBiasLadder ladder_;
+  SubstepSchedule substeps_;
+  HeldProgress held_;
+  SettlingPlan settling_;
   bool restore_first_ = false;
   std::optional<Targets> reached_;  ///< the targets the state was last solved for
-  double substep_ = 1;              ///< of the next continuation sub-step
   bool converged_ = false;          ///< x is converged for reached_
-  std::optional<double> held_best_;  ///< lowest objective of the held iterations since a move
-  int held_without_progress_ = 0;    ///< held iterations in a row that did not lower it
-  /// A fold-bias escalation of this converging iteration ended unfolded: its later sub-steps
-  /// take none (each would climb the whole ladder again, a solve per rung).
-  bool ladder_failed_ = false;
-  std::optional<Dofs> origin_;     ///< the state settling folds from
-  bool origin_given_ = false;      ///< by set_origin
-  /// This mode's first iteration started elsewhere than at origin_ (the path there is not known).
-  bool away_from_origin_ = false;
-  std::optional<Targets> goal_;    ///< the targets last requested
-  int goals_ = 0;                  ///< distinct target sets this mode was asked for
+  std::optional<Targets> goal_;     ///< the targets last requested
   struct StraightFold;
-  std::unique_ptr<StraightFold> settling_;  ///< the straight fold in progress
-  bool settled_ = false;                ///< settling is done for goal_
-  double constraint_max_ = 0;       ///< after the last solve
+  std::unique_ptr<StraightFold> straight_;  ///< settling's straight fold in progress
+  double constraint_max_ = 0;               ///< after the last solve
   /// The largest continuation sub-step: max_target_step of the largest side of the rest state's
   /// bounding box, max_angle_step.
   TargetSteps steps_;

@@ -12,18 +12,6 @@ bool within_final_tolerance(const Diagnostics& d, double final_constraint_tolera
   return d.dog_max <= 2 * final_constraint_tolerance && d.stitch_gap_max <= 2 * final_constraint_tolerance;
 }
 
-const char* termination_name(Termination t) {
-  switch (t) {
-    case Termination::kCompleted:
-      return "completed";
-    case Termination::kFailed:
-      return "failed";
-    case Termination::kCancelled:
-      break;
-  }
-  return "cancelled";
-}
-
 IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
                               int iterations_left) {
   IterationReport report;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "solver/modes/mode.h"
 #include "solver/problem/diagnostics.h"
 
@@ -35,7 +36,15 @@ enum class Termination {
   kFailed,     ///< an iteration failed (rolled back: x is the last good state)
   kCancelled,  ///< the cancel flag was raised
 };
-const char* termination_name(Termination t);  ///< "completed", "failed", "cancelled"
+template <>
+struct EnumNames<Termination> {
+  static constexpr const char* noun = "termination";
+  static constexpr EnumName<Termination> rows[] = {
+      {Termination::kCompleted, "completed"},
+      {Termination::kFailed, "failed"},
+      {Termination::kCancelled, "cancelled"},
+  };
+};
 
 struct RunSummary {
   int iterations = 0;  ///< completed iterations

@@ -6,38 +6,6 @@
 #include "base/text_format.h"
 
 namespace sdog {
-namespace {
-
-// The value of enum E whose name (names[i] names value i) is `name`; else UsageError
-// "`what`unknown `noun` 'name' (known: ...)".
-template <class E>
-E parse_name(const std::vector<std::string>& names, const std::string& name, const char* noun,
-             const std::string& what) {
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end())
-    throw UsageError(what + "unknown " + noun + " '" + name + "' (known: " + join(names, ", ") + ")");
-  return static_cast<E>(it - names.begin());
-}
-
-}  // namespace
-
-std::vector<std::string> scenario_names() { return {"corners", "fold", "none", "flatten"}; }
-
-const char* scenario_name(ScenarioKind scenario) {
-  static const char* names[] = {"corners", "fold", "none", "flatten"};
-  return names[static_cast<int>(scenario)];
-}
-
-ScenarioKind parse_scenario(const std::string& name, const std::string& what) {
-  return parse_name<ScenarioKind>(scenario_names(), name, "scenario", what);
-}
-
-std::vector<std::string> preset_names() { return {"default", "thesis"}; }
-
-Preset parse_preset(const std::string& name, const std::string& what) {
-  return parse_name<Preset>(preset_names(), name, "preset", what);
-}
-
 void apply_preset(Preset preset, RunConfig& o) {
   const StandardOptions defaults;
   const bool thesis = preset == Preset::kThesis;
@@ -52,11 +20,9 @@ void apply_preset(Preset preset, RunConfig& o) {
 const OptionTable<RunConfig>& run_option_table() {
   using C = RunConfig;
   static const OptionTable<C> table = {
-      choice_option("preset", &C::preset, preset_names(),
-                    "default: exact stitching, converging iterations; thesis: the thesis's solver (soft stitching, "
+      choice_option("preset", &C::preset, "default: exact stitching, converging iterations; thesis: the thesis's solver (soft stitching, "
                     "one step per iteration, no factorisation budget for the polish, a shorter projection), for its numbers; applied before the other keys (also --preset)"),
-      choice_option("scenario", &C::scenario, scenario_names(),
-                    "corners: the thesis protocol; fold: every crease folds from flat to angle; none: only the "
+      choice_option("scenario", &C::scenario, "corners: the thesis protocol; fold: every crease folds from flat to angle; none: only the "
                     "listed constraints; flatten: a folded sheet is left to unfold (also --scenario)"),
       integer_option("iterations", &C::iterations, Bounds::at_least(0),
                      "iterations over which the targets move (also --iters)"),

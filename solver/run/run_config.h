@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "base/errors.h"
 #include "base/option_table.h"
 #include "geometry/pattern/crease_pattern.h"
@@ -19,19 +20,30 @@ namespace sdog {
 
 /// The scenarios of `sdog run --scenario` (problem/scenario.h and flatten_scenario.h).
 enum class ScenarioKind { kCorners, kFold, kNone, kFlatten };
-std::vector<std::string> scenario_names();
-const char* scenario_name(ScenarioKind scenario);
-/// Throws UsageError "`what`unknown scenario 'name' (known: ...)" unless `name` is a scenario.
-ScenarioKind parse_scenario(const std::string& name, const std::string& what = "");
+template <>
+struct EnumNames<ScenarioKind> {
+  static constexpr const char* noun = "scenario";
+  static constexpr EnumName<ScenarioKind> rows[] = {
+      {ScenarioKind::kCorners, "corners"},
+      {ScenarioKind::kFold, "fold"},
+      {ScenarioKind::kNone, "none"},
+      {ScenarioKind::kFlatten, "flatten"},
+  };
+};
 
 /// Named sets of solver settings. kDefault: exact stitching, a polish with a factorisation
 /// budget. kThesis: the thesis's solver, for reproducing its numbers: soft stitching (weight 10), a
 /// polish without a budget and a projection of kThesisProjectionSteps steps per phase, one step per
 /// iteration, the fold bias up to 1e14 and the angle weight 1000.
 enum class Preset { kDefault, kThesis };
-std::vector<std::string> preset_names();
-/// Throws UsageError "`what`unknown preset 'name' (known: ...)" unless `name` is a preset.
-Preset parse_preset(const std::string& name, const std::string& what = "");
+template <>
+struct EnumNames<Preset> {
+  static constexpr const char* noun = "preset";
+  static constexpr EnumName<Preset> rows[] = {
+      {Preset::kDefault, "default"},
+      {Preset::kThesis, "thesis"},
+  };
+};
 
 /// A position constraint before it is resolved against a mesh.
 struct PositionSpec {

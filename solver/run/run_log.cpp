@@ -53,7 +53,7 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"converged",
        [](const R& r) { return r.step.converged ? std::string(*r.step.converged ? "1" : "0") : std::string(); }},
       {"target_fraction", [](const R& r) { return number(r.step.target_fraction); }},
-      {"settling", [](const R& r) { return std::string(settling_name(r.step.settling)); }},
+      {"settling", [](const R& r) { return r.step.stage; }},
       {"elapsed_ms", [](const R& r) { return number(r.elapsed_ms); }},
       {"direction_agreement",
        [](const R& r) {

@@ -108,7 +108,7 @@ void check_scenario_targets(const Scenario& s, const RunConfig& c, const std::st
     throw UsageError("the fold scenario found no fold sites in " + where +
                      " (crease points strictly inside a grid edge between two patches; creases through grid "
                      "vertices only have none: try another resolution)");
-  throw UsageError(std::string("the run has no targets: scenario '") + scenario_name(c.scenario) +
+  throw UsageError(std::string("the run has no targets: scenario '") + enum_name(c.scenario) +
                    "' and no position or angle constraints in the configuration");
 }
 

@@ -51,8 +51,7 @@ void Session::rebuild() {
   for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
   for (const auto& a : user_.angles)
     scenario_.angles.push_back({a.crease_point, a.degrees, a.degrees});
-  mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_);
-  mode_->set_origin(origin_);
+  mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_, &origin_);
 }
 
 IterationReport Session::step() {
@@ -184,7 +183,7 @@ void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fo
                        std::to_string(existing.size()) + " creases after cleaning)");
   if (angle && !(*angle >= 0 && *angle <= 180)) throw InputError("a fold angle must be in [0, 180] degrees");
   if (!fold && !angle) return;
-  const std::string what = fold ? fold_name(*fold) : std::to_string(static_cast<int>(std::lround(*angle))) + " degrees";
+  const std::string what = fold ? enum_name(*fold) : std::to_string(static_cast<int>(std::lround(*angle))) + " degrees";
   undo_.push_back({user_, config_.creases,
                    (curves.size() == 1 ? "set crease " + std::to_string(curves[0]) : "set " + std::to_string(curves.size()) + " creases") +
                        " " + what});

@@ -7,8 +7,9 @@
 // user's constraints, which hold their targets from the start. Every edit rebuilds the mode on the
 // current positions (switch_mode; the modes keep their own copy of the targets, and adding or
 // removing a constraint changes the solver's sparsity pattern) and tells it the session's start
-// state (Mode::set_origin), from which the standard mode settles. Undo and redo restore the user's
-// constraints and crease assignments, not the positions: the sheet stays where the solver put it.
+// state (switch_mode's origin), from which the standard mode settles. Undo and redo restore the
+// user's constraints and crease assignments, not the positions: the sheet stays where the solver
+// put it.
 //
 // The session solves its own copy of the model with the run configuration's crease settings
 // (config().creases, crease_settings.h) applied. The user's assignment and angle edits become
@@ -151,7 +152,7 @@ class Session {
   std::unique_ptr<Mode> mode_;
   Dofs x_;
   /// The state the session started from (the start state, or the sheet tilted towards a fold);
-  /// every mode is told it (Mode::set_origin).
+  /// every mode is told it (switch_mode's origin).
   Dofs origin_;
   int iteration_ = 0;
   UserConstraints user_;

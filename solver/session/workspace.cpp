@@ -21,7 +21,7 @@ Workspace workspace_of(const Session& session, const std::string& pattern, const
   Workspace w;
   w.pattern = pattern;
   w.resolution = resolution;
-  w.mode = mode_name(session.mode());
+  w.mode = enum_name(session.mode());
   w.iteration = session.iteration();
   w.config = session.config();
   w.constraints = session.constraints();

@@ -13,9 +13,9 @@ LinearPointTerm make_bending_term(const QuadTopology& topology, const Dofs& rest
       coefficients.push_back({v, inv});
       coefficients.push_back({u, -inv});
     };
-    if (topology.vertex_class[v] == VertexClass::Star) {
+    if (topology.vertex_class[v] == VertexClass::kStar) {
       for (int u : nb) add_neighbour(u, 1.0);
-    } else if (topology.vertex_class[v] == VertexClass::Bnd3) {
+    } else if (topology.vertex_class[v] == VertexClass::kBnd3) {
       // The missing direction is opposite the inner neighbour; the other two lie on the boundary.
       int missing = 0;
       while (nb[missing] >= 0) ++missing;

@@ -8,11 +8,11 @@ DogConstraints::DogConstraints(const QuadTopology& topology) {
   const int n = static_cast<int>(topology.vertex_class.size());
   for (int v = 0; v < n; ++v) {
     const auto& nb = topology.neighbors[v];
-    if (topology.vertex_class[v] == VertexClass::Star) {
+    if (topology.vertex_class[v] == VertexClass::kStar) {
       add_block({v, nb[0], nb[1], nb[2], nb[3]}, 3);
       first_row_.push_back(rows_);
       rows_ += 3;
-    } else if (topology.vertex_class[v] == VertexClass::Bnd3) {
+    } else if (topology.vertex_class[v] == VertexClass::kBnd3) {
       int missing = 0;
       while (nb[missing] >= 0) ++missing;
       add_block({v, nb[(missing + 1) % 4], nb[(missing + 2) % 4], nb[(missing + 3) % 4]}, 1);

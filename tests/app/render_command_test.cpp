@@ -34,7 +34,7 @@ TEST(RenderCommand, DefaultIsTheVertexTypePicture) {
   // Nothing but what sdog says: no VTK log lines.
   EXPECT_EQ(r.err.find("ERR|"), std::string::npos) << r.err;
   auto img = test::read_png(dir + "/types.png");
-  EXPECT_GT(test::pixels_near(img, vis::vertex_type_color(VertexType::CoarseOnly)), 5);
+  EXPECT_GT(test::pixels_near(img, vis::vertex_type_color(VertexType::kCoarseOnly)), 5);
 }
 
 TEST(RenderCommand, UnknownOverlayListsTheKnownOnes) {

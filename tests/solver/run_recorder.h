@@ -38,13 +38,13 @@ inline RunResult run_setup(RunSetup& setup) {
 /// Runs `mode` with `scenario` (made from the configuration) on the model's fine mesh.
 inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config,
                           const Scenario& scenario) {
-  RunSetup setup(model, parse_mode(mode_name), config, scenario);
+  RunSetup setup(model, parse_enum<ModeKind>(mode_name), config, scenario);
   return run_setup(setup);
 }
 
 /// Runs `mode` with the configuration's scenario on the model's fine mesh.
 inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config) {
-  RunSetup setup(model, parse_mode(mode_name), config);
+  RunSetup setup(model, parse_enum<ModeKind>(mode_name), config);
   return run_setup(setup);
 }
 
@@ -114,7 +114,7 @@ inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name, c
   const RunResult standard = run_mode("standard", model, config, scenario);
   ASSERT_FALSE(standard.summary.failed()) << standard.summary.failure;
   DogProblem problem(model.fine, model.fine_topology, config.weights);
-  auto mode = make_mode(parse_mode(mode_name), problem, scenario, config, &model);
+  auto mode = make_mode(parse_enum<ModeKind>(mode_name), problem, scenario, config, &model);
   Dofs x = standard.x;
   scenario.apply(problem, 1.0);  // the final targets, held
   const Diagnostics start = diagnose(problem, x);

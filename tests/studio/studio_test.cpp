@@ -53,6 +53,8 @@
 
 using sdog::studio::MainWindow;
 namespace vis = sdog::vis;
+using sdog::enum_name;
+using sdog::enum_values;
 
 namespace {
 
@@ -114,8 +116,8 @@ class StudioTest : public QObject {
   /// Clicks crease k where the view draws the middle of it, as the mouse does (the flat view, the
   /// crease-curves overlay on).
   void click_crease(int k) {
-    window_->set_view(vis::View::Flat);
-    window_->set_layer(vis::Layer::CreaseCurves, true);
+    window_->set_view(vis::View::kFlat);
+    window_->set_layer(vis::Layer::kCreaseCurves, true);
     window_->reset_camera();
     QApplication::processEvents();
     const sdog::DogMesh& fine = window_->model()->fine;
@@ -164,9 +166,9 @@ class StudioTest : public QObject {
 
   void toggles_every_overlay() {
     open();
-    for (vis::Layer layer : vis::all_layers()) {
+    for (vis::Layer layer : enum_values<vis::Layer>()) {
       window_->set_layer(layer, true);
-      QVERIFY2(window_->scene()->layer_on(layer), vis::layer_name(layer));
+      QVERIFY2(window_->scene()->layer_on(layer), enum_name(layer));
       QVERIFY(window_->layer_action(layer)->isChecked());
       QVERIFY(window_->scene()->layer_data(layer) != nullptr);
       window_->set_layer(layer, false);
@@ -174,11 +176,11 @@ class StudioTest : public QObject {
       QVERIFY(!window_->layer_action(layer)->isChecked());
     }
     // One colour layer at a time: the menu follows the scene.
-    window_->set_layer(vis::Layer::VertexTypes, true);
-    window_->set_layer(vis::Layer::DogResidual, true);
-    QVERIFY(!window_->layer_action(vis::Layer::VertexTypes)->isChecked());
-    QVERIFY(window_->layer_action(vis::Layer::DogResidual)->isChecked());
-    for (vis::View view : {vis::View::Flat, vis::View::SideBySide, vis::View::ThreeD}) {
+    window_->set_layer(vis::Layer::kVertexTypes, true);
+    window_->set_layer(vis::Layer::kDogResidual, true);
+    QVERIFY(!window_->layer_action(vis::Layer::kVertexTypes)->isChecked());
+    QVERIFY(window_->layer_action(vis::Layer::kDogResidual)->isChecked());
+    for (vis::View view : {vis::View::kFlat, vis::View::kSideBySide, vis::View::kThreeD}) {
       window_->set_view(view);
       QCOMPARE(window_->scene()->options().view, view);
     }
@@ -312,7 +314,7 @@ class StudioTest : public QObject {
   void picks_and_drags_with_the_mouse() {
     QVERIFY(window_->set_scenario("none"));
     open();
-    window_->set_layer(vis::Layer::Handles, true);
+    window_->set_layer(vis::Layer::kHandles, true);
     window_->reset_camera();
     const int v = window_->model()->fine.vertex_count() - 1;
     const Eigen::Vector3d p = window_->snapshot()->state.fine.row(v).transpose();
@@ -391,7 +393,7 @@ class StudioTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), selected, kWait);
     const int handle = static_cast<int>(selected) - 1;  // the corner's
     QCOMPARE(window_->snapshot()->constraints.handles[handle].vertex, corner);
-    window_->set_layer(vis::Layer::Handles, true);
+    window_->set_layer(vis::Layer::kHandles, true);
 
     // Shift + drag of the corner's handle: the target follows the mouse while the button is down.
     const Eigen::Vector3d rest = window_->snapshot()->constraints.handles[handle].target;
@@ -473,12 +475,12 @@ class StudioTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(fold_of(*window_, k), flipped, kWait);
     window_->set_crease_angle(60);
     QTRY_VERIFY_WITH_TIMEOUT(angle_of(*window_, k) == 60.0, kWait);
-    const QString assignment = QString(sdog::fold_name(flipped)) + ", 60 degrees";
+    const QString assignment = QString(sdog::enum_name(flipped)) + ", 60 degrees";
     QVERIFY2(window_->inspector_text().contains(assignment), qPrintable(window_->inspector_text()));
     // The run configuration carries the edit; the crease-curves overlay colours the crease.
     QVERIFY(!window_->run_config().creases.empty());
     QCOMPARE(window_->run_config().creases.back().curve, std::optional<int>(k));
-    vtkDataArray* codes = window_->scene()->layer_data(vis::Layer::CreaseCurves)->GetCellData()->GetArray("assignment");
+    vtkDataArray* codes = window_->scene()->layer_data(vis::Layer::kCreaseCurves)->GetCellData()->GetArray("assignment");
     QVERIFY(codes != nullptr);
     QCOMPARE(static_cast<int>(codes->GetTuple1(k)), static_cast<int>(flipped));
 
@@ -680,7 +682,7 @@ class StudioTest : public QObject {
     QVERIFY(window_->export_surface(dir.filePath("shape")));
     QVERIFY(QFileInfo(dir.filePath("shape.obj")).size() > 1000);
     QVERIFY(window_->status_text().contains(dir.filePath("shape.obj")));
-    window_->set_layer(vis::Layer::DogResidual, true);
+    window_->set_layer(vis::Layer::kDogResidual, true);
     QVERIFY(window_->export_surface(dir.filePath("shape.PLY")));
     QVERIFY(window_->status_text().contains(dir.filePath("shape.PLY")));
     auto reader = vtkSmartPointer<vtkPLYReader>::New();
@@ -691,7 +693,7 @@ class StudioTest : public QObject {
     const sdog::DogModel& m = *window_->model();
     const sdog::TrimmedSurface surface = sdog::trimmed_surface(m.fine, window_->snapshot()->state.fine);
     const auto colours =
-        vis::surface_colours(vis::Layer::DogResidual, surface, vis::frame_arrays(m, window_->snapshot()->state.fields));
+        vis::surface_colours(vis::Layer::kDogResidual, surface, vis::frame_arrays(m, window_->snapshot()->state.fields));
     QCOMPARE(rgb->GetNumberOfTuples(), static_cast<vtkIdType>(colours.size()));
     for (size_t v = 0; v < colours.size(); ++v)
       for (int k = 0; k < 3; ++k) QCOMPARE(rgb->GetComponent(static_cast<vtkIdType>(v), k), double(colours[v][k]));
@@ -769,9 +771,9 @@ class StudioTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
     QCOMPARE(iteration(), 10);  // half way: the handles' targets are those of t = 0.5
     QCOMPARE(window_->snapshot()->mode, std::string("standard"));
-    for (vis::Layer l : vis::all_layers()) window_->set_layer(l, false);
-    for (vis::Layer l : {vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::CreaseCurves}) window_->set_layer(l, true);
-    window_->set_view(vis::View::ThreeD);
+    for (vis::Layer l : enum_values<vis::Layer>()) window_->set_layer(l, false);
+    for (vis::Layer l : {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kCreaseCurves}) window_->set_layer(l, true);
+    window_->set_view(vis::View::kThreeD);
     const QString camera = dir.filePath("camera.json"), studio = dir.filePath("studio.png");
     QVERIFY(window_->save_camera(camera));
     QVERIFY(window_->export_screenshot(studio, {640, 400}, false));

@@ -377,7 +377,7 @@ class WorkdayTest : public QObject {
   // it, it becomes a handle (one undoable edit with the drag), and the sheet follows.
   void drags_a_scenario_corner() {
     open();
-    window_->set_layer(vis::Layer::Handles, true);
+    window_->set_layer(vis::Layer::kHandles, true);
     steps(3);
     window_->reset_camera();
     QVERIFY(window_->snapshot()->constraints.handles.empty());
@@ -463,17 +463,17 @@ class WorkdayTest : public QObject {
   // The wireframe is on for small meshes and off from 61 grid lines on, unless the user set it.
   void wireframe_default_follows_the_mesh_size() {
     open("21x21");
-    QVERIFY(window_->layer_action(vis::Layer::Wireframe)->isChecked());
-    QVERIFY(window_->scene()->layer_on(vis::Layer::Wireframe));
+    QVERIFY(window_->layer_action(vis::Layer::kWireframe)->isChecked());
+    QVERIFY(window_->scene()->layer_on(vis::Layer::kWireframe));
     QVERIFY(window_->change_resolution("81x81"));
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
-    QVERIFY(!window_->layer_action(vis::Layer::Wireframe)->isChecked());
-    QVERIFY(!window_->scene()->layer_on(vis::Layer::Wireframe));
+    QVERIFY(!window_->layer_action(vis::Layer::kWireframe)->isChecked());
+    QVERIFY(!window_->scene()->layer_on(vis::Layer::kWireframe));
     QVERIFY(window_->change_resolution("21x21"));
-    QVERIFY(window_->scene()->layer_on(vis::Layer::Wireframe));
-    window_->set_layer(vis::Layer::Wireframe, false);  // the user's choice stays
+    QVERIFY(window_->scene()->layer_on(vis::Layer::kWireframe));
+    window_->set_layer(vis::Layer::kWireframe, false);  // the user's choice stays
     QVERIFY(window_->change_resolution("41x41"));
-    QVERIFY(!window_->scene()->layer_on(vis::Layer::Wireframe));
+    QVERIFY(!window_->scene()->layer_on(vis::Layer::kWireframe));
     QVERIFY(errors_.isEmpty());
   }
 

@@ -101,7 +101,7 @@ TEST(PanelTitles, DoNotOverlapInANarrowSideBySideView) {
     auto window = offscreen_window(size);
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
     window->AddRenderer(renderer);
-    SceneOptions options{View::SideBySide, false, 20};
+    SceneOptions options{View::kSideBySide, false, 20};
     Scene scene(test::arcs_model(), renderer, options);
     scene.reset_camera();
     window->Render();

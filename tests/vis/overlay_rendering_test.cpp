@@ -61,19 +61,19 @@ using vis::View;
 // Each overlay alone (plus crease curves where the picture needs them to be read), in the view
 // where it says the most.
 const OverlayCase kCases[] = {
-    {"overlay_vertex_types", {Layer::VertexTypes, Layer::CreaseCurves, Layer::Wireframe}, View::SideBySide, false, Run::Rest},
-    {"overlay_links", {Layer::Links, Layer::VertexTypes}, View::ThreeD, true, Run::TwoLevel},
-    {"overlay_patches", {Layer::Patches, Layer::CreaseCurves}, View::Flat, false, Run::Rest},
-    {"overlay_dog_residual", {Layer::DogResidual}, View::ThreeD, false, Run::Standard},
-    {"overlay_edge_strain", {Layer::EdgeStrain}, View::ThreeD, false, Run::Standard},
-    {"overlay_stitch_gap", {Layer::StitchGap, Layer::CreaseCurves}, View::ThreeD, false, Run::Standard},
-    {"overlay_bending", {Layer::Bending}, View::ThreeD, false, Run::Standard},
-    {"overlay_handles", {Layer::Handles, Layer::Wireframe}, View::ThreeD, false, Run::RestWithTargets},
-    {"overlay_crease_curves", {Layer::CreaseCurves}, View::ThreeD, false, Run::Standard},
-    {"overlay_wireframe", {Layer::Wireframe}, View::ThreeD, false, Run::Standard},
-    {"overlay_patches_side_by_side", {Layer::Patches}, View::SideBySide, false, Run::Rest},
-    {"overlay_dog_residual_flat", {Layer::DogResidual, Layer::CreaseCurves}, View::Flat, false, Run::Standard},
-    {"overlay_full_cells", {Layer::FullCells, Layer::Patches}, View::ThreeD, false, Run::Standard},
+    {"overlay_vertex_types", {Layer::kVertexTypes, Layer::kCreaseCurves, Layer::kWireframe}, View::kSideBySide, false, Run::Rest},
+    {"overlay_links", {Layer::kLinks, Layer::kVertexTypes}, View::kThreeD, true, Run::TwoLevel},
+    {"overlay_patches", {Layer::kPatches, Layer::kCreaseCurves}, View::kFlat, false, Run::Rest},
+    {"overlay_dog_residual", {Layer::kDogResidual}, View::kThreeD, false, Run::Standard},
+    {"overlay_edge_strain", {Layer::kEdgeStrain}, View::kThreeD, false, Run::Standard},
+    {"overlay_stitch_gap", {Layer::kStitchGap, Layer::kCreaseCurves}, View::kThreeD, false, Run::Standard},
+    {"overlay_bending", {Layer::kBending}, View::kThreeD, false, Run::Standard},
+    {"overlay_handles", {Layer::kHandles, Layer::kWireframe}, View::kThreeD, false, Run::RestWithTargets},
+    {"overlay_crease_curves", {Layer::kCreaseCurves}, View::kThreeD, false, Run::Standard},
+    {"overlay_wireframe", {Layer::kWireframe}, View::kThreeD, false, Run::Standard},
+    {"overlay_patches_side_by_side", {Layer::kPatches}, View::kSideBySide, false, Run::Rest},
+    {"overlay_dog_residual_flat", {Layer::kDogResidual, Layer::kCreaseCurves}, View::kFlat, false, Run::Standard},
+    {"overlay_full_cells", {Layer::kFullCells, Layer::kPatches}, View::kThreeD, false, Run::Standard},
 };
 
 const OverlayCase& find_case(const std::string& baseline) {
@@ -100,18 +100,18 @@ INSTANTIATE_TEST_SUITE_P(EveryOverlay, OverlayRendering, ::testing::ValuesIn(kCa
                          [](const auto& info) { return std::string(info.param.baseline).substr(8); });
 
 TEST(OverlayRendering, EveryOverlayHasABaselineCase) {
-  for (Layer l : vis::all_layers()) {
+  for (Layer l : enum_values<vis::Layer>()) {
     bool found = false;
     for (const auto& c : kCases) found |= c.layers.front() == l;
-    EXPECT_TRUE(found) << vis::layer_name(l);
+    EXPECT_TRUE(found) << enum_name(l);
   }
 }
 
 TEST(OverlayRendering, EveryLayerColourAppearsInThePicture) {
   const std::string types = render(find_case("overlay_vertex_types"), "types.png");
   auto img = test::read_png(types);
-  for (VertexType t : {VertexType::Link, VertexType::I, VertexType::X, VertexType::CoarseOnly})
-    EXPECT_GT(pixels_near(img, vis::vertex_type_color(t)), 20) << to_string(t);
+  for (VertexType t : {VertexType::kLink, VertexType::kI, VertexType::kX, VertexType::kCoarseOnly})
+    EXPECT_GT(pixels_near(img, vis::vertex_type_color(t)), 20) << enum_name(t);
   EXPECT_GT(pixels_near(img, vis::kCreasePointColor), 20);
   auto handles = test::read_png(render(find_case("overlay_handles"), "handles.png"));
   EXPECT_GT(pixels_near(handles, vis::kHandleColor), 10);
@@ -138,13 +138,13 @@ TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
 
   fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_handles.png", dir + "/overlay_handles.png");
   OverlayCase no_handles = find_case("overlay_handles");
-  no_handles.layers = {Layer::Wireframe};
+  no_handles.layers = {Layer::kWireframe};
   EXPECT_FALSE(test::compare_with_baseline(render(no_handles, "no_handles.png"), "overlay_handles", {}, dir).empty());
 
   // A thin layer missing (the crease lines and points of the vertex-type picture) is caught too.
   fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_stitch_gap.png", dir + "/overlay_stitch_gap.png");
   OverlayCase no_creases = find_case("overlay_stitch_gap");
-  no_creases.layers = {Layer::StitchGap};
+  no_creases.layers = {Layer::kStitchGap};
   EXPECT_FALSE(test::compare_with_baseline(render(no_creases, "no_creases.png"), "overlay_stitch_gap", {}, dir).empty());
 
   // The same picture again passes and clears what a failure kept.
@@ -157,8 +157,8 @@ TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
 // caption; the sheet fills the picture.
 TEST(OverlayRendering, ThePaperStyleMatchesItsBaselineAndDrawsNoLegend) {
   vis::PictureOptions options;
-  options.layers = {Layer::CreaseCurves};
-  options.scene = {View::ThreeD, false, 0};
+  options.layers = {Layer::kCreaseCurves};
+  options.scene = {View::kThreeD, false, 0};
   options.size = {640, 360};
   options.paper = true;
   options.caption = "a caption the paper style leaves out";

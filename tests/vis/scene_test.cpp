@@ -38,9 +38,9 @@ struct SceneTest : ::testing::Test {
 
 TEST_F(SceneTest, LinksLayerHasOneLinePerLinkVertexFromFineToCoarseTwin) {
   const DogModel& m = arcs_model();
-  vis::Scene scene(m, renderer, {vis::View::ThreeD, true});
+  vis::Scene scene(m, renderer, {vis::View::kThreeD, true});
   scene.update(arcs_twolevel_state());
-  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Links));
+  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::kLinks));
   ASSERT_NE(links, nullptr);
   ASSERT_EQ(links->GetNumberOfLines(), m.map.link_count);
   const auto& s = arcs_twolevel_state();
@@ -65,8 +65,8 @@ TEST_F(SceneTest, LinksLayerHasOneLinePerLinkVertexFromFineToCoarseTwin) {
 
 TEST_F(SceneTest, SideBySideLinksEndOnTheShiftedCoarseMesh) {
   const DogModel& m = arcs_model();
-  vis::Scene scene(m, renderer, {vis::View::SideBySide, false});
-  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Links));
+  vis::Scene scene(m, renderer, {vis::View::kSideBySide, false});
+  auto* links = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::kLinks));
   const double shift = 1.12 * (m.fine.xs.back() - m.fine.xs.front());
   double a[3], b[3];
   links->GetPoint(0, a);
@@ -80,7 +80,7 @@ TEST_F(SceneTest, LogResidualArrayIsLog10OfTheResiduals) {
   vis::Scene scene(m, renderer);
   const vis::SceneState& s = arcs_standard_state();
   scene.update(s);
-  vtkDataArray* log_r = scene.layer_data(vis::Layer::DogResidual)->GetPointData()->GetArray("log10_dog_residual");
+  vtkDataArray* log_r = scene.layer_data(vis::Layer::kDogResidual)->GetPointData()->GetArray("log10_dog_residual");
   ASSERT_NE(log_r, nullptr);
   ASSERT_EQ(log_r->GetNumberOfTuples(), m.fine.vertex_count());
   int above_floor = 0;
@@ -117,7 +117,7 @@ TEST_F(SceneTest, StitchGapPerCreasePointIsTheDistanceBetweenCopies) {
   }
   vis::Scene scene(m, renderer);
   scene.update(s);
-  vtkDataSet* glyphs = scene.layer_data(vis::Layer::StitchGap);
+  vtkDataSet* glyphs = scene.layer_data(vis::Layer::kStitchGap);
   ASSERT_EQ(glyphs->GetNumberOfPoints(), static_cast<vtkIdType>(m.fine.stitching.points.size()));
   vtkDataArray* radius = glyphs->GetPointData()->GetArray("radius");
   for (size_t k = 0; k < s.fields.stitch_gap.size(); ++k)
@@ -131,7 +131,7 @@ TEST_F(SceneTest, HandlesJoinEachHandleToItsTarget) {
   EXPECT_GT(s.constraints.angle_sites.size(), 0u);
   vis::Scene scene(m, renderer);
   scene.update(s);
-  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::Handles));
+  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::kHandles));
   ASSERT_EQ(lines->GetNumberOfLines(), 2);
   for (int k = 0; k < 2; ++k) {
     double h[3], t[3];
@@ -149,7 +149,7 @@ TEST_F(SceneTest, CreaseCurvesAreColouredByAssignment) {
   const auto& curves = m.fine.stitching.curves;
   ASSERT_GE(curves.size(), 2u);
   vis::Scene scene(m, renderer);
-  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::CreaseCurves));
+  auto* lines = vtkPolyData::SafeDownCast(scene.layer_data(vis::Layer::kCreaseCurves));
   ASSERT_NE(lines, nullptr);
   vtkDataArray* code = lines->GetCellData()->GetArray("assignment");
   ASSERT_NE(code, nullptr);
@@ -175,43 +175,43 @@ TEST_F(SceneTest, CreaseCurvesAreColouredByAssignment) {
 
 TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {
   vis::Scene scene(arcs_model(), renderer);
-  scene.set_layer(vis::Layer::DogResidual, true);
-  scene.set_layer(vis::Layer::Handles, true);
-  scene.set_layer(vis::Layer::StitchGap, true);
-  EXPECT_EQ(scene.colour_layer(), vis::Layer::DogResidual);
-  scene.set_layer(vis::Layer::Bending, true);
-  EXPECT_FALSE(scene.layer_on(vis::Layer::DogResidual));
-  EXPECT_TRUE(scene.layer_on(vis::Layer::Bending));
-  EXPECT_TRUE(scene.layer_on(vis::Layer::Handles));  // not colour layers: untouched
-  EXPECT_TRUE(scene.layer_on(vis::Layer::StitchGap));
-  EXPECT_EQ(scene.colour_layer(), vis::Layer::Bending);
-  EXPECT_FALSE(scene.legend_prop(vis::Layer::DogResidual)->GetVisibility());
-  EXPECT_TRUE(scene.legend_prop(vis::Layer::Bending)->GetVisibility());
-  scene.set_layer(vis::Layer::Bending, false);
+  scene.set_layer(vis::Layer::kDogResidual, true);
+  scene.set_layer(vis::Layer::kHandles, true);
+  scene.set_layer(vis::Layer::kStitchGap, true);
+  EXPECT_EQ(scene.colour_layer(), vis::Layer::kDogResidual);
+  scene.set_layer(vis::Layer::kBending, true);
+  EXPECT_FALSE(scene.layer_on(vis::Layer::kDogResidual));
+  EXPECT_TRUE(scene.layer_on(vis::Layer::kBending));
+  EXPECT_TRUE(scene.layer_on(vis::Layer::kHandles));  // not colour layers: untouched
+  EXPECT_TRUE(scene.layer_on(vis::Layer::kStitchGap));
+  EXPECT_EQ(scene.colour_layer(), vis::Layer::kBending);
+  EXPECT_FALSE(scene.legend_prop(vis::Layer::kDogResidual)->GetVisibility());
+  EXPECT_TRUE(scene.legend_prop(vis::Layer::kBending)->GetVisibility());
+  scene.set_layer(vis::Layer::kBending, false);
   EXPECT_FALSE(scene.colour_layer().has_value());
-  EXPECT_EQ(scene.layers_on(), (std::vector<vis::Layer>{vis::Layer::StitchGap, vis::Layer::Handles}));
+  EXPECT_EQ(scene.layers_on(), (std::vector<vis::Layer>{vis::Layer::kStitchGap, vis::Layer::kHandles}));
 }
 
 TEST_F(SceneTest, EveryLayerButWireframeAndFullCellsHasALegendShownWithIt) {
   vis::Scene scene(arcs_model(), renderer);
-  for (vis::Layer l : vis::all_layers()) {
+  for (vis::Layer l : enum_values<vis::Layer>()) {
     vtkProp* legend = scene.legend_prop(l);
-    if (l == vis::Layer::Wireframe || l == vis::Layer::FullCells) {
+    if (l == vis::Layer::kWireframe || l == vis::Layer::kFullCells) {
       EXPECT_EQ(legend, nullptr);
       continue;
     }
-    ASSERT_NE(legend, nullptr) << vis::layer_name(l);
-    EXPECT_FALSE(legend->GetVisibility()) << vis::layer_name(l);
+    ASSERT_NE(legend, nullptr) << enum_name(l);
+    EXPECT_FALSE(legend->GetVisibility()) << enum_name(l);
     scene.set_layer(l, true);
-    EXPECT_TRUE(legend->GetVisibility()) << vis::layer_name(l);
+    EXPECT_TRUE(legend->GetVisibility()) << enum_name(l);
     scene.set_layer(l, false);
-    EXPECT_FALSE(legend->GetVisibility()) << vis::layer_name(l);
+    EXPECT_FALSE(legend->GetVisibility()) << enum_name(l);
   }
 }
 
 TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
   const DogModel& m = arcs_model();
-  vis::Scene scene(m, renderer, {vis::View::ThreeD});
+  vis::Scene scene(m, renderer, {vis::View::kThreeD});
   scene.update(arcs_standard_state());
   vtkPolyData* trimmed = scene.trimmed_surface();
   ASSERT_NE(trimmed, nullptr);
@@ -242,14 +242,14 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
     actors->InitTraversal();
     while (vtkActor* a = actors->GetNextActor())
       if (a->GetVisibility() && a->GetMapper() && (a->GetMapper()->GetInput() == trimmed ||
-                                                   a->GetMapper()->GetInput() == scene.layer_data(vis::Layer::Wireframe)))
+                                                   a->GetMapper()->GetInput() == scene.layer_data(vis::Layer::kWireframe)))
         n += a->GetMapper()->GetInput() == trimmed ? 1 : 10;
     return n;
   };
   EXPECT_EQ(visible_surfaces(), 1);  // the trimmed surface alone
-  scene.set_layer(vis::Layer::FullCells, true);
+  scene.set_layer(vis::Layer::kFullCells, true);
   EXPECT_EQ(visible_surfaces(), 10);  // the quads alone
-  scene.set_layer(vis::Layer::FullCells, false);
+  scene.set_layer(vis::Layer::kFullCells, false);
   auto visible_lines = [&]() {  // visible actors drawing line cells: each quad edge once
     vtkIdType n = 0;
     vtkActorCollection* actors = renderer->GetActors();
@@ -260,7 +260,7 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
     return n;
   };
   const vtkIdType lines_before = visible_lines();
-  scene.set_layer(vis::Layer::Wireframe, true);
+  scene.set_layer(vis::Layer::kWireframe, true);
   EXPECT_EQ(visible_surfaces(), 1);  // still the trimmed surface alone, with the quad edges as lines over it
   // The fine quads' edges, each once.
   std::set<std::pair<int, int>> edges;
@@ -274,23 +274,23 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
 
 TEST_F(SceneTest, UpdateKeepsTheActorsAndMovesThePoints) {
   const DogModel& m = arcs_model();
-  vis::Scene scene(m, renderer, {vis::View::ThreeD, true});
-  for (vis::Layer l : {vis::Layer::DogResidual, vis::Layer::Handles, vis::Layer::StitchGap, vis::Layer::Links})
+  vis::Scene scene(m, renderer, {vis::View::kThreeD, true});
+  for (vis::Layer l : {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kStitchGap, vis::Layer::kLinks})
     scene.set_layer(l, true);
   const int actors = renderer->GetActors()->GetNumberOfItems();
   const int props2d = renderer->GetActors2D()->GetNumberOfItems();
-  vtkDataSet* grid = scene.layer_data(vis::Layer::Wireframe);
+  vtkDataSet* grid = scene.layer_data(vis::Layer::kWireframe);
   for (int i = 0; i < 3; ++i) {
     scene.update(i % 2 ? vis::rest_scene_state(m) : arcs_standard_state());
     EXPECT_EQ(renderer->GetActors()->GetNumberOfItems(), actors);
     EXPECT_EQ(renderer->GetActors2D()->GetNumberOfItems(), props2d);
-    EXPECT_EQ(scene.layer_data(vis::Layer::Wireframe), grid);
+    EXPECT_EQ(scene.layer_data(vis::Layer::kWireframe), grid);
   }
   double p[3];
   grid->GetPoint(m.fine.vertex_count() - 1, p);
   EXPECT_DOUBLE_EQ(p[2], arcs_standard_state().fine(m.fine.vertex_count() - 1, 2));
   // The flat view draws the rest positions whatever the state.
-  scene.set_options({vis::View::Flat, false});
+  scene.set_options({vis::View::kFlat, false});
   grid->GetPoint(m.fine.vertex_count() - 1, p);
   EXPECT_DOUBLE_EQ(p[2], 0);
 }

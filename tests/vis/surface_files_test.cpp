@@ -53,8 +53,8 @@ vis::Rgb8 bytes(const vis::Rgb& c) {
 TEST(SurfaceFiles, FormatNamesAndExtensions) {
   using vis::SurfaceFormat;
   EXPECT_EQ(vis::parse_surface_formats("obj,ply"),
-            (std::vector<SurfaceFormat>{SurfaceFormat::Obj, SurfaceFormat::Ply}));
-  EXPECT_EQ(vis::parse_surface_formats("ply"), (std::vector<SurfaceFormat>{SurfaceFormat::Ply}));
+            (std::vector<SurfaceFormat>{SurfaceFormat::kObj, SurfaceFormat::kPly}));
+  EXPECT_EQ(vis::parse_surface_formats("ply"), (std::vector<SurfaceFormat>{SurfaceFormat::kPly}));
   for (const char* bad : {"stl", "obj,", "OBJ", "obj,obj", "", "obj;ply"})
     EXPECT_THROW(vis::parse_surface_formats(bad), UsageError) << bad;
   try {
@@ -63,13 +63,13 @@ TEST(SurfaceFiles, FormatNamesAndExtensions) {
   } catch (const UsageError& e) {
     EXPECT_EQ(std::string(e.what()), "--export: unknown format 'stl' (known: obj, ply)");
   }
-  EXPECT_EQ(vis::format_of_path("out/a.OBJ"), SurfaceFormat::Obj);
-  EXPECT_EQ(vis::format_of_path("a.b.ply"), SurfaceFormat::Ply);
+  EXPECT_EQ(vis::format_of_path("out/a.OBJ"), SurfaceFormat::kObj);
+  EXPECT_EQ(vis::format_of_path("a.b.ply"), SurfaceFormat::kPly);
   EXPECT_EQ(vis::format_of_path("out.ply/surface"), std::nullopt);
   EXPECT_EQ(vis::format_of_path("surface.stl"), std::nullopt);
-  EXPECT_EQ(vis::with_surface_extension("dir/shape", SurfaceFormat::Ply), "dir/shape.ply");
-  EXPECT_EQ(vis::with_surface_extension("dir.v2/shape", SurfaceFormat::Obj), "dir.v2/shape.obj");
-  EXPECT_EQ(vis::with_surface_extension("shape.Ply", SurfaceFormat::Obj), "shape.Ply");
+  EXPECT_EQ(vis::with_surface_extension("dir/shape", SurfaceFormat::kPly), "dir/shape.ply");
+  EXPECT_EQ(vis::with_surface_extension("dir.v2/shape", SurfaceFormat::kObj), "dir.v2/shape.obj");
+  EXPECT_EQ(vis::with_surface_extension("shape.Ply", SurfaceFormat::kObj), "shape.Ply");
 }
 
 TEST(SurfaceFiles, SheetUnitsSpanThePatternsSheet) {
@@ -94,7 +94,7 @@ struct SurfaceFileTest : ::testing::Test {
 
 TEST_F(SurfaceFileTest, ObjReadsBackWithNormalsInSheetUnits) {
   const std::string path = dir + "/surface.obj";
-  vis::write_surface_file(vis::SurfaceFormat::Obj, surface, m.fine, vis::Layer::Patches, arrays,
+  vis::write_surface_file(vis::SurfaceFormat::kObj, surface, m.fine, vis::Layer::kPatches, arrays,
                           path);
   // VTK's OBJ reader keeps float coordinates: the comparisons allow for them.
   const auto obj = read_poly<vtkOBJReader>(path);
@@ -134,7 +134,7 @@ TEST_F(SurfaceFileTest, ObjReadsBackWithNormalsInSheetUnits) {
 
 TEST_F(SurfaceFileTest, PlyReadsBackWithNormalsAndPatchColours) {
   const std::string path = dir + "/surface.ply";
-  vis::write_surface_file(vis::SurfaceFormat::Ply, surface, m.fine, vis::Layer::Patches, arrays,
+  vis::write_surface_file(vis::SurfaceFormat::kPly, surface, m.fine, vis::Layer::kPatches, arrays,
                           path);
   const auto ply = read_poly<vtkPLYReader>(path);
   ASSERT_EQ(ply->GetNumberOfPoints(), surface.vertex_count());
@@ -159,10 +159,10 @@ TEST_F(SurfaceFileTest, PlyReadsBackWithNormalsAndPatchColours) {
 }
 
 TEST_F(SurfaceFileTest, UnwritablePathIsAnOutputErrorNamingIt) {
-  for (auto format : {vis::SurfaceFormat::Obj, vis::SurfaceFormat::Ply}) {
-    const std::string path = dir + "/no/such/dir/surface." + vis::format_extension(format);
+  for (auto format : {vis::SurfaceFormat::kObj, vis::SurfaceFormat::kPly}) {
+    const std::string path = dir + "/no/such/dir/surface." + enum_name(format);
     try {
-      vis::write_surface_file(format, surface, m.fine, vis::Layer::Patches, arrays, path);
+      vis::write_surface_file(format, surface, m.fine, vis::Layer::kPatches, arrays, path);
       ADD_FAILURE() << path << " written";
     } catch (const OutputError& e) {
       EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -191,23 +191,23 @@ void expect_renderer_colours(vis::Layer layer, const char* array, const TrimmedS
     if (surface.weight(v, 0) != 1) continue;
     const unsigned char* rgba = lut->MapValue(values->GetTuple1(surface.source(v, 0)));
     for (int k = 0; k < 3; ++k)
-      ASSERT_EQ(colours[v][k], rgba[k]) << vis::layer_name(layer) << " vertex " << v;
+      ASSERT_EQ(colours[v][k], rgba[k]) << enum_name(layer) << " vertex " << v;
     distinct.insert({rgba[0], rgba[1], rgba[2]});
     ++checked;
   }
   EXPECT_GT(checked, surface.vertex_count() / 2);
-  EXPECT_GT(distinct.size(), 10u) << vis::layer_name(layer)
+  EXPECT_GT(distinct.size(), 10u) << enum_name(layer)
                                   << ": the state should show more than a few colours";
 }
 
 TEST_F(SurfaceFileTest, ScalarColoursAreTheRenderers) {
-  expect_renderer_colours(vis::Layer::DogResidual, "log10_dog_residual", surface, arrays);
-  expect_renderer_colours(vis::Layer::Bending, "bending", surface, arrays);
+  expect_renderer_colours(vis::Layer::kDogResidual, "log10_dog_residual", surface, arrays);
+  expect_renderer_colours(vis::Layer::kBending, "bending", surface, arrays);
 }
 
 TEST_F(SurfaceFileTest, CategoricalColoursAreThePalettes) {
-  const auto types = vis::surface_colours(vis::Layer::VertexTypes, surface, arrays);
-  const auto patches = vis::surface_colours(vis::Layer::Patches, surface, arrays);
+  const auto types = vis::surface_colours(vis::Layer::kVertexTypes, surface, arrays);
+  const auto patches = vis::surface_colours(vis::Layer::kPatches, surface, arrays);
   for (int v = 0; v < surface.vertex_count(); ++v) {
     EXPECT_EQ(patches[v], bytes(vis::patch_color(surface.vertex_patch[v]))) << v;
     if (surface.weight(v, 0) == 1) {
@@ -215,7 +215,7 @@ TEST_F(SurfaceFileTest, CategoricalColoursAreThePalettes) {
           << v;
     }
   }
-  EXPECT_THROW(vis::surface_colours(vis::Layer::Handles, surface, arrays), std::logic_error);
+  EXPECT_THROW(vis::surface_colours(vis::Layer::kHandles, surface, arrays), std::logic_error);
 }
 
 // Edge strain is one value per quad: a vertex takes the mean over its triangles, coloured through
@@ -226,12 +226,12 @@ TEST_F(SurfaceFileTest, EdgeStrainColoursAreTheRenderers) {
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   vis::Scene scene(m, renderer);
   scene.update(state);
-  scene.set_layer(vis::Layer::EdgeStrain, true);
-  auto* bar = vtkScalarBarActor::SafeDownCast(scene.legend_prop(vis::Layer::EdgeStrain));
+  scene.set_layer(vis::Layer::kEdgeStrain, true);
+  auto* bar = vtkScalarBarActor::SafeDownCast(scene.legend_prop(vis::Layer::kEdgeStrain));
   ASSERT_NE(bar, nullptr);
   const unsigned char* top = bar->GetLookupTable()->MapValue(0.25);
   const auto colours =
-      vis::surface_colours(vis::Layer::EdgeStrain, surface, vis::frame_arrays(m, state.fields));
+      vis::surface_colours(vis::Layer::kEdgeStrain, surface, vis::frame_arrays(m, state.fields));
   for (int v = 0; v < surface.vertex_count(); ++v)
     for (int k = 0; k < 3; ++k) ASSERT_EQ(colours[v][k], top[k]) << "vertex " << v;
 }

@@ -7,7 +7,7 @@
 namespace sdog::studio {
 
 QString describe_assignment(Fold fold, const std::optional<double>& angle, double default_degrees) {
-  QString text = fold_name(fold);
+  QString text = enum_name(fold);
   if (fold == Fold::kFlat) return text;
   if (angle) return text + QString(", %1 degrees").arg(*angle, 0, 'g', 4);
   if (fold == Fold::kUnassigned) return text;

@@ -20,6 +20,7 @@
 #include "base/errors.h"
 #include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/modes/settling_plan.h"
 #include "ui/studio/click_drag_style.h"
 #include "ui/studio/crease_inspector.h"
 #include "ui/studio/model_loader.h"
@@ -211,7 +212,7 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   std::shared_ptr<const DogModel> model;
   const std::string mode_name = mode.toStdString();
   const bool built = attempt([&] {
-    const ModeKind kind = parse_mode(mode_name, "mode: ");
+    const ModeKind kind = parse_enum<ModeKind>(mode_name, "mode: ");
     model = load_model(path.toStdString(), resolution.toStdString());
     check_mode_usable(kind, *model);
   });
@@ -252,8 +253,8 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   mode_ = mode_name;
   scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
   if (!wireframe_chosen_) {  // from about 60 grid lines on, the quad edges hide the surface
-    const QSignalBlocker block(layer_actions_.at(vis::Layer::Wireframe));
-    layer_actions_.at(vis::Layer::Wireframe)->setChecked(std::max(model_->fine.nx(), model_->fine.ny()) <= kWireframeLines);
+    const QSignalBlocker block(layer_actions_.at(vis::Layer::kWireframe));
+    layer_actions_.at(vis::Layer::kWireframe)->setChecked(std::max(model_->fine.nx(), model_->fine.ny()) <= kWireframeLines);
   }
   for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
   camera_fitted_ = false;
@@ -268,7 +269,7 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
                        .arg(model_->fine.patch_count())
                        .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
                                                : QString("no coarse mesh (even resolution)"))
-                       .arg(QString::fromStdString(mode_), QString(scenario_name(config_.scenario))) +
+                       .arg(QString::fromStdString(mode_), QString(enum_name(config_.scenario))) +
                    dropped + warnings_text(*model_));
   update_actions();
   show_solver_state();
@@ -330,9 +331,9 @@ void MainWindow::show_report(const IterationReport& r) {
     scenario_end_marked_ = true;
   }
   QString progress;
-  if (r.step.settling == Settling::kRunning) {
+  if (r.step.stage == settling_stage::kRunning) {
     progress = ", settling (folding straight from the start state to compare)";
-  } else if (r.step.settling == Settling::kReplaced) {
+  } else if (r.step.stage == settling_stage::kReplaced) {
     progress = ", converged (settled: the fold straight from the start state is lower and replaces it)";
   } else if (r.step.converged) {
     progress = *r.step.converged ? ", converged"
@@ -376,7 +377,7 @@ void MainWindow::reset_solver() {
 bool MainWindow::set_mode(const QString& mode) {
   const std::string name = mode.toStdString();
   if (!attempt([&] {
-        const ModeKind kind = parse_mode(name, "mode: ");
+        const ModeKind kind = parse_enum<ModeKind>(name, "mode: ");
         if (model_) check_mode_usable(kind, *model_);
       })) {
     update_actions();
@@ -392,13 +393,13 @@ bool MainWindow::set_mode(const QString& mode) {
 bool MainWindow::set_scenario(const QString& scenario) {
   const std::string name = scenario.toStdString();
   RunConfig config = config_;
-  if (!attempt([&] { config.scenario = parse_scenario(name, "scenario: "); })) return false;
+  if (!attempt([&] { config.scenario = parse_enum<ScenarioKind>(name, "scenario: "); })) return false;
   // A new base scenario starts the session again (the user's constraints go with it).
   return set_run_config(config);
 }
 
 bool MainWindow::choose_scenario(const QString& scenario) {
-  if (snapshot_ && scenario.toStdString() != scenario_name(config_.scenario) && left_start()) {
+  if (snapshot_ && scenario.toStdString() != enum_name(config_.scenario) && left_start()) {
     const int answer = question_sink_(
         QString("Another scenario starts a new session from its start state: the current shape (iteration %1) and "
                 "the handles and angle constraints go. Start the %2 scenario?")
@@ -513,7 +514,7 @@ bool MainWindow::open_workspace(const QString& path) {
 }
 
 bool MainWindow::open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source) {
-  if (!attempt([&] { check_mode_usable(parse_mode(state.mode, "mode: "), *model); })) return false;
+  if (!attempt([&] { check_mode_usable(parse_enum<ModeKind>(state.mode, "mode: "), *model); })) return false;
   const QString pattern = QString::fromStdString(state.pattern);
   config_ = state.config;
   config_file_ = source;

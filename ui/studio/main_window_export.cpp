@@ -62,9 +62,9 @@ bool MainWindow::export_surface(const QString& path) {
     report_error("Nothing to export yet: open a crease pattern first (File > Open pattern).");
     return false;
   }
-  const std::string file = vis::with_surface_extension(path.toStdString(), vis::SurfaceFormat::Obj);
-  const vis::SurfaceFormat format = vis::format_of_path(file).value_or(vis::SurfaceFormat::Obj);
-  const vis::Layer colour = scene_->colour_layer().value_or(vis::Layer::Patches);
+  const std::string file = vis::with_surface_extension(path.toStdString(), vis::SurfaceFormat::kObj);
+  const vis::SurfaceFormat format = vis::format_of_path(file).value_or(vis::SurfaceFormat::kObj);
+  const vis::Layer colour = scene_->colour_layer().value_or(vis::Layer::kPatches);
   const bool written = attempt([&] {
     const TrimmedSurface surface = trimmed_surface(model_->fine, snapshot_->state.fine);
     const MeshArrays arrays = vis::frame_arrays(*model_, snapshot_->state.fields);
@@ -154,7 +154,7 @@ void MainWindow::record_frame() {
 }
 
 bool MainWindow::grab_target(double x, double y) {
-  if (!snapshot_ || !scene_ || !scene_->layer_on(vis::Layer::Handles)) return false;
+  if (!snapshot_ || !scene_ || !scene_->layer_on(vis::Layer::kHandles)) return false;
   const auto& drawn = snapshot_->state.constraints.handles;  // the scenario's and the user's
   if (drawn.empty()) return false;
   Eigen::MatrixX3d targets(drawn.size(), 3);

@@ -80,7 +80,7 @@ void MainWindow::add_export_actions(QMenu* m) {
                                                               "OBJ files (*.obj);;PLY files (*.ply)", &filter);
             if (path.isEmpty()) return;
             // Without an extension of its own the path takes the chosen filter's.
-            const auto format = filter.contains("*.ply") ? vis::SurfaceFormat::Ply : vis::SurfaceFormat::Obj;
+            const auto format = filter.contains("*.ply") ? vis::SurfaceFormat::kPly : vis::SurfaceFormat::kObj;
             export_surface(QString::fromStdString(vis::with_surface_extension(path.toStdString(), format)));
           });
   frames_action_ = add_action(m, "Record &frames...", QKeySequence("Ctrl+Shift+F"),
@@ -203,25 +203,25 @@ void MainWindow::build_edit_menu() {
 void MainWindow::build_view_menu() {
   QMenu* m = menuBar()->addMenu("&View");
   int key = 1;
-  for (vis::Layer layer : vis::all_layers()) {
+  for (vis::Layer layer : enum_values<vis::Layer>()) {
     // Ctrl+1 .. Ctrl+0 for the overlays, Ctrl+Shift+W for the full cells ("whole quads").
-    const QKeySequence shortcut = layer == vis::Layer::FullCells ? QKeySequence("Ctrl+Shift+W")
+    const QKeySequence shortcut = layer == vis::Layer::kFullCells ? QKeySequence("Ctrl+Shift+W")
                                                                    : QKeySequence(QString("Ctrl+%1").arg(key++ % 10));
-    QAction* a = add_action(m, vis::layer_name(layer), shortcut, vis::layer_description(layer));
+    QAction* a = add_action(m, enum_name(layer), shortcut, vis::layer_description(layer));
     a->setCheckable(true);
     connect(a, &QAction::toggled, this, [this, layer](bool on) { set_layer(layer, on); });
     layer_actions_[layer] = a;
   }
-  layer_actions_.at(vis::Layer::VertexTypes)->setChecked(true);
-  layer_actions_.at(vis::Layer::Wireframe)->setChecked(true);
+  layer_actions_.at(vis::Layer::kVertexTypes)->setChecked(true);
+  layer_actions_.at(vis::Layer::kWireframe)->setChecked(true);
   m->addSeparator();
   auto* views = new QActionGroup(this);
   const std::pair<vis::View, const char*> names[] = {
-      {vis::View::ThreeD, "&3D"}, {vis::View::Flat, "&Flat crease pattern"}, {vis::View::SideBySide, "Fine and coarse &side by side"}};
+      {vis::View::kThreeD, "&3D"}, {vis::View::kFlat, "&Flat crease pattern"}, {vis::View::kSideBySide, "Fine and coarse &side by side"}};
   int f = 2;
   for (const auto& [view, name] : names) {
     QAction* a = add_action(m, name, QKeySequence(QString("F%1").arg(f++)),
-                            QString("View: ") + vis::view_name(view));
+                            QString("View: ") + enum_name(view));
     a->setCheckable(true);
     a->setActionGroup(views);
     connect(a, &QAction::triggered, this, [this, view = view] { set_view(view); });
@@ -261,11 +261,11 @@ void MainWindow::build_view_menu() {
 void MainWindow::build_crease_menu() {
   QMenu* m = menuBar()->addMenu("&Creases");
   for (const Fold fold : {Fold::kMountain, Fold::kValley, Fold::kFlat, Fold::kUnassigned}) {
-    QString name = fold_name(fold);
+    QString name = enum_name(fold);
     name[0] = name[0].toUpper();
     connect(add_action(m, name, QKeySequence(),
                        QString("Assign the picked creases %1 (click a crease with the crease-curves overlay on)")
-                           .arg(fold_name(fold))),
+                           .arg(enum_name(fold))),
             &QAction::triggered, this, [this, fold] { set_crease_fold(fold); });
   }
   connect(add_action(m, "&Angle...", QKeySequence(), "Ask for the fold angle of the picked creases (0 to 180 degrees)"),
@@ -321,10 +321,10 @@ void MainWindow::build_solver_menu() {
       actions[name] = a;
     }
   };
-  add_choices(m->addMenu("&Mode"), mode_names(), mode_actions_, &MainWindow::set_mode);
+  add_choices(m->addMenu("&Mode"), enum_names<ModeKind>(), mode_actions_, &MainWindow::set_mode);
   for (auto& [name, a] : mode_actions_)
-    if (mode_needs_coarse(parse_mode(name))) a->setToolTip("needs the coarse mesh (odd resolution)");
-  add_choices(m->addMenu("S&cenario"), scenario_names(), scenario_actions_, &MainWindow::choose_scenario);
+    if (mode_needs_coarse(parse_enum<ModeKind>(name))) a->setToolTip("needs the coarse mesh (odd resolution)");
+  add_choices(m->addMenu("S&cenario"), enum_names<ScenarioKind>(), scenario_actions_, &MainWindow::choose_scenario);
   connect(add_action(m, "Se&ttings", QKeySequence("Ctrl+T"),
                      "Show the Solver panel: weights, tolerances, mode options and iteration counts"),
           &QAction::triggered, this, [this] {
@@ -407,9 +407,9 @@ QString MainWindow::keyboard_shortcuts() const {
 void MainWindow::update_actions() {
   for (auto& [name, a] : mode_actions_) {
     a->setChecked(name == mode_);
-    a->setEnabled(model_ && (model_->has_coarse || !mode_needs_coarse(parse_mode(name))));
+    a->setEnabled(model_ && (model_->has_coarse || !mode_needs_coarse(parse_enum<ModeKind>(name))));
   }
-  for (auto& [name, a] : scenario_actions_) a->setChecked(name == scenario_name(config_.scenario));
+  for (auto& [name, a] : scenario_actions_) a->setChecked(name == enum_name(config_.scenario));
   play_action_->setChecked(playing_);
   play_action_->setText(playing_ ? "&Pause" : "&Play");
   undo_action_->setEnabled(snapshot_ && snapshot_->can_undo);

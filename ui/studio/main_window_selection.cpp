@@ -66,7 +66,7 @@ void MainWindow::select_creases(const std::vector<int>& creases, bool add) {
 
 void MainWindow::click(double x, double y) {
   if (!snapshot_) return;
-  if (scene_->layer_on(vis::Layer::CreaseCurves) && !model_->fine.stitching.curves.empty()) {
+  if (scene_->layer_on(vis::Layer::kCreaseCurves) && !model_->fine.stitching.curves.empty()) {
     const auto points = vis::crease_point_positions(model_->fine, shown_positions());
     Eigen::MatrixX3d rows(points.size(), 3);
     for (size_t p = 0; p < points.size(); ++p) rows.row(p) = points[p].transpose();
@@ -96,7 +96,7 @@ bool MainWindow::edit_creases(std::optional<Fold> fold, std::optional<double> an
   }
   const std::vector<int> creases = selected_creases_;
   post([creases, fold, angle](SolverWorker& w) { w.set_creases(creases, fold, angle); });
-  const QString what = fold ? QString(fold_name(*fold)) : QString("%1 degrees").arg(*angle);
+  const QString what = fold ? QString(enum_name(*fold)) : QString("%1 degrees").arg(*angle);
   status_->setText(QString("%1 crease(s) set to %2%3")
                        .arg(creases.size())
                        .arg(what)
@@ -148,7 +148,7 @@ void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1,
 }
 
 Eigen::MatrixX3d MainWindow::shown_positions() const {
-  if (scene_options_.view == vis::View::Flat) return model_->fine.V;
+  if (scene_options_.view == vis::View::kFlat) return model_->fine.V;
   return snapshot_->state.fine;
 }
 

@@ -36,7 +36,7 @@
 namespace sdog::studio {
 
 void MainWindow::set_layer(vis::Layer layer, bool on) {
-  if (layer == vis::Layer::Wireframe) wireframe_chosen_ = true;
+  if (layer == vis::Layer::kWireframe) wireframe_chosen_ = true;
   QAction* action = layer_actions_.at(layer);
   if (action->isChecked() != on) action->setChecked(on);  // toggled() applies it
   if (!scene_) return;

@@ -31,12 +31,12 @@ QString percent_text(int percent) { return QString::number(percent) + "%"; }
 QFormLayout* SolverPanel::build_choices(QPushButton* from_file) {
   auto* choices = new QFormLayout;
   mode_ = new QComboBox;
-  for (const std::string& name : mode_names()) mode_->addItem(QString::fromStdString(name));
+  for (const std::string& name : enum_names<ModeKind>()) mode_->addItem(QString::fromStdString(name));
   mode_->setToolTip("How an iteration is computed; switching keeps the current state");
   choices->addRow("mode", mode_);
   auto* scenario_row = new QHBoxLayout;
   scenario_ = new QComboBox;
-  for (const std::string& name : scenario_names()) scenario_->addItem(QString::fromStdString(name));
+  for (const std::string& name : enum_names<ScenarioKind>()) scenario_->addItem(QString::fromStdString(name));
   scenario_->setToolTip("The base scenario's targets (a new scenario starts the session again)");
   scenario_row->addWidget(scenario_, 1);
   scenario_row->addWidget(from_file);
@@ -121,7 +121,7 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
 void SolverPanel::show_state(const std::string& mode, const RunConfig& config, bool has_coarse) {
   const QSignalBlocker block_mode(mode_), block_scenario(scenario_);
   mode_->setCurrentText(QString::fromStdString(mode));
-  scenario_->setCurrentText(scenario_name(config.scenario));
+  scenario_->setCurrentText(enum_name(config.scenario));
   {
     const QSignalBlocker block_fold(fold_);
     const int percent = static_cast<int>(std::lround(config.fold_percent));
@@ -131,7 +131,7 @@ void SolverPanel::show_state(const std::string& mode, const RunConfig& config, b
   // The coarse modes need the coarse mesh (odd resolutions): their entries are greyed out.
   if (auto* items = qobject_cast<QStandardItemModel*>(mode_->model()))
     for (int i = 0; i < mode_->count(); ++i) {
-      const bool usable = has_coarse || !mode_needs_coarse(parse_mode(mode_->itemText(i).toStdString()));
+      const bool usable = has_coarse || !mode_needs_coarse(parse_enum<ModeKind>(mode_->itemText(i).toStdString()));
       items->item(i)->setEnabled(usable);
       items->item(i)->setToolTip(usable ? QString() : "needs the coarse mesh (an odd resolution)");
     }

@@ -131,11 +131,11 @@ void SolverSettingsForm::add_patches_group(QVBoxLayout* layout) {
   QFormLayout* f = add_group(layout, "Patch modes (subsolvers, ADMM)");
   add_choice(
       f, "patch backend", [](const RunConfig& c) { return static_cast<int>(c.subsolvers.backend); },
-      [](RunConfig& c, int i) { c.subsolvers.backend = static_cast<PatchBackend>(i); }, patch_backend_names(),
+      [](RunConfig& c, int i) { c.subsolvers.backend = static_cast<PatchBackend>(i); }, enum_names<PatchBackend>(),
              "per-patch steps: the SQP solver of the standard mode, or Ceres with an augmented Lagrangian loop");
   add_choice(
       f, "patch sweep", [](const RunConfig& c) { return static_cast<int>(c.subsolvers.sweep); },
-      [](RunConfig& c, int i) { c.subsolvers.sweep = static_cast<PatchSweep>(i); }, patch_sweep_names(),
+      [](RunConfig& c, int i) { c.subsolvers.sweep = static_cast<PatchSweep>(i); }, enum_names<PatchSweep>(),
              "subsolvers and twolevel: every patch at once from the same state (jacobi), or the patch graph's "
              "colours one after another (Gauss-Seidel by colour)");
   add_double(f, "Ceres constraint tolerance",

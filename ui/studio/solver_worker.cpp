@@ -54,7 +54,7 @@ void SolverWorker::send_snapshot() {
   Snapshot snap;
   snap.state = vis::scene_state(s.problem(), s.positions(), s.coarse_positions(), &s.scenario(), s.time());
   snap.iteration = s.iteration();
-  snap.mode = mode_name(s.mode());
+  snap.mode = enum_name(s.mode());
   snap.constraints = s.constraints();
   for (const auto& c : s.model().fine.stitching.curves) {
     snap.state.crease_folds.push_back(c.fold);
@@ -75,7 +75,7 @@ void SolverWorker::send_snapshot() {
 void SolverWorker::open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state) {
   pause();
   session_.reset();
-  session_ = std::make_unique<Session>(*model_, config, parse_mode(mode));
+  session_ = std::make_unique<Session>(*model_, config, parse_enum<ModeKind>(mode));
   if (state) {
     if (!state->constraints.handles.empty() || !state->constraints.angles.empty())
       session_->set_constraints(state->constraints);
@@ -146,7 +146,7 @@ void SolverWorker::reset() {
 }
 
 void SolverWorker::set_mode(const std::string& mode) {
-  session().set_mode(parse_mode(mode));
+  session().set_mode(parse_enum<ModeKind>(mode));
   send_snapshot();
 }
 

@@ -23,15 +23,15 @@ QString describe_vertex(const DogModel& model, const vis::SceneState& state, int
   html += row("fine vertex", QString::number(v));
   html += row("patch", QString::number(model.fine.vertex_patch[v]));
   html += row("grid (i, j)", QString("(%1, %2)").arg(model.fine.grid[v].x()).arg(model.fine.grid[v].y()));
-  html += row("class", to_string(model.fine_topology.vertex_class[v]));
+  html += row("class", enum_name(model.fine_topology.vertex_class[v]));
   if (model.has_coarse) {
-    html += row("type", to_string(model.map.fine_type[v]));
+    html += row("type", enum_name(model.map.fine_type[v]));
     const int twin = model.map.fine_to_coarse[v];
     html += row("coarse twin", twin >= 0 ? QString::number(twin) : QString("none"));
-    if (model.map.fine_type[v] == VertexType::I) {
+    if (model.map.fine_type[v] == VertexType::kI) {
       const auto& e = model.map.fine_to_coarse_edge[v];
       html += row("on coarse edge", QString("%1 - %2").arg(e[0]).arg(e[1]));
-    } else if (model.map.fine_type[v] == VertexType::X) {
+    } else if (model.map.fine_type[v] == VertexType::kX) {
       html += row("centre of coarse quad", QString::number(model.map.fine_to_coarse_quad[v]));
     }
   } else {

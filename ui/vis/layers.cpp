@@ -11,34 +11,33 @@ namespace {
 
 struct LayerInfo {
   Layer layer;
-  const char* name;
   const char* description;
   bool colour;
 };
 
 const LayerInfo kLayers[] = {
-    {Layer::VertexTypes, "vertex-types",
+    {Layer::kVertexTypes,
      "vertices coloured by their type in the fine/coarse map (link green, I light blue, X purple, coarse-only "
      "red), crease points pink; on the fine and the coarse mesh",
      true},
-    {Layer::Links, "links", "a line from every fine link vertex to its coarse twin", false},
-    {Layer::Patches, "patches", "faces coloured by patch", true},
-    {Layer::DogResidual, "dog-residual",
+    {Layer::kLinks, "a line from every fine link vertex to its coarse twin", false},
+    {Layer::kPatches, "faces coloured by patch", true},
+    {Layer::kDogResidual,
      "DOG constraint residual per vertex (largest |c| of its rows), log10 scale from 1e-10 to 1e-2", true},
-    {Layer::EdgeStrain, "edge-strain", "per quad the largest |length / rest length - 1| of its edges (colours from 0 to the 95th percentile)", true},
-    {Layer::StitchGap, "stitch-gap",
+    {Layer::kEdgeStrain, "per quad the largest |length / rest length - 1| of its edges (colours from 0 to the 95th percentile)", true},
+    {Layer::kStitchGap,
      "per crease point the largest distance between its copies, as sphere size and colour", false},
-    {Layer::Bending, "bending", "bending energy per vertex (|r|^2 of its bending block; colours from 0 to the 95th percentile)", true},
-    {Layer::Handles, "handles",
+    {Layer::kBending, "bending energy per vertex (|r|^2 of its bending block; colours from 0 to the 95th percentile)", true},
+    {Layer::kHandles,
      "position handles (orange), their targets (dark blue) and residual lines (red); angle-constraint sites "
      "(cyan)",
      false},
-    {Layer::CreaseCurves, "crease-curves",
+    {Layer::kCreaseCurves,
      "crease polylines through the crease points coloured by assignment (mountain red, valley blue, flat light "
      "grey, unassigned grey), crease points pink",
      false},
-    {Layer::Wireframe, "wireframe", "the quad edges", false},
-    {Layer::FullCells, "full-cells",
+    {Layer::kWireframe, "the quad edges", false},
+    {Layer::kFullCells,
      "every quad drawn whole, overhanging its patch's creases (the DOG as the solver sees it), instead of the "
      "trimmed surface, where each patch ends at its creases",
      false},
@@ -46,58 +45,33 @@ const LayerInfo kLayers[] = {
 
 const LayerInfo& info(Layer layer) { return kLayers[static_cast<int>(layer)]; }
 
-std::string layer_names(bool colour_only) {
-  std::string out;
-  for (const auto& l : kLayers)
-    if (l.colour || !colour_only) out += (out.empty() ? "" : ", ") + std::string(l.name);
-  return out;
-}
-
 }  // namespace
 
-const std::vector<Layer>& all_layers() {
-  static const std::vector<Layer> layers = [] {
-    std::vector<Layer> out;
-    for (const auto& l : kLayers) out.push_back(l.layer);
-    return out;
-  }();
-  return layers;
-}
-
-const char* layer_name(Layer layer) { return info(layer).name; }
 const char* layer_description(Layer layer) { return info(layer).description; }
 bool is_colour_layer(Layer layer) { return info(layer).colour; }
 
-std::string known_layers() { return layer_names(false); }
-std::string known_colour_layers() { return layer_names(true); }
+std::string known_colour_layers() {
+  std::string out;
+  for (const Layer layer : enum_values<Layer>())
+    if (is_colour_layer(layer)) out += (out.empty() ? "" : ", ") + std::string(enum_name(layer));
+  return out;
+}
 
 Layer parse_colour_layer(const std::string& name, const std::string& context) {
-  for (const auto& l : kLayers)
-    if (l.colour && name == l.name) return l.layer;
+  if (const auto layer = find_enum<Layer>(name); layer && is_colour_layer(*layer)) return *layer;
   throw UsageError(context + "'" + name + "' is not a colour layer (known: " + known_colour_layers() + ")");
 }
 
 std::vector<Layer> parse_layers(const std::string& text) {
-  std::vector<Layer> out;
-  std::stringstream in(text);
-  std::string name;
+  const std::vector<Layer> out = parse_enum_list<Layer>(text);
   std::optional<Layer> colour;
-  while (std::getline(in, name, ',')) {
-    const auto it = std::find_if(std::begin(kLayers), std::end(kLayers),
-                                 [&](const LayerInfo& l) { return name == l.name; });
-    if (it == std::end(kLayers))
-      throw UsageError("unknown overlay '" + name + "' (known: " + known_layers() + ")");
-    if (std::find(out.begin(), out.end(), it->layer) != out.end())
-      throw UsageError("overlay '" + name + "' is listed twice");
-    out.push_back(it->layer);
-    if (it->colour) {
-      if (colour)
-        throw UsageError(std::string("overlays '") + layer_name(*colour) + "' and '" + name +
-                         "' both colour the mesh; pick one of them");
-      colour = it->layer;
-    }
+  for (const Layer layer : out) {
+    if (!is_colour_layer(layer)) continue;
+    if (colour)
+      throw UsageError(std::string("overlays '") + enum_name(*colour) + "' and '" + enum_name(layer) +
+                       "' both colour the mesh; pick one of them");
+    colour = layer;
   }
-  if (out.empty()) throw UsageError("no overlay given (known: " + known_layers() + ")");
   return out;
 }
 

@@ -6,30 +6,51 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
+
 namespace sdog::vis {
 
 enum class Layer : int {
-  VertexTypes,   ///< vertices coloured link / I / X / coarse-only, crease points pink (colour layer)
-  Links,         ///< lines from each fine link vertex to its coarse twin
-  Patches,       ///< faces coloured by patch (colour layer)
-  DogResidual,   ///< DOG constraint residual per vertex, log10 scale (colour layer)
-  EdgeStrain,    ///< largest |length / rest length - 1| of a quad's edges (colour layer)
-  StitchGap,     ///< per crease point: distance between its copies, as glyph size and colour
-  Bending,       ///< bending energy |r|^2 per vertex (colour layer)
-  Handles,       ///< position handles, their targets and residual lines; angle-constraint sites
-  CreaseCurves,  ///< crease polylines coloured by assignment, crease points pink
-  Wireframe,     ///< the quad edges
-  FullCells,     ///< every quad whole instead of the trimmed surface (the DOG as the solver sees it)
+  kVertexTypes,   ///< vertices coloured link / I / X / coarse-only, crease points pink (colour layer)
+  kLinks,         ///< lines from each fine link vertex to its coarse twin
+  kPatches,       ///< faces coloured by patch (colour layer)
+  kDogResidual,   ///< DOG constraint residual per vertex, log10 scale (colour layer)
+  kEdgeStrain,    ///< largest |length / rest length - 1| of a quad's edges (colour layer)
+  kStitchGap,     ///< per crease point: distance between its copies, as glyph size and colour
+  kBending,       ///< bending energy |r|^2 per vertex (colour layer)
+  kHandles,       ///< position handles, their targets and residual lines; angle-constraint sites
+  kCreaseCurves,  ///< crease polylines coloured by assignment, crease points pink
+  kWireframe,     ///< the quad edges
+  kFullCells,     ///< every quad whole instead of the trimmed surface (the DOG as the solver sees it)
 };
 
-/// Every layer, in the order above (the order of the documentation).
-const std::vector<Layer>& all_layers();
-/// "vertex-types", "links", ... (kebab-case).
-const char* layer_name(Layer layer);
+}  // namespace sdog::vis
+
+namespace sdog {
+/// The layers by name, in the order above (the order of the documentation).
+template <>
+struct EnumNames<vis::Layer> {
+  static constexpr const char* noun = "overlay";
+  static constexpr EnumName<vis::Layer> rows[] = {
+      {vis::Layer::kVertexTypes, "vertex-types"},
+      {vis::Layer::kLinks, "links"},
+      {vis::Layer::kPatches, "patches"},
+      {vis::Layer::kDogResidual, "dog-residual"},
+      {vis::Layer::kEdgeStrain, "edge-strain"},
+      {vis::Layer::kStitchGap, "stitch-gap"},
+      {vis::Layer::kBending, "bending"},
+      {vis::Layer::kHandles, "handles"},
+      {vis::Layer::kCreaseCurves, "crease-curves"},
+      {vis::Layer::kWireframe, "wireframe"},
+      {vis::Layer::kFullCells, "full-cells"},
+  };
+};
+}  // namespace sdog
+
+namespace sdog::vis {
+
 /// One line saying what the layer shows (help texts).
 const char* layer_description(Layer layer);
-/// The layer names, comma separated.
-std::string known_layers();
 /// True for the layers that colour the meshes: vertex-types, patches, dog-residual, edge-strain,
 /// bending.
 bool is_colour_layer(Layer layer);

@@ -11,13 +11,13 @@ using Rgb = std::array<double, 3>;
 
 inline Rgb vertex_type_color(VertexType t) {
   switch (t) {
-    case VertexType::Link:
+    case VertexType::kLink:
       return {0.17, 0.63, 0.17};  // green
-    case VertexType::I:
+    case VertexType::kI:
       return {0.45, 0.78, 0.98};  // light blue
-    case VertexType::X:
+    case VertexType::kX:
       return {0.52, 0.29, 0.72};  // purple
-    case VertexType::CoarseOnly:
+    case VertexType::kCoarseOnly:
       return {0.86, 0.12, 0.12};  // red
   }
   return {0, 0, 0};

@@ -15,8 +15,8 @@
 namespace sdog::vis {
 
 struct PictureOptions {
-  std::vector<Layer> layers{Layer::VertexTypes, Layer::CreaseCurves, Layer::Wireframe};
-  SceneOptions scene{View::SideBySide, false, 0};  ///< font_size 0: from the image height
+  std::vector<Layer> layers{Layer::kVertexTypes, Layer::kCreaseCurves, Layer::kWireframe};
+  SceneOptions scene{View::kSideBySide, false, 0};  ///< font_size 0: from the image height
   ImageSize size;
   bool transparent = false;  ///< transparent background (RGBA PNG)
   std::string caption;       ///< top-left text (empty: none)

@@ -70,24 +70,6 @@ void check_size(size_t got, int expected, const char* what) {
 
 }  // namespace
 
-const char* view_name(View view) {
-  switch (view) {
-    case View::ThreeD:
-      return "3d";
-    case View::Flat:
-      return "flat";
-    case View::SideBySide:
-      return "side-by-side";
-  }
-  return "?";
-}
-
-View parse_view(const std::string& name) {
-  for (View v : {View::ThreeD, View::Flat, View::SideBySide})
-    if (name == view_name(v)) return v;
-  throw UsageError("unknown view '" + name + "' (known: 3d, flat, side-by-side)");
-}
-
 // The actors of the layers that are not part of a mesh view.
 struct Scene::Overlays {
   vtkSmartPointer<vtkPolyData> links = poly_data();
@@ -192,30 +174,30 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   o.patch_lut = categorical_lut(model.fine.patch_count());
   std::vector<LegendEntry> types;
   if (model.has_coarse)
-    types = {{"link", vertex_type_color(VertexType::Link)},
-             {"I: on a coarse edge", vertex_type_color(VertexType::I)},
-             {"X: in a coarse quad", vertex_type_color(VertexType::X)},
-             {"coarse-only", vertex_type_color(VertexType::CoarseOnly)}};
+    types = {{"link", vertex_type_color(VertexType::kLink)},
+             {"I: on a coarse edge", vertex_type_color(VertexType::kI)},
+             {"X: in a coarse quad", vertex_type_color(VertexType::kX)},
+             {"coarse-only", vertex_type_color(VertexType::kCoarseOnly)}};
   else
     types = {{"vertex (no coarse mesh)", kUntypedVertexColor}};
   types.push_back({"crease point", kCreasePointColor});
   const std::vector<LegendEntry> patches = patch_legend_entries(model.fine.patch_count());
-  o.legends.emplace(Layer::VertexTypes, Legend::categories("vertex type", types));
-  o.legends.emplace(Layer::Links, Legend::categories("links", {{"link to coarse twin", kLinkLineColor}}));
-  o.legends.emplace(Layer::Patches,
+  o.legends.emplace(Layer::kVertexTypes, Legend::categories("vertex type", types));
+  o.legends.emplace(Layer::kLinks, Legend::categories("links", {{"link to coarse twin", kLinkLineColor}}));
+  o.legends.emplace(Layer::kPatches,
                     Legend::categories(model.fine.patch_count() > kPatchColors
                                            ? std::to_string(model.fine.patch_count()) + " patches"
                                            : std::string("patches"),
                                        patches));
-  o.legends.emplace(Layer::DogResidual, Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
-  o.legends.emplace(Layer::EdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
-  o.legends.emplace(Layer::StitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
-  o.legends.emplace(Layer::Bending, Legend::scalar_bar("bending", o.bending_lut));
-  o.legends.emplace(Layer::Handles, Legend::categories("constraints", {{"handle", kHandleColor},
+  o.legends.emplace(Layer::kDogResidual, Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
+  o.legends.emplace(Layer::kEdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
+  o.legends.emplace(Layer::kStitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
+  o.legends.emplace(Layer::kBending, Legend::scalar_bar("bending", o.bending_lut));
+  o.legends.emplace(Layer::kHandles, Legend::categories("constraints", {{"handle", kHandleColor},
                                                                         {"target", kTargetColor},
                                                                         {"handle to target", kResidualLineColor},
                                                                         {"angle constraint", kAngleSiteColor}}));
-  o.legends.emplace(Layer::CreaseCurves,
+  o.legends.emplace(Layer::kCreaseCurves,
                     Legend::categories("creases", {{"mountain", fold_color(Fold::kMountain)},
                                                    {"valley", fold_color(Fold::kValley)},
                                                    {"flat", fold_color(Fold::kFlat)},
@@ -226,7 +208,7 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   // Patches do not change: their cell arrays are set once.
   fine_->set_cell_array("patch", quad_patches(model.fine));
   if (coarse_) coarse_->set_cell_array("patch", quad_patches(model.coarse));
-  for (Layer l : all_layers()) on_[l] = false;
+  for (Layer l : enum_values<Layer>()) on_[l] = false;
   update(rest_scene_state(model));
   apply_view();
 }
@@ -259,11 +241,11 @@ void Scene::update(const SceneState& state) {
 }
 
 double Scene::coarse_offset() const {
-  return options_.view == View::SideBySide ? kSideBySideShift * (model_.fine.xs.back() - model_.fine.xs.front()) : 0;
+  return options_.view == View::kSideBySide ? kSideBySideShift * (model_.fine.xs.back() - model_.fine.xs.front()) : 0;
 }
 
 void Scene::refresh() {
-  const bool flat = options_.view == View::Flat;
+  const bool flat = options_.view == View::kFlat;
   const Eigen::MatrixX3d& fine_x = flat ? model_.fine.V : state_.fine;
   refresh_fine(fine_x);
   if (coarse_) refresh_coarse(fine_x, flat || state_.coarse.rows() == 0 ? model_.coarse.V : state_.coarse);
@@ -376,13 +358,13 @@ bool Scene::layer_on(Layer layer) const { return on_.at(layer); }
 
 std::vector<Layer> Scene::layers_on() const {
   std::vector<Layer> out;
-  for (Layer l : all_layers())
+  for (Layer l : enum_values<Layer>())
     if (on_.at(l)) out.push_back(l);
   return out;
 }
 
 std::optional<Layer> Scene::colour_layer() const {
-  for (Layer l : all_layers())
+  for (Layer l : enum_values<Layer>())
     if (is_colour_layer(l) && on_.at(l)) return l;
   return std::nullopt;
 }
@@ -395,7 +377,7 @@ void Scene::set_options(const SceneOptions& options) {
 void Scene::set_caption(const std::string& text) { overlays_->caption->SetInput(text.c_str()); }
 
 void Scene::apply_view() {
-  const bool side = options_.view == View::SideBySide;
+  const bool side = options_.view == View::kSideBySide;
   if (coarse_) {
     coarse_->set_visible(side || options_.coarse);
     coarse_->set_filled(side, side ? kEdgeColor : kCoarseEdgeColor);
@@ -407,43 +389,43 @@ void Scene::apply_view() {
 void Scene::apply_layers() {
   Overlays& o = *overlays_;
   const std::optional<Layer> colour = colour_layer();
-  const bool types = on_[Layer::VertexTypes], creases = on_[Layer::CreaseCurves];
+  const bool types = on_[Layer::kVertexTypes], creases = on_[Layer::kCreaseCurves];
   for (MeshView* view : {fine_.get(), coarse_.get()}) {
     if (!view) continue;
     view->set_vertices_visible(types);
     view->set_crease_points_visible(types || creases);
     view->set_crease_lines_visible(creases);
-    view->set_edges_visible(on_[Layer::Wireframe]);
-    view->set_trimmed(!on_[Layer::FullCells]);
+    view->set_edges_visible(on_[Layer::kWireframe]);
+    view->set_trimmed(!on_[Layer::kFullCells]);
     view->set_paper(options_.paper);
     if (options_.paper) view->set_crease_points_visible(false);
   }
-  switch (colour.value_or(Layer::Wireframe)) {  // wireframe: not a colour layer
-    case Layer::Patches:
+  switch (colour.value_or(Layer::kWireframe)) {  // wireframe: not a colour layer
+    case Layer::kPatches:
       fine_->color_by("patch", true, o.patch_lut);
       if (coarse_) coarse_->color_by("patch", true, o.patch_lut);
       break;
-    case Layer::DogResidual:
+    case Layer::kDogResidual:
       fine_->color_by("log10_dog_residual", false, o.residual_lut);
       break;
-    case Layer::EdgeStrain:
+    case Layer::kEdgeStrain:
       fine_->color_by("edge_strain", true, o.strain_lut);
       break;
-    case Layer::Bending:
+    case Layer::kBending:
       fine_->color_by("bending", false, o.bending_lut);
       break;
     default:
       fine_->color_by(nullptr, false, nullptr);
   }
-  if (coarse_ && !(colour && *colour == Layer::Patches)) coarse_->color_by(nullptr, false, nullptr);
+  if (coarse_ && !(colour && *colour == Layer::kPatches)) coarse_->color_by(nullptr, false, nullptr);
 
-  const bool coarse_shown = coarse_ && (options_.view == View::SideBySide || options_.coarse);
-  o.links_actor->SetVisibility(on_[Layer::Links] && coarse_shown);
-  o.gap_actor->SetVisibility(on_[Layer::StitchGap]);
+  const bool coarse_shown = coarse_ && (options_.view == View::kSideBySide || options_.coarse);
+  o.links_actor->SetVisibility(on_[Layer::kLinks] && coarse_shown);
+  o.gap_actor->SetVisibility(on_[Layer::kStitchGap]);
   for (vtkActor* a : {o.residual_actor.Get(), o.handle_actor.Get(), o.target_actor.Get(), o.angle_actor.Get()})
-    a->SetVisibility(on_[Layer::Handles]);
-  o.fine_title->SetVisibility(options_.view == View::SideBySide && !options_.paper);
-  o.coarse_title->SetVisibility(options_.view == View::SideBySide && coarse_ && !options_.paper);
+    a->SetVisibility(on_[Layer::kHandles]);
+  o.fine_title->SetVisibility(options_.view == View::kSideBySide && !options_.paper);
+  o.coarse_title->SetVisibility(options_.view == View::kSideBySide && coarse_ && !options_.paper);
   for (const auto& [layer, legend] : o.legends) legend.set_visible(on_[layer] && !options_.paper);
   layout_legends();
 }
@@ -459,14 +441,14 @@ ImageSize Scene::viewport_size() const {
 void Scene::layout_legends() {
   Overlays& o = *overlays_;
   std::vector<const Legend*> stack;
-  for (Layer l : all_layers())
+  for (Layer l : enum_values<Layer>())
     if (o.legends.count(l)) stack.push_back(&o.legends.at(l));
   const ImageSize size = viewport_size();
   stack_legends(stack, size.width, size.height, options_.font_size);
   for (vtkTextActor* t : o.texts()) t->GetTextProperty()->SetFontSize(options_.font_size);
   // The side-by-side titles: each no wider than the distance between the panels' centres (an
   // estimate: 0.55 em per character), so that they never run into each other.
-  if (options_.view == View::SideBySide && coarse_ && renderer_->GetRenderWindow()) {
+  if (options_.view == View::kSideBySide && coarse_ && renderer_->GetRenderWindow()) {
     const double a = o.fine_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
     const double b = o.coarse_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
     const double chars = static_cast<double>(
@@ -490,11 +472,11 @@ void Scene::reset_camera() {
     cb[0] += coarse_->offset(), cb[1] += coarse_->offset();
     merge_bounds(b, cb);
   }
-  if (on_[Layer::Handles] && o.handle_lines->GetNumberOfPoints() > 0) merge_bounds(b, o.handle_lines->GetBounds());
+  if (on_[Layer::kHandles] && o.handle_lines->GetNumberOfPoints() > 0) merge_bounds(b, o.handle_lines->GetBounds());
 
   const bool legends = !options_.paper;
   CameraPose pose;
-  if (options_.view == View::ThreeD) {  // framing what is drawn, point by point
+  if (options_.view == View::kThreeD) {  // framing what is drawn, point by point
     pose = three_d_camera(drawn_points(), width / height, legends);
   } else {
     pose = top_view_camera(b, width / height, legends);
@@ -534,14 +516,14 @@ std::vector<Eigen::Vector3d> Scene::drawn_points() const {
       points.emplace_back(p[0] + dx, p[1], p[2]);
     }
   };
-  add(on_.at(Layer::FullCells) ? static_cast<vtkDataSet*>(fine_->grid()) : fine_->trimmed(), 0);
+  add(on_.at(Layer::kFullCells) ? static_cast<vtkDataSet*>(fine_->grid()) : fine_->trimmed(), 0);
   if (coarse_ && coarse_->surface_actor()->GetVisibility()) add(coarse_->grid(), coarse_->offset());
-  if (on_.at(Layer::Handles)) add(overlays_->handle_lines, 0);
+  if (on_.at(Layer::kHandles)) add(overlays_->handle_lines, 0);
   return points;
 }
 
 void Scene::frame_all() {
-  if (options_.view != View::ThreeD) {  // the top views show the rest state: their default frames it
+  if (options_.view != View::kThreeD) {  // the top views show the rest state: their default frames it
     reset_camera();
     return;
   }
@@ -554,13 +536,13 @@ void Scene::frame_all() {
 
 vtkDataSet* Scene::layer_data(Layer layer) const {
   switch (layer) {
-    case Layer::Links:
+    case Layer::kLinks:
       return overlays_->links;
-    case Layer::StitchGap:
+    case Layer::kStitchGap:
       return overlays_->gaps;
-    case Layer::Handles:
+    case Layer::kHandles:
       return overlays_->handle_lines;
-    case Layer::CreaseCurves:
+    case Layer::kCreaseCurves:
       return fine_->crease_lines();
     default:
       return fine_->grid();

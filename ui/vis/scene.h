@@ -29,6 +29,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/enum_names.h"
+
 #include "geometry/mesh/dog_model.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
@@ -38,14 +40,23 @@
 
 namespace sdog::vis {
 
-enum class View { ThreeD, Flat, SideBySide };
-/// "3d", "flat", "side-by-side".
-const char* view_name(View view);
-/// Throws UsageError naming the known views.
-View parse_view(const std::string& name);
+enum class View { kThreeD, kFlat, kSideBySide };
+}  // namespace sdog::vis
+namespace sdog {
+template <>
+struct EnumNames<vis::View> {
+  static constexpr const char* noun = "view";
+  static constexpr EnumName<vis::View> rows[] = {
+      {vis::View::kThreeD, "3d"},
+      {vis::View::kFlat, "flat"},
+      {vis::View::kSideBySide, "side-by-side"},
+  };
+};
+}  // namespace sdog
+namespace sdog::vis {
 
 struct SceneOptions {
-  View view = View::ThreeD;
+  View view = View::kThreeD;
   bool coarse = false;  ///< show the coarse mesh (side-by-side always does when the model has one)
   int font_size = 20;   ///< legends and titles (points)
   /// The paper style (paper_style.h): no legends, titles or crease-point dots, a paper-coloured
@@ -73,7 +84,7 @@ class Scene {
   /// Switches a layer on or off. Turning a colour layer on turns the one that was on off.
   void set_layer(Layer layer, bool on);
   bool layer_on(Layer layer) const;
-  /// The layers that are on, in the order of all_layers().
+  /// The layers that are on, in the order of enum_values<Layer>().
   std::vector<Layer> layers_on() const;
   /// The colour layer that is on, if any.
   std::optional<Layer> colour_layer() const;

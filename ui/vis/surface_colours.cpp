@@ -69,31 +69,31 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
   const auto n = static_cast<size_t>(surface.vertex_count());
   std::vector<Rgb8> out;
   switch (layer) {
-    case Layer::VertexTypes: {
+    case Layer::kVertexTypes: {
       const NamedArray* types = find(mesh_arrays.point, "vertex_type");
       if (!types) return std::vector<Rgb8>(n, bytes(kUntypedVertexColor));
       for (double type : trimmed_point_values(surface, types->values, types->integral))
         out.push_back(bytes(vertex_type_color(static_cast<VertexType>(std::lround(type)))));
       return out;
     }
-    case Layer::Patches:
+    case Layer::kPatches:
       for (int patch : surface.vertex_patch) out.push_back(bytes(patch_color(patch)));
       return out;
-    case Layer::DogResidual: {
+    case Layer::kDogResidual: {
       const NamedArray& residual = require(mesh_arrays.point, "dog_residual");
       return mapped(dog_residual_lut(),
                     trimmed_point_values(surface, log10_residuals(residual.values)));
     }
-    case Layer::Bending: {
+    case Layer::kBending: {
       const NamedArray& bending = require(mesh_arrays.point, "bending");
       return robust_colours(bending.values, trimmed_point_values(surface, bending.values));
     }
-    case Layer::EdgeStrain: {
+    case Layer::kEdgeStrain: {
       const NamedArray& strain = require(mesh_arrays.cell, "edge_strain");
       return robust_colours(strain.values, cell_means_at_vertices(surface, strain.values));
     }
     default:
-      throw std::logic_error(std::string("surface colours: '") + layer_name(layer) +
+      throw std::logic_error(std::string("surface colours: '") + enum_name(layer) +
                                   "' is not a colour layer");
   }
 }

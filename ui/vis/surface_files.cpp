@@ -18,15 +18,6 @@
 namespace sdog::vis {
 namespace {
 
-constexpr SurfaceFormat kFormats[] = {SurfaceFormat::Obj, SurfaceFormat::Ply};
-
-std::string known_formats() {
-  std::string out;
-  for (SurfaceFormat f : kFormats)
-    out += (out.empty() ? "" : ", ") + std::string(format_extension(f));
-  return out;
-}
-
 void write_obj(const TrimmedSurface& surface, const std::string& path) {
   take_vtk_error();  // installs the capture of VTK's messages, drops an old one
   auto writer = vtkSmartPointer<vtkOBJWriter>::New();
@@ -77,27 +68,8 @@ void write_ply(const TrimmedSurface& surface, const std::vector<Rgb8>& colours,
 
 }  // namespace
 
-const char* format_extension(SurfaceFormat format) {
-  return format == SurfaceFormat::Obj ? "obj" : "ply";
-}
-
-std::vector<SurfaceFormat> parse_surface_formats(const std::string& text,
-                                                 const std::string& context) {
-  if (text.empty()) throw UsageError(context + "no format given (known: " + known_formats() + ")");
-  std::vector<SurfaceFormat> out;
-  for (size_t start = 0; start <= text.size();) {
-    const size_t comma = std::min(text.find(',', start), text.size());
-    const std::string name = text.substr(start, comma - start);
-    start = comma + 1;
-    const auto it = std::find_if(std::begin(kFormats), std::end(kFormats),
-                                 [&](SurfaceFormat f) { return name == format_extension(f); });
-    if (it == std::end(kFormats))
-      throw UsageError(context + "unknown format '" + name + "' (known: " + known_formats() + ")");
-    if (std::find(out.begin(), out.end(), *it) != out.end())
-      throw UsageError(context + "format '" + name + "' is listed twice");
-    out.push_back(*it);
-  }
-  return out;
+std::vector<SurfaceFormat> parse_surface_formats(const std::string& text, const std::string& context) {
+  return parse_enum_list<SurfaceFormat>(text, context);
 }
 
 std::optional<SurfaceFormat> format_of_path(const std::string& path) {
@@ -105,13 +77,11 @@ std::optional<SurfaceFormat> format_of_path(const std::string& path) {
   if (dot == std::string::npos || path[dot] != '.') return std::nullopt;
   std::string extension = path.substr(dot + 1);
   for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (SurfaceFormat f : kFormats)
-    if (extension == format_extension(f)) return f;
-  return std::nullopt;
+  return find_enum<SurfaceFormat>(extension);
 }
 
 std::string with_surface_extension(const std::string& path, SurfaceFormat fallback) {
-  return format_of_path(path) ? path : path + "." + format_extension(fallback);
+  return format_of_path(path) ? path : path + "." + enum_name(fallback);
 }
 
 Eigen::MatrixX3d to_sheet_units(const DogMesh& mesh, const Eigen::MatrixX3d& X) {
@@ -125,7 +95,7 @@ void write_surface_file(SurfaceFormat format, const TrimmedSurface& surface, con
                         Layer colour, const MeshArrays& mesh_arrays, const std::string& path) {
   TrimmedSurface sheet = surface;
   sheet.V = to_sheet_units(mesh, surface.V);
-  if (format == SurfaceFormat::Obj)
+  if (format == SurfaceFormat::kObj)
     write_obj(sheet, path);
   else
     write_ply(sheet, surface_colours(colour, surface, mesh_arrays), path);

@@ -20,10 +20,20 @@
 
 namespace sdog::vis {
 
-enum class SurfaceFormat { Obj, Ply };
+enum class SurfaceFormat { kObj, kPly };
+}  // namespace sdog::vis
 
+namespace sdog {
 /// "obj", "ply": the file extension, without the dot, and the name on the command line.
-const char* format_extension(SurfaceFormat format);
+template <>
+struct EnumNames<vis::SurfaceFormat> {
+  static constexpr const char* noun = "format";
+  static constexpr EnumName<vis::SurfaceFormat> rows[] = {{vis::SurfaceFormat::kObj, "obj"},
+                                                          {vis::SurfaceFormat::kPly, "ply"}};
+};
+}  // namespace sdog
+
+namespace sdog::vis {
 /// Parses "obj,ply" (comma separated, no duplicates, no empty names, at least one). Throws
 /// UsageError, `context` followed by the bad name and the known formats.
 std::vector<SurfaceFormat> parse_surface_formats(const std::string& text,

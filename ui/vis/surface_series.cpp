@@ -36,7 +36,7 @@ void SurfaceSeries::write_final(const Eigen::MatrixX3d& X, const MeshArrays& mes
 void SurfaceSeries::write_exports(const std::string& stem, const MeshArrays& mesh_arrays) {
   for (SurfaceFormat format : exports_.formats)
     write_surface_file(format, surface_, mesh_, exports_.colour, mesh_arrays,
-                       out_.temporary(stem + "." + format_extension(format)));
+                       out_.temporary(stem + "." + enum_name(format)));
 }
 
 void SurfaceSeries::finish() {

@@ -25,7 +25,7 @@ namespace sdog::vis {
 
 struct SurfaceExport {
   std::vector<SurfaceFormat> formats;  ///< OBJ and PLY files to write besides the .vtp (none: none)
-  Layer colour = Layer::Patches;       ///< the colour layer of the PLY files' vertex colours
+  Layer colour = Layer::kPatches;       ///< the colour layer of the PLY files' vertex colours
 };
 
 /// Writes the surface (placed at a state) as a .vtp file with normals and the state's fine mesh

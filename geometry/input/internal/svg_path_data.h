@@ -39,9 +39,9 @@ void skip_wsp(std::string_view text, std::size_t& pos);
 bool skip_comma_wsp(std::string_view text, std::size_t& pos);
 
 enum class NumberScan {
-  ok,          ///< value set, pos advanced past the number
-  absent,      ///< no number at pos (pos unchanged)
-  not_finite,  ///< "nan", "inf", "infinity" (any case, optional sign) or an overflow (1e999)
+  kOk,          ///< value set, pos advanced past the number
+  kAbsent,      ///< no number at pos (pos unchanged)
+  kNotFinite,  ///< "nan", "inf", "infinity" (any case, optional sign) or an overflow (1e999)
 };
 
 /// Scans one number at `pos` (no leading white space is skipped). Underflow gives a signed 0.
@@ -57,11 +57,11 @@ std::vector<double> parse_number_list(std::string_view text);
 /// The `points` attribute of <polyline>/<polygon>: an even number of coordinates.
 std::vector<Point> parse_points(std::string_view text);
 
-enum class SegmentKind { line, quadratic, cubic, arc };
+enum class SegmentKind { kLine, kQuadratic, kCubic, kArc };
 
 /// One drawing command in absolute SVG user coordinates (y down, before transforms).
 struct PathSegment {
-  SegmentKind kind = SegmentKind::line;
+  SegmentKind kind = SegmentKind::kLine;
   Point from = Point::Zero();  ///< current point before the command
   Point c1 = Point::Zero();    ///< quadratic control point / first cubic control point
   Point c2 = Point::Zero();    ///< second cubic control point

@@ -44,7 +44,7 @@ Affine parse_transform(std::string_view text);
 std::string parse_color(std::string_view text);
 
 struct Paint {
-  enum class Kind { none, color, current_color } kind = Kind::none;
+  enum class Kind { kNone, kColor, kCurrentColor } kind = Kind::kNone;
   std::string color;  ///< "#rrggbb" when kind == color
 };
 Paint parse_paint(std::string_view text);

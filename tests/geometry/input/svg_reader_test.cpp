@@ -121,7 +121,7 @@ TEST(SvgNumbers, FollowThePathGrammar) {
   double v = 0;
   while (true) {
     sdog::svg::skip_wsp(text, pos);
-    if (sdog::svg::scan_number(text, pos, v) != sdog::svg::NumberScan::ok) break;
+    if (sdog::svg::scan_number(text, pos, v) != sdog::svg::NumberScan::kOk) break;
     values.push_back(v);
   }
   EXPECT_EQ(values, (std::vector<double>{1.5, 0.5, 10, -5, -5, 0.2, 70, 3}));
@@ -133,15 +133,15 @@ TEST(SvgNumbers, RefuseNonFiniteSpellingsAndOverflow) {
        {"nan", "NaN", "-inf", "Infinity", "1e999", "-1e400", "1e99999999999"}) {
     std::size_t pos = 0;
     double v = 0;
-    EXPECT_EQ(sdog::svg::scan_number(text, pos, v), sdog::svg::NumberScan::not_finite) << text;
+    EXPECT_EQ(sdog::svg::scan_number(text, pos, v), sdog::svg::NumberScan::kNotFinite) << text;
   }
   std::size_t pos = 0;
   double v = 1;
-  ASSERT_EQ(sdog::svg::scan_number("1e-999", pos, v), sdog::svg::NumberScan::ok);
+  ASSERT_EQ(sdog::svg::scan_number("1e-999", pos, v), sdog::svg::NumberScan::kOk);
   EXPECT_EQ(v, 0.0);
   pos = 0;
-  EXPECT_EQ(sdog::svg::scan_number(".", pos, v), sdog::svg::NumberScan::absent);
-  EXPECT_EQ(sdog::svg::scan_number("-", pos, v), sdog::svg::NumberScan::absent);
+  EXPECT_EQ(sdog::svg::scan_number(".", pos, v), sdog::svg::NumberScan::kAbsent);
+  EXPECT_EQ(sdog::svg::scan_number("-", pos, v), sdog::svg::NumberScan::kAbsent);
 }
 
 TEST(SvgPath, MovesAndLinesReadAbsoluteAndRelativeCoordinates) {

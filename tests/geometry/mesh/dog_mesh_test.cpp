@@ -19,10 +19,10 @@ TEST(DogMesh, PlainSheetIsOneGrid) {
   EXPECT_EQ(m.fine.vertex_count(), 77);
   EXPECT_EQ(m.fine.quad_count(), 60);
   EXPECT_EQ(m.fine.patch_count(), 1);
-  EXPECT_EQ(m.fine_topology.count(VertexClass::Star), 9 * 5);
-  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd3), 2 * 9 + 2 * 5);
-  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd2), 4);
-  EXPECT_EQ(m.fine_topology.count(VertexClass::Bnd4), 0);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::kStar), 9 * 5);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::kBnd3), 2 * 9 + 2 * 5);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::kBnd2), 4);
+  EXPECT_EQ(m.fine_topology.count(VertexClass::kBnd4), 0);
   // Mesh units: the x spacing is 1, the sheet's aspect ratio is kept.
   EXPECT_DOUBLE_EQ(m.fine.V(1, 0) - m.fine.V(0, 0), 1.0);
   EXPECT_DOUBLE_EQ(m.fine.V(11, 1) - m.fine.V(0, 1), (200.0 / 6) * (10.0 / 300));

@@ -63,7 +63,7 @@ TEST_P(MapInvariants, LinkedVerticesCoincideInTheFlatState) {
 TEST_P(MapInvariants, IVerticesAreMidpointsOfTheirCoarseEdge) {
   const DogModel& m = model(GetParam());
   for (int f = 0; f < m.fine.vertex_count(); ++f) {
-    if (m.map.fine_type[f] != VertexType::I) continue;
+    if (m.map.fine_type[f] != VertexType::kI) continue;
     const auto [a, b] = m.map.fine_to_coarse_edge[f];
     ASSERT_GE(a, 0);
     ASSERT_GE(b, 0);
@@ -78,7 +78,7 @@ TEST_P(MapInvariants, IVerticesAreMidpointsOfTheirCoarseEdge) {
 TEST_P(MapInvariants, XVerticesAreCentresOfTheirCoarseQuad) {
   const DogModel& m = model(GetParam());
   for (int f = 0; f < m.fine.vertex_count(); ++f) {
-    if (m.map.fine_type[f] != VertexType::X) continue;
+    if (m.map.fine_type[f] != VertexType::kX) continue;
     const int q = m.map.fine_to_coarse_quad[f];
     ASSERT_GE(q, 0);
     Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
@@ -94,14 +94,14 @@ TEST_P(MapInvariants, EveryVertexHasExactlyOneConsistentLabel) {
   for (int f = 0; f < m.fine.vertex_count(); ++f) {
     const VertexType t = m.map.fine_type[f];
     ++counts[static_cast<int>(t)];
-    EXPECT_NE(t, VertexType::CoarseOnly);
+    EXPECT_NE(t, VertexType::kCoarseOnly);
     const bool link = m.map.fine_to_coarse[f] >= 0;
     const bool edge = m.map.fine_to_coarse_edge[f][0] >= 0;
     const bool quad = m.map.fine_to_coarse_quad[f] >= 0;
     EXPECT_EQ(link + edge + quad, 1) << "fine vertex " << f;
-    EXPECT_EQ(link, t == VertexType::Link);
-    EXPECT_EQ(edge, t == VertexType::I);
-    EXPECT_EQ(quad, t == VertexType::X);
+    EXPECT_EQ(link, t == VertexType::kLink);
+    EXPECT_EQ(edge, t == VertexType::kI);
+    EXPECT_EQ(quad, t == VertexType::kX);
   }
   EXPECT_EQ(counts[0] + counts[1] + counts[2], m.fine.vertex_count());
   EXPECT_EQ(counts[1], m.map.i_count);
@@ -109,7 +109,7 @@ TEST_P(MapInvariants, EveryVertexHasExactlyOneConsistentLabel) {
   int coarse_only = 0;
   for (int c = 0; c < m.coarse.vertex_count(); ++c) {
     const bool twin = m.map.coarse_to_fine[c] >= 0;
-    EXPECT_EQ(twin, m.map.coarse_type[c] == VertexType::Link);
+    EXPECT_EQ(twin, m.map.coarse_type[c] == VertexType::kLink);
     coarse_only += !twin;
   }
   EXPECT_EQ(coarse_only, m.map.coarse_only_count);
@@ -149,8 +149,8 @@ TEST_P(MapInvariants, VertexClassesAddUpAndPatchesAreContiguous) {
   for (const auto* pair : {&m.fine, &m.coarse}) {
     const DogMesh& mesh = *pair;
     const QuadTopology& t = pair == &m.fine ? m.fine_topology : m.coarse_topology;
-    EXPECT_EQ(t.count(VertexClass::Star) + t.count(VertexClass::Bnd3) + t.count(VertexClass::Bnd2) +
-                  t.count(VertexClass::Bnd4),
+    EXPECT_EQ(t.count(VertexClass::kStar) + t.count(VertexClass::kBnd3) + t.count(VertexClass::kBnd2) +
+                  t.count(VertexClass::kBnd4),
               mesh.vertex_count());
     EXPECT_EQ(mesh.patch_begin.back(), mesh.vertex_count());
     for (int p = 0; p < mesh.patch_count(); ++p) {

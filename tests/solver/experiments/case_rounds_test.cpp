@@ -33,7 +33,7 @@ TEST(CaseRounds, RoundsRunEveryModeOnceBeforeTheNextRound) {
   RoundsOptions options;
   options.repeat = 3;
   options.observers = [&](const Case& c, int round) {
-    runs.push_back({mode_name(c.mode), round});
+    runs.push_back({enum_name(c.mode), round});
     return std::vector<RunObserver*>{&log};
   };
   const auto rows = run_rounds(cases, config, options);
@@ -50,8 +50,8 @@ TEST(CaseRounds, RoundsRunEveryModeOnceBeforeTheNextRound) {
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& r : rows) {
     EXPECT_TRUE(r.completed()) << r.note;
-    EXPECT_EQ(r.round_ms.size(), 3u) << mode_name(r.mode);
-    EXPECT_EQ(r.round_total_s.size(), 3u) << mode_name(r.mode);
+    EXPECT_EQ(r.round_ms.size(), 3u) << enum_name(r.mode);
+    EXPECT_EQ(r.round_total_s.size(), 3u) << enum_name(r.mode);
     EXPECT_EQ(r.iterations, 5);
     EXPECT_EQ(r.series.size(), 5u);
     EXPECT_EQ(r.dof, 3 * r.vertices);

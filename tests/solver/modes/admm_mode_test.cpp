@@ -100,7 +100,7 @@ TEST(AdmmMode, ThreeRowsPerStitchingPair) {
     scenario.name = "none";
     scenario.iterations = 0;
     scenario.hold = 8;
-    auto mode = make_mode(parse_mode(name), problem, scenario, config);
+    auto mode = make_mode(parse_enum<ModeKind>(name), problem, scenario, config);
     Dofs y = x;
     const double gap0 = diagnose(problem, y).stitch_gap_max;
     const RunSummary s = run_scenario(*mode, problem, scenario, y, {});

@@ -166,7 +166,7 @@ TEST(CoarseMode, NeedsTheCoarseMesh) {
   DogProblem problem(fine_only.fine, fine_only.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, fine_only.fine);
   for (ModeKind mode : {ModeKind::kCoarse, ModeKind::kTwoLevel})
-    EXPECT_THROW(make_mode(mode, problem, scenario, config, &fine_only), UsageError) << mode_name(mode);
+    EXPECT_THROW(make_mode(mode, problem, scenario, config, &fine_only), UsageError) << enum_name(mode);
 }
 
 // A target on a fine vertex without a coarse twin is carried to the coarse mesh through the
@@ -185,7 +185,7 @@ TEST(CoarseMode, CarriesTargetsOnFineOnlyVertices) {
   scenario.positions[1].end = scenario.positions[1].start + Eigen::Vector3d(0, 0, lift);
   const Eigen::Vector3d target = scenario.positions[1].end;
   for (const char* name : {"coarse", "twolevel"}) {
-    RunSetup setup(model(), parse_mode(name), config, scenario);
+    RunSetup setup(model(), parse_enum<ModeKind>(name), config, scenario);
     const RunSummary s = setup.run({});
     const Dofs& x = setup.positions();
     Mode* mode = &setup.mode();

@@ -29,7 +29,7 @@ struct StitchingCase {
 
 std::string case_name(const testing::TestParamInfo<StitchingCase>& info) {
   std::string name = std::filesystem::path(info.param.pattern).stem().string() + "_" +
-                     scenario_name(info.param.scenario);
+                     enum_name(info.param.scenario);
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return name;

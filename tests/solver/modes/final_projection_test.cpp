@@ -109,7 +109,7 @@ struct Finish {
 
 // The state after iteration `k` of a run of `iterations` + `hold` iterations.
 Finish after(const char* name, RunConfig config, int k) {
-  RunSetup setup(model(), parse_mode(name), config);
+  RunSetup setup(model(), parse_enum<ModeKind>(name), config);
   struct Keep : RunObserver {
     int k;
     Dofs x;

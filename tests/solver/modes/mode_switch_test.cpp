@@ -61,7 +61,7 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   std::string current = "standard";
   size_t next = 0;
   for (int k = 1; k <= 130; ++k) {
-    if (next < config.switches.size() && config.switches[next].iteration == k) current = mode_name(config.switches[next++].mode);
+    if (next < config.switches.size() && config.switches[next].iteration == k) current = enum_name(config.switches[next++].mode);
     expected_mode[k] = current;
   }
   for (const auto& r : s.result.reports) {
@@ -74,7 +74,7 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   for (int k = 2; k <= 15; ++k) typical = std::max(typical, s.step[k - 1]);
   for (const ModeSwitch& sw : config.switches)
     EXPECT_LT(s.step[sw.iteration - 1], 4 * typical)
-        << "iteration " << sw.iteration << " (" << mode_name(sw.mode) << " takes over): " << s.step[sw.iteration - 1]
+        << "iteration " << sw.iteration << " (" << enum_name(sw.mode) << " takes over): " << s.step[sw.iteration - 1]
         << " against " << typical;
 
   // The standard mode's last iteration polishes the constraints as in a run of its own. (It does

@@ -109,7 +109,7 @@ TEST(Run, AFailedIterationEndsTheRunAndNamesIt) {
   EXPECT_TRUE(s.failed());
   EXPECT_EQ(s.iterations, 2);
   EXPECT_EQ(s.failure, "iteration 3: asked to fail");
-  EXPECT_STREQ(termination_name(s.termination), "failed");
+  EXPECT_STREQ(enum_name(s.termination), "failed");
 }
 
 // A state beyond kDivergedDogResidual is a failed iteration, which leaves x as it found it: for a
@@ -144,7 +144,7 @@ TEST(Run, ARaisedCancelFlagEndsTheRunBeforeTheNextIteration) {
   EXPECT_EQ(s.termination, Termination::kCancelled);
   EXPECT_EQ(s.iterations, 2);
   EXPECT_FALSE(s.failed());
-  EXPECT_STREQ(termination_name(s.termination), "cancelled");
+  EXPECT_STREQ(enum_name(s.termination), "cancelled");
 }
 
 TEST(Run, TheScheduleSwitchesModes) {

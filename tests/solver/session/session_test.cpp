@@ -289,7 +289,7 @@ TEST(Session, ModeSwitchKeepsThePositions) {
   EXPECT_EQ(r.mode, "twolevel");
   EXPECT_EQ(r.iteration, 11);
   EXPECT_LT(r.diagnostics.dog_max, 1e-4);
-  EXPECT_THROW(s.set_mode(parse_mode("warp")), UsageError);
+  EXPECT_THROW(s.set_mode(parse_enum<ModeKind>("warp")), UsageError);
 }
 
 }  // namespace

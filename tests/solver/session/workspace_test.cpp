@@ -40,7 +40,7 @@ TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   EXPECT_EQ(w.constraints.handles[1].target, Eigen::Vector3d(1, 2, 3));
   EXPECT_LT((w.positions - s.positions()).lpNorm<Eigen::Infinity>(), 1e-12);
 
-  Session back(model(), w.config, parse_mode(w.mode));
+  Session back(model(), w.config, parse_enum<ModeKind>(w.mode));
   back.set_constraints(w.constraints);
   back.set_positions(w.positions, w.iteration);
   EXPECT_EQ(back.scenario().positions.size(), 2u);

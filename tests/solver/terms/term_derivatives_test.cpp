@@ -291,8 +291,8 @@ TEST(TermDerivatives, SplitPatchBlocksMatchFiniteDifferences) {
 TEST(TermDerivatives, DogConstraintsAndTheirLagrangianHessianMatchFiniteDifferences) {
   const auto& f = fixture();
   const DogConstraints t(f.model.fine_topology);
-  EXPECT_EQ(t.row_count(), 3 * f.model.fine_topology.count(VertexClass::Star) +
-                               f.model.fine_topology.count(VertexClass::Bnd3));
+  EXPECT_EQ(t.row_count(), 3 * f.model.fine_topology.count(VertexClass::kStar) +
+                               f.model.fine_topology.count(VertexClass::kBnd3));
   for (unsigned seed : {9u, 10u}) {
     const Dofs x = perturbed(f.rest, seed, 0.15, 0.4);
     check_jacobians(t, x);
