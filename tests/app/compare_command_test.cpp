@@ -9,7 +9,7 @@
 
 #include "tests/app/csv.h"
 #include "tests/app/run_sdog.h"
-#include "tests/vis/image_compare.h"
+#include "tests/ui/vis/image_compare.h"
 
 namespace sdog {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "tests/app/run_sdog.h"
-#include "tests/vis/image_compare.h"
+#include "tests/ui/vis/image_compare.h"
 #include "ui/vis/palette.h"
 
 namespace sdog {

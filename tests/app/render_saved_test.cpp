@@ -17,7 +17,7 @@
 
 #include "app/saved_state.h"
 #include "tests/app/run_sdog.h"
-#include "tests/vis/image_compare.h"
+#include "tests/ui/vis/image_compare.h"
 
 namespace sdog {
 namespace {

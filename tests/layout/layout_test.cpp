@@ -34,7 +34,8 @@ const std::map<std::string, std::vector<std::string>> kLayers = {
     {"solver/experiments", {"solver/config", "geometry/input", "geometry/surface"}},
     {"solver/session", {"solver/config"}},
     {"ui/vis", {"solver/run", "geometry/surface"}},
-    {"ui/studio", {"ui/vis", "solver/session", "geometry/input"}},
+    {"ui/control", {"ui/vis", "solver/session"}},
+    {"ui/studio", {"ui/control", "geometry/input"}},
     {"app", {"ui/studio", "solver/experiments"}},
 };
 
@@ -151,16 +152,29 @@ TEST(Layout, NoFunctionIsLong) {
 
 // tests/ mirrors the sources: a test folder under tests/base, tests/geometry or tests/solver tests
 // the source folder of the same name.
+// The controllers of the studio are Qt-free: tests drive them without a window.
+TEST(Layout, TheControllersIncludeNoQt) {
+  int files = 0;
+  for (const SourceFile& f : source_files()) {
+    if (folder_of(f.path) != "ui/control") continue;
+    ++files;
+    for (const std::string& line : f.lines)
+      if (line.rfind("#include <Q", 0) == 0 || line.rfind("#include <q", 0) == 0 || line.find("QVTK") != std::string::npos)
+        ADD_FAILURE() << f.path << ": " << line;
+  }
+  EXPECT_GE(files, 8);
+}
+
 TEST(Layout, TestFoldersMirrorTheSources) {
   const fs::path root = SDOG_SOURCE_DIR;
   int files = 0;
-  for (const char* top : {"base", "geometry", "solver"}) {
+  for (const char* top : {"base", "geometry", "solver", "ui"}) {
     for (const auto& e : fs::recursive_directory_iterator(root / "tests" / top)) {
       if (e.path().extension() != ".cpp") continue;
       const fs::path source = fs::relative(e.path().parent_path(), root / "tests");
       ++files;
       EXPECT_TRUE(fs::is_directory(root / source)) << e.path().generic_string() << ": no source folder " << source;
-      if (source.generic_string() == "geometry" || source.generic_string() == "solver")
+      if (source.generic_string() == "geometry" || source.generic_string() == "solver" || source.generic_string() == "ui")
         ADD_FAILURE() << e.path().generic_string() << ": belongs in the folder of the layer it tests";
     }
   }

@@ -21,6 +21,7 @@
 #include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/modes/settling_plan.h"
+#include "ui/control/exports.h"
 #include "ui/studio/click_drag_style.h"
 #include "ui/studio/crease_inspector.h"
 #include "ui/studio/model_loader.h"
@@ -60,7 +61,7 @@ QString warnings_text(const DogModel& model) {
 }  // namespace
 
 QString with_extension(const QString& path, const QString& extension) {
-  return QFileInfo(path).suffix().isEmpty() ? path + "." + extension : path;
+  return QString::fromStdString(control::with_extension(path.toStdString(), extension.toStdString()));
 }
 
 MainWindow::MainWindow(const QString& about, QWidget* parent)
@@ -230,8 +231,9 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   chart_->clear();
   reports_received_ = 0;
   modified_ = false;
-  select_vertex(-1);
-  selected_creases_.clear();
+  selection_.clear();
+  refresh_selection_marks();
+  show_in_inspector(-1);
   // A run configuration names vertices, crease points and creases of its pattern: another pattern
   // does not get it.
   QString dropped;

@@ -22,7 +22,9 @@
 
 #include "solver/run/run_config.h"
 #include "solver/session/workspace.h"
-#include "ui/studio/recorder.h"
+#include "ui/control/handle_drag.h"
+#include "ui/control/recorder.h"
+#include "ui/control/selection.h"
 #include "ui/studio/snapshot.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/offscreen.h"
@@ -96,7 +98,7 @@ class MainWindow : public QMainWindow {
   /// Records into `dir` (recorder.h): the current state, then the iterations that are multiples of
   /// `options.every`, as they are shown. `frame`: every picture frames the sheet (the view's
   /// direction). The status bar shows the count and size while recording.
-  bool start_frames(const QString& dir, const RecordingOptions& options = {}, bool frame = true);
+  bool start_frames(const QString& dir, const control::RecordingOptions& options = {}, bool frame = true);
   /// Ends the recording; frames_written() follows.
   void stop_frames();
   bool recording_frames() const { return recorder_ != nullptr; }
@@ -161,7 +163,7 @@ class MainWindow : public QMainWindow {
   /// The fine vertices in the rectangle between two display positions of the 3D view (the rubber
   /// band: Ctrl + drag) are selected.
   void select_in_rectangle(double x0, double y0, double x1, double y1, bool add = false);
-  const std::vector<int>& selection() const { return selection_; }
+  const std::vector<int>& selection() const { return selection_.vertices(); }
   /// What a click at display position (x, y) of the 3D view does: with the crease-curves layer on,
   /// the crease through the nearest crease point within 8 pixels is picked; otherwise (or when
   /// there is none) the nearest vertex within 12 pixels.
@@ -171,10 +173,10 @@ class MainWindow : public QMainWindow {
   // undoable edit of the session), and the fold scenario with them.
   /// The crease selection becomes `creases` (with `add`: they are added); shown in the inspector.
   void select_creases(const std::vector<int>& creases, bool add = false);
-  const std::vector<int>& selected_creases() const { return selected_creases_; }
+  const std::vector<int>& selected_creases() const { return selection_.creases(); }
   /// The crease point of the last crease picked by a click (-1: none): where Edit > Add angle
   /// constraint asks for an angle.
-  int picked_crease_point() const { return picked_crease_point_; }
+  int picked_crease_point() const { return selection_.picked_crease_point(); }
   void set_crease_fold(Fold fold);
   /// Fold angle in degrees (0 to 180) of the selected creases; their assignment stays.
   void set_crease_angle(double degrees);
@@ -189,7 +191,7 @@ class MainWindow : public QMainWindow {
   const Snapshot* snapshot() const { return snapshot_ ? &*snapshot_ : nullptr; }
   int reports_received() const { return reports_received_; }
   bool playing() const { return playing_; }
-  int selected_vertex() const { return selected_vertex_; }
+  int selected_vertex() const { return selection_.vertex(); }
   QString inspector_text() const;
   QString status_text() const;
   vis::Scene* scene() const { return scene_.get(); }
@@ -249,7 +251,10 @@ class MainWindow : public QMainWindow {
   /// Records the state shown when the recording is due for it.
   void record_frame();
   void update_recording_indicator();
-  /// Sends a crease edit of the selection to the session (false: nothing selected, said).
+  /// The crease curves of the model (0 before one is open).
+  int crease_count() const;
+  /// Sends a crease edit of the selection to the session (false: nothing selected or a bad angle,
+  /// said).
   bool edit_creases(std::optional<Fold> fold, std::optional<double> angle);
   /// The hovered vertex (-1: none, then the picked vertex or creases) in the inspector.
   void show_in_inspector(int hovered);
@@ -289,17 +294,12 @@ class MainWindow : public QMainWindow {
   int generation_ = 0;  // of the worker; states from an earlier one are dropped
   bool playing_ = false;
   int reports_received_ = 0;
-  int selected_vertex_ = -1;
   int hovered_vertex_ = -1;
-  std::vector<int> selection_;
-  std::vector<int> selected_creases_;
-  int picked_crease_point_ = -1;
+  control::Selection selection_;
   std::unique_ptr<SelectionMarks> marks_;
-  int dragged_handle_ = -1;
-  double drag_depth_ = 0;
-  bool drag_moved_ = false;  // the drag in progress has sent a target (its later ones merge)
+  control::HandleDrag drag_;
 
-  std::unique_ptr<Recorder> recorder_;
+  std::unique_ptr<control::Recorder> recorder_;
   bool record_framed_ = true;
   QString last_recording_dir_, last_screenshot_;  // what the dialogs offer next time
   vis::ImageSize last_screenshot_size_{1600, 900};

@@ -156,10 +156,10 @@ void MainWindow::build_edit_menu() {
                      "Hold the selected vertices (click one, or Ctrl + drag a rubber band around several) where "
                      "they are; Shift + drag a handle to move it"),
           &QAction::triggered, this, [this] {
-            if (selection_.empty())
+            if (selection_.vertices().empty())
               report_error("Select vertices first: click one in the view, or Ctrl + drag a rubber band around several.");
             else
-              add_handles(selection_);
+              add_handles(selection_.vertices());
           });
   connect(add_action(m, "Remove handle...", QKeySequence("Shift+H"), "Remove one of the position handles"),
           &QAction::triggered, this, [this] {
@@ -270,12 +270,12 @@ void MainWindow::build_crease_menu() {
   }
   connect(add_action(m, "&Angle...", QKeySequence(), "Ask for the fold angle of the picked creases (0 to 180 degrees)"),
           &QAction::triggered, this, [this] {
-            if (selected_creases_.empty()) {
+            if (selection_.creases().empty()) {
               report_error("Pick a crease first: switch the crease-curves overlay on (Ctrl+9) and click a crease.");
               return;
             }
             double current = config_.fold_angle;
-            const int first = selected_creases_.front();
+            const int first = selection_.creases().front();
             if (snapshot_ && first < static_cast<int>(snapshot_->crease_angles.size()) && snapshot_->crease_angles[first])
               current = *snapshot_->crease_angles[first];
             bool ok = false;

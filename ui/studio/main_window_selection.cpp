@@ -21,6 +21,9 @@
 #include "base/errors.h"
 #include "solver/config/run_config_json.h"
 #include "solver/modes/mode_factory.h"
+#include "ui/control/crease_edit.h"
+#include "ui/control/screen_pick.h"
+#include "ui/control/selection.h"
 #include "ui/studio/click_drag_style.h"
 #include "ui/studio/crease_inspector.h"
 #include "ui/studio/model_loader.h"
@@ -37,84 +40,49 @@ namespace sdog::studio {
 
 void MainWindow::select_vertex(int vertex) { select_vertices(vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{}); }
 
+int MainWindow::crease_count() const { return model_ ? static_cast<int>(model_->fine.stitching.curves.size()) : 0; }
+
 void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
-  if (!add) {
-    selection_.clear();
-    selected_creases_.clear();
-    picked_crease_point_ = -1;
-  }
-  for (int v : vertices)
-    if (std::find(selection_.begin(), selection_.end(), v) == selection_.end()) selection_.push_back(v);
-  selected_vertex_ = selection_.size() == 1 ? selection_.front() : -1;
+  selection_.select_vertices(vertices, add);
   refresh_selection_marks();
   show_in_inspector(-1);
 }
 
 void MainWindow::select_creases(const std::vector<int>& creases, bool add) {
-  if (!add) {
-    selected_creases_.clear();
-    selection_.clear();
-    selected_vertex_ = -1;
-  }
-  const int count = model_ ? static_cast<int>(model_->fine.stitching.curves.size()) : 0;
-  for (int k : creases)
-    if (k >= 0 && k < count && std::find(selected_creases_.begin(), selected_creases_.end(), k) == selected_creases_.end())
-      selected_creases_.push_back(k);
+  selection_.select_creases(creases, crease_count(), add);
   refresh_selection_marks();
   show_in_inspector(-1);
 }
 
 void MainWindow::click(double x, double y) {
   if (!snapshot_) return;
-  if (scene_->layer_on(vis::Layer::kCreaseCurves) && !model_->fine.stitching.curves.empty()) {
+  Eigen::MatrixX3d crease_points(0, 3);
+  if (scene_->layer_on(vis::Layer::kCreaseCurves)) {
     const auto points = vis::crease_point_positions(model_->fine, shown_positions());
     Eigen::MatrixX3d rows(points.size(), 3);
     for (size_t p = 0; p < points.size(); ++p) rows.row(p) = points[p].transpose();
-    const int point = pick_point(renderer_, rows, x, y, 8);
-    const auto& curves = model_->fine.stitching.curves;
-    for (int k = 0; point >= 0 && k < static_cast<int>(curves.size()); ++k) {
-      if (std::find(curves[k].points.begin(), curves[k].points.end(), point) == curves[k].points.end()) continue;
-      select_creases({k});
-      picked_crease_point_ = point;
-      status_->setText(QString("crease %1 picked at crease point %2 (Creases: Mountain, Valley, Angle..., Fold; "
-                               "Edit > Add angle constraint: A)")
-                           .arg(k)
-                           .arg(point));
-      return;
-    }
+    crease_points = project_to_display(renderer_, rows);
   }
-  const int v = pick_point(renderer_, shown_positions(), x, y, 12);
-  select_vertex(v);
-  status_->setText(v >= 0 ? QString("vertex %1 picked (Edit > Make handle: H)").arg(v)
-                          : QString("no vertex within 12 pixels of the click"));
+  const control::ClickPick pick =
+      control::pick_at(model_->fine, crease_points, project_to_display(renderer_, shown_positions()), x, y);
+  selection_.apply(pick, crease_count());
+  refresh_selection_marks();
+  show_in_inspector(-1);
+  status_->setText(QString::fromStdString(pick.message));
 }
 
 bool MainWindow::edit_creases(std::optional<Fold> fold, std::optional<double> angle) {
-  if (selected_creases_.empty()) {
-    report_error("Pick a crease first: switch the crease-curves overlay on (Ctrl+9) and click a crease.");
-    return false;
-  }
-  const std::vector<int> creases = selected_creases_;
+  const std::vector<int> creases = selection_.creases();
+  std::string message;
+  if (!attempt([&] { message = control::crease_edit_message(creases, fold, angle, config_.scenario); })) return false;
   post([creases, fold, angle](SolverWorker& w) { w.set_creases(creases, fold, angle); });
-  const QString what = fold ? QString(enum_name(*fold)) : QString("%1 degrees").arg(*angle);
-  status_->setText(QString("%1 crease(s) set to %2%3")
-                       .arg(creases.size())
-                       .arg(what)
-                       .arg(config_.scenario == ScenarioKind::kFold
-                                ? " - the fold goes on from the current shape (Creases > Fold starts again from flat)"
-                                : " - Creases > Fold folds with the assignments"));
+  status_->setText(QString::fromStdString(message));
   return true;
 }
 
 void MainWindow::set_crease_fold(Fold fold) { edit_creases(fold, std::nullopt); }
 
-void MainWindow::set_crease_angle(double degrees) {
-  if (!(degrees >= 0 && degrees <= 180)) {
-    report_error("A fold angle is from 0 to 180 degrees (its direction is the assignment's).");
-    return;
-  }
-  edit_creases(std::nullopt, degrees);
-}
+void MainWindow::set_crease_angle(double degrees) { edit_creases(std::nullopt, degrees); }
 
 void MainWindow::fold_creases() {
   if (!worker_) {
@@ -144,7 +112,7 @@ void MainWindow::set_fold_percent(int percent) {
 
 void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {
   if (!snapshot_) return;
-  select_vertices(points_in_rectangle(renderer_, shown_positions(), x0, y0, x1, y1), add);
+  select_vertices(control::inside_rectangle(project_to_display(renderer_, shown_positions()), x0, y0, x1, y1), add);
 }
 
 Eigen::MatrixX3d MainWindow::shown_positions() const {
@@ -154,7 +122,7 @@ Eigen::MatrixX3d MainWindow::shown_positions() const {
 
 void MainWindow::refresh_selection_marks() {
   if (snapshot_)
-    marks_->show_points(shown_positions(), selection_);
+    marks_->show_points(shown_positions(), selection_.vertices());
   else
     marks_->show_points(Eigen::MatrixX3d(0, 3), {});
   render();
@@ -162,12 +130,12 @@ void MainWindow::refresh_selection_marks() {
 
 void MainWindow::show_in_inspector(int hovered) {
   hovered_vertex_ = hovered;
-  const int vertex = hovered >= 0 ? hovered : selected_vertex_;
-  if (vertex < 0 && !selected_creases_.empty() && model_ && snapshot_) {
+  const int vertex = hovered >= 0 ? hovered : selection_.vertex();
+  if (vertex < 0 && !selection_.creases().empty() && model_ && snapshot_) {
     attempt([&] {
       inspector_->setText("<i>picked</i><br>" + describe_creases(*model_, snapshot_->state.crease_folds,
                                                                  snapshot_->crease_angles, config_.fold_angle,
-                                                                 selected_creases_));
+                                                                 selection_.creases()));
     });
     return;
   }

@@ -18,7 +18,7 @@ RecordDialog::RecordDialog(const QString& dir, QWidget* parent) : QDialog(parent
   auto* dir_row = path_row(dir_, [this](const QString& current) {
     return QFileDialog::getExistingDirectory(this, "Folder for the frames", current);
   });
-  const RecordingOptions defaults;
+  const control::RecordingOptions defaults;
   png_ = new QCheckBox("Pictures of the view (frame_NNNN.png)");
   png_->setChecked(defaults.png);
   vtu_ = new QCheckBox("Meshes for ParaView (frame_NNNN.vtu, frames.pvd)");
@@ -46,8 +46,8 @@ RecordDialog::RecordDialog(const QString& dir, QWidget* parent) : QDialog(parent
 
 QString RecordDialog::dir() const { return dir_->text().trimmed(); }
 
-RecordingOptions RecordDialog::options() const {
-  RecordingOptions o;
+control::RecordingOptions RecordDialog::options() const {
+  control::RecordingOptions o;
   o.png = png_->isChecked();
   o.vtu = vtu_->isChecked();
   o.surface = surface_->isChecked();

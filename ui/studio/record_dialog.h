@@ -4,7 +4,7 @@
 #include <QDialog>
 #include <QString>
 
-#include "ui/studio/recorder.h"
+#include "ui/control/recorder.h"
 
 class QCheckBox;
 class QLineEdit;
@@ -19,7 +19,7 @@ class RecordDialog : public QDialog {
   explicit RecordDialog(const QString& dir, QWidget* parent = nullptr);
 
   QString dir() const;
-  RecordingOptions options() const;
+  control::RecordingOptions options() const;
   bool frame() const;
 
  private:

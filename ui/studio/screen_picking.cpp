@@ -3,7 +3,8 @@
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
 
-#include <algorithm>
+#include "ui/control/screen_pick.h"
+
 #include <limits>
 #include <utility>
 #include <vector>
@@ -46,31 +47,7 @@ Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3
 }
 
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels) {
-  // Points that project within a pixel of the nearest one count as one place (copies of a crease
-  // vertex, a sheet folded over itself): the front one wins.
-  constexpr double kSamePlace = 1.0;
-  const Eigen::MatrixX3d display = project_to_display(renderer, points);
-  const Eigen::VectorXd distance =
-      ((display.col(0).array() - x).square() + (display.col(1).array() - y).square()).sqrt().matrix();
-  double nearest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < distance.size(); ++i)
-    if (distance[i] < nearest) nearest = distance[i];  // NaN (behind the camera) never is
-  if (!(nearest <= max_pixels)) return -1;
-  int best = -1;
-  for (int i = 0; i < distance.size(); ++i)
-    if (distance[i] <= nearest + kSamePlace && (best < 0 || display(i, 2) < display(best, 2))) best = i;
-  return best;
-}
-
-std::vector<int> points_in_rectangle(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x0, double y0,
-                                     double x1, double y1) {
-  const Eigen::MatrixX3d display = project_to_display(renderer, points);
-  const double left = std::min(x0, x1), right = std::max(x0, x1), bottom = std::min(y0, y1), top = std::max(y0, y1);
-  std::vector<int> inside;
-  for (int i = 0; i < display.rows(); ++i)
-    if (display(i, 0) >= left && display(i, 0) <= right && display(i, 1) >= bottom && display(i, 1) <= top)
-      inside.push_back(i);
-  return inside;
+  return control::nearest_on_screen(project_to_display(renderer, points), x, y, max_pixels);
 }
 
 }  // namespace sdog::studio

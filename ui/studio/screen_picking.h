@@ -9,15 +9,10 @@
 
 namespace sdog::studio {
 
-/// Index of the row of `points` (world coordinates, n x 3) whose projection is nearest display
-/// position (x, y) (VTK display coordinates: origin bottom left), if within `max_pixels`; of points
-/// projecting within a pixel of that distance, the one nearest the camera. -1 if none.
+/// The row of `points` (world coordinates, n x 3) nearest display position (x, y) (VTK display
+/// coordinates: origin bottom left) within `max_pixels`, as control::nearest_on_screen picks it;
+/// -1 if none.
 int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels);
-
-/// Rows of `points` whose projections lie in the rectangle with corners (x0, y0) and (x1, y1)
-/// (display coordinates, any two opposite corners), hidden ones included, in row order.
-std::vector<int> points_in_rectangle(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x0, double y0,
-                                     double x1, double y1);
 
 /// Display coordinates (x, y, depth) of every row of `points` (a point behind the camera: NaN).
 Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3d& points);

@@ -1,4 +1,4 @@
-#include "ui/studio/recorder.h"
+#include "ui/control/recorder.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include "ui/vis/frame_writer.h"
 #include "ui/vis/surface_series.h"
 
-namespace sdog::studio {
+namespace sdog::control {
 namespace fs = std::filesystem;
 
 void Recorder::check(const RecordingOptions& options) {
@@ -85,4 +85,21 @@ void Recorder::record(const vis::SceneState& state, int iteration, double time, 
   ++frames_;
 }
 
-}  // namespace sdog::studio
+namespace {
+std::string megabytes(std::uintmax_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return text;
+}
+}  // namespace
+
+std::string recording_indicator(const Recorder& recorder) {
+  return "\u25CF REC " + std::to_string(recorder.frame_count()) + " frames, " + megabytes(recorder.bytes());
+}
+
+std::string recording_summary(const Recorder& recorder, const std::string& dir) {
+  return "recording stopped: " + std::to_string(recorder.frame_count()) + " frames (" + megabytes(recorder.bytes()) +
+         ") in " + dir + " (frames.csv lists their iterations)";
+}
+
+}  // namespace sdog::control

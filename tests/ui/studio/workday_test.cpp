@@ -301,7 +301,7 @@ class WorkdayTest : public QObject {
     open();
     QTemporaryDir dir;
     const QString frames = dir.filePath("frames");
-    sdog::studio::RecordingOptions options;
+    sdog::control::RecordingOptions options;
     options.png = options.vtu = options.surface = true;
     QVERIFY(window_->start_frames(frames, options));
     QCOMPARE(window_->frames_recorded(), 1);  // the state shown
@@ -353,7 +353,7 @@ class WorkdayTest : public QObject {
     QCOMPARE(errors_.size(), 1);
     QVERIFY(errors_[0].contains("already holds a recording"));
     // Every 3rd iteration, pictures only.
-    sdog::studio::RecordingOptions sparse;
+    sdog::control::RecordingOptions sparse;
     sparse.every = 3;
     const QString every3 = dir.filePath("every3");
     const int start = iteration();

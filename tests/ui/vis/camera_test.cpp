@@ -8,7 +8,7 @@
 
 #include "base/errors.h"
 #include "ui/vis/camera.h"
-#include "tests/vis/scene_fixture.h"
+#include "tests/ui/vis/scene_fixture.h"
 
 namespace sdog {
 namespace {

@@ -13,7 +13,7 @@
 
 #include <set>
 
-#include "tests/vis/scene_fixture.h"
+#include "tests/ui/vis/scene_fixture.h"
 #include "ui/vis/offscreen.h"
 #include "ui/vis/scene.h"
 

@@ -19,7 +19,7 @@
 #include "base/errors.h"
 #include "geometry/surface/trimmed_surface.h"
 #include "solver/problem/diagnostics.h"
-#include "tests/vis/scene_fixture.h"
+#include "tests/ui/vis/scene_fixture.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/layers.h"
 #include "ui/vis/mesh_view.h"

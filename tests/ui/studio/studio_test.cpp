@@ -41,7 +41,7 @@
 #include "app/blas_kernels.h"
 #include "app/saved_state.h"
 #include "solver/terms/term.h"
-#include "tests/vis/image_compare.h"
+#include "tests/ui/vis/image_compare.h"
 #include "ui/studio/main_window.h"
 #include "ui/studio/objective_chart.h"
 #include "ui/studio/screen_picking.h"
@@ -708,7 +708,7 @@ class StudioTest : public QObject {
     QTemporaryDir dir;
     const QString frames = dir.filePath("frames");
     QSignalSpy written(window_.get(), &MainWindow::frames_written);
-    sdog::studio::RecordingOptions options;
+    sdog::control::RecordingOptions options;
     options.vtu = true;
     QVERIFY(window_->start_frames(frames, options));
     window_->step(3);
@@ -724,7 +724,7 @@ class StudioTest : public QObject {
     QCOMPARE(QDir(frames).entryList({"*.png"}).size(), 4);
     QVERIFY(errors_.isEmpty());
     // Nothing to record is refused.
-    sdog::studio::RecordingOptions nothing;
+    sdog::control::RecordingOptions nothing;
     nothing.png = false;
     QVERIFY(!window_->start_frames(dir.filePath("none"), nothing));
     QCOMPARE(errors_.size(), 1);

@@ -8,7 +8,7 @@
 
 #include "base/errors.h"
 #include "tests/test_support.h"
-#include "tests/vis/image_compare.h"
+#include "tests/ui/vis/image_compare.h"
 #include "ui/vis/line_chart.h"
 #include "ui/vis/vtk_meshes.h"
 

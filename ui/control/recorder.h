@@ -19,7 +19,7 @@
 #include "ui/vis/pvd_collection.h"
 #include "ui/vis/scene_state.h"
 
-namespace sdog::studio {
+namespace sdog::control {
 
 struct RecordingOptions {
   bool png = true;       ///< frame_NNNN.png
@@ -64,4 +64,9 @@ class Recorder {
   vis::TimeSteps vtu_steps_, surface_steps_;
 };
 
-}  // namespace sdog::studio
+/// The status bar's indicator while recording: "● REC 12 frames, 3.4 MB".
+std::string recording_indicator(const Recorder& recorder);
+/// What a stopped recording says: how many frames, how big, and where (`dir` as shown).
+std::string recording_summary(const Recorder& recorder, const std::string& dir);
+
+}  // namespace sdog::control

@@ -21,7 +21,7 @@
 
 #include "base/errors.h"
 #include "geometry/surface/trimmed_surface.h"
-#include "tests/vis/scene_fixture.h"
+#include "tests/ui/vis/scene_fixture.h"
 #include "tests/vtk_read_back.h"
 #include "ui/vis/frame_writer.h"
 #include "ui/vis/palette.h"

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "tests/test_support.h"
-#include "tests/vis/image_compare.h"
-#include "tests/vis/scene_fixture.h"
+#include "tests/ui/vis/image_compare.h"
+#include "tests/ui/vis/scene_fixture.h"
 #include "ui/vis/palette.h"
 #include "ui/vis/picture.h"
 
