@@ -11,16 +11,16 @@ namespace {
 // palette's colours in the order of the modes, except that the sixth mode (coarse) takes the fifth
 // colour (orange) and the fifth mode the sixth (sky blue), which is hard to tell from the standard
 // mode's blue, and coarse is usually drawn beside it.
-vis::Rgb mode_color(ModeKind mode) {
+vis::Rgb mode_colour(ModeKind mode) {
   const int index = static_cast<int>(mode);
   const int kOrange = 4, kSkyBlue = 5;
-  return vis::series_color(index == kSkyBlue ? kOrange : index == kOrange ? kSkyBlue : index);
+  return vis::series_colour(index == kSkyBlue ? kOrange : index == kOrange ? kSkyBlue : index);
 }
 
 vis::ChartSeries mode_series(const CaseResult& r) {
   vis::ChartSeries s;
   s.name = std::string(enum_name(r.mode)) + (r.completed() ? "" : std::string(" (") + enum_name(r.status) + ")");
-  s.color = mode_color(r.mode);
+  s.colour = mode_colour(r.mode);
   return s;
 }
 
@@ -71,7 +71,7 @@ std::optional<vis::LineChart> scaling_chart(const std::string& pattern, const st
     std::vector<size_t> order(s.x.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return s.x[i] < s.x[j]; });
-    vis::ChartSeries sorted{s.name, {}, {}, s.color};
+    vis::ChartSeries sorted{s.name, {}, {}, s.colour};
     for (size_t i : order) {
       sorted.x.push_back(s.x[i]);
       sorted.y.push_back(s.y[i]);

@@ -35,7 +35,7 @@ double angle_of_attribute(const std::string& value, const std::string& where) {
 CurveReading read_curve(const SvgCurve& curve, const std::string& where) {
   CurveReading reading;
   // 2. and 4.: the colour.
-  const std::string& c = curve.color;
+  const std::string& c = curve.colour;
   if (c == "#000000") reading.role = CurveRole::kBoundary;
   else if (c == "#ff0000") reading.fold = Fold::kMountain;
   else if (c == "#0000ff") reading.fold = Fold::kValley;

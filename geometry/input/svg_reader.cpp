@@ -31,7 +31,7 @@ constexpr int kMaxNesting = 256;
 
 /// Properties resolved with precedence and inheritance (see svg_reader.h).
 struct InheritedStyle {
-  std::optional<std::string> stroke, fill, dasharray, color, stroke_opacity, data_fold, data_angle;
+  std::optional<std::string> stroke, fill, dasharray, colour, stroke_opacity, data_fold, data_angle;
   std::optional<double> opacity;  ///< product of the opacity of the element and its groups
   Affine ctm;  ///< maps the element's user space to the root's
 };
@@ -268,7 +268,7 @@ class Reader {
     inherit("stroke", style.stroke);
     inherit("fill", style.fill);
     inherit("stroke-dasharray", style.dasharray);
-    inherit("color", style.color);
+    inherit("color", style.colour);
     inherit("stroke-opacity", style.stroke_opacity);
     const auto opacity = own.find("opacity");
     if (opacity != own.end()) {
@@ -325,21 +325,21 @@ class Reader {
     return guarded(node, name, [&] { return svg::parse_length(attribute.value()); });
   }
 
-  std::string resolve_color(const pugi::xml_node& node, const InheritedStyle& style) const {
-    auto color_property = [&] {
-      if (!style.color) return std::string("#000000");
-      return guarded(node, "color", [&] { return svg::parse_color(*style.color); });
+  std::string resolve_colour(const pugi::xml_node& node, const InheritedStyle& style) const {
+    auto colour_property = [&] {
+      if (!style.colour) return std::string("#000000");
+      return guarded(node, "color", [&] { return svg::parse_colour(*style.colour); });
     };
     if (style.stroke) {
       const svg::Paint stroke =
           guarded(node, "stroke", [&] { return svg::parse_paint(*style.stroke); });
-      if (stroke.kind == svg::Paint::Kind::kColor) return stroke.color;
-      if (stroke.kind == svg::Paint::Kind::kCurrentColor) return color_property();
+      if (stroke.kind == svg::Paint::Kind::kColour) return stroke.colour;
+      if (stroke.kind == svg::Paint::Kind::kCurrentColour) return colour_property();
     }
     if (style.fill) {
       const svg::Paint fill = guarded(node, "fill", [&] { return svg::parse_paint(*style.fill); });
-      if (fill.kind == svg::Paint::Kind::kColor) return fill.color;
-      if (fill.kind == svg::Paint::Kind::kCurrentColor) return color_property();
+      if (fill.kind == svg::Paint::Kind::kColour) return fill.colour;
+      if (fill.kind == svg::Paint::Kind::kCurrentColour) return colour_property();
     }
     return "#000000";  // SVG's initial fill; also what an unpainted line is taken to be
   }
@@ -351,8 +351,8 @@ class Reader {
     shape.meta.element = name;
     shape.meta.id = node.attribute("id").value();
     shape.meta.line = line_of(node.offset_debug());
-    shape.meta.color = resolve_color(node, style);
-    shape.meta.is_boundary = shape.meta.color == "#000000";
+    shape.meta.colour = resolve_colour(node, style);
+    shape.meta.is_boundary = shape.meta.colour == "#000000";
     const std::vector<double> dashes = dash_lengths(style.dasharray);
     shape.meta.dashed = !dashes.empty();
     shape.meta.dash_dot = is_dash_dot(dashes);

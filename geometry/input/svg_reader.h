@@ -65,7 +65,7 @@ namespace sdog {
 struct SvgCurve {
   std::vector<Eigen::Vector2d> points;  ///< flattened, y up; consecutive duplicates removed
   bool closed = false;       ///< closed by Z, or a polygon/rect/circle/ellipse (last != first)
-  std::string color;         ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
+  std::string colour;         ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
   bool is_boundary = false;  ///< colour is exactly black (#000000)
   bool dashed = false;       ///< stroke-dasharray set and not "none"
   /// Dashed, with dashes of different lengths (the longest at least twice the shortest).

@@ -10,13 +10,13 @@ namespace sdog::svg {
 
 namespace {
 
-struct NamedColor {
+struct NamedColour {
   const char* name;
   const char* hex;
 };
 
 // CSS Color Module Level 4 named colours.
-constexpr NamedColor kNamedColors[] = {
+constexpr NamedColour kNamedColors[] = {
     {"aliceblue", "f0f8ff"},
     {"antiquewhite", "faebd7"},
     {"aqua", "00ffff"},
@@ -175,11 +175,11 @@ bool starts_with(std::string_view text, std::string_view prefix) {
   return text.substr(0, prefix.size()) == prefix;
 }
 
-[[noreturn]] void bad_color(std::string_view text) {
+[[noreturn]] void bad_colour(std::string_view text) {
   throw ElementError("unrecognised colour '" + std::string(text) + "'");
 }
 
-std::string hex_color(int r, int g, int b) {
+std::string hex_colour(int r, int g, int b) {
   static const char digits[] = "0123456789abcdef";
   std::string out = "#";
   for (int v : {r, g, b}) {
@@ -192,14 +192,14 @@ std::string hex_color(int r, int g, int b) {
 /// "rgb(r, g, b)" / "rgba(r, g, b, a)" / "rgb(r g b / a)" with numbers or percentages.
 std::string parse_rgb(std::string_view original, std::string_view lowered) {
   const std::size_t open = lowered.find('(');
-  if (lowered.back() != ')') bad_color(original);
+  if (lowered.back() != ')') bad_colour(original);
   const std::string_view inner = lowered.substr(open + 1, lowered.size() - open - 2);
   std::vector<double> channels;
   std::size_t pos = 0;
   skip_wsp(inner, pos);
   while (pos < inner.size()) {
     double v = 0;
-    if (scan_number(inner, pos, v) != NumberScan::kOk) bad_color(original);
+    if (scan_number(inner, pos, v) != NumberScan::kOk) bad_colour(original);
     if (pos < inner.size() && inner[pos] == '%') {
       v = v * 255 / 100;  // not v * 2.55: 50% must give exactly 127.5, rounded to 128
       ++pos;
@@ -209,14 +209,14 @@ std::string parse_rgb(std::string_view original, std::string_view lowered) {
     if (pos < inner.size() && (inner[pos] == ',' || inner[pos] == '/')) {
       ++pos;
       skip_wsp(inner, pos);
-      if (pos == inner.size()) bad_color(original);
+      if (pos == inner.size()) bad_colour(original);
     }
   }
-  if (channels.size() != 3 && channels.size() != 4) bad_color(original);
+  if (channels.size() != 3 && channels.size() != 4) bad_colour(original);
   int rgb[3];
   for (int i = 0; i < 3; ++i)
     rgb[i] = static_cast<int>(std::lround(std::clamp(channels[i], 0.0, 255.0)));
-  return hex_color(rgb[0], rgb[1], rgb[2]);
+  return hex_colour(rgb[0], rgb[1], rgb[2]);
 }
 
 [[noreturn]] void transform_error(const std::string& what, std::string_view text, std::size_t pos) {
@@ -346,23 +346,23 @@ Affine parse_transform(std::string_view text) {
   return result;
 }
 
-std::string parse_color(std::string_view text) {
+std::string parse_colour(std::string_view text) {
   const std::string_view value = trim(text);
-  if (value.empty()) bad_color(text);
+  if (value.empty()) bad_colour(text);
   const std::string lowered = to_lower(value);
   if (lowered[0] == '#') {
     const std::string_view hex = std::string_view(lowered).substr(1);
-    if (!std::all_of(hex.begin(), hex.end(), is_hex)) bad_color(value);
+    if (!std::all_of(hex.begin(), hex.end(), is_hex)) bad_colour(value);
     if (hex.size() == 3 || hex.size() == 4)
       return std::string{'#', hex[0], hex[0], hex[1], hex[1], hex[2], hex[2]};
     if (hex.size() == 6 || hex.size() == 8) return "#" + std::string(hex.substr(0, 6));
-    bad_color(value);
+    bad_colour(value);
   }
   if (starts_with(lowered, "rgb(") || starts_with(lowered, "rgba("))
     return parse_rgb(value, lowered);
-  for (const NamedColor& named : kNamedColors)
+  for (const NamedColour& named : kNamedColors)
     if (lowered == named.name) return std::string("#") + named.hex;
-  bad_color(value);
+  bad_colour(value);
 }
 
 Paint parse_paint(std::string_view text) {
@@ -371,7 +371,7 @@ Paint parse_paint(std::string_view text) {
   Paint paint;
   if (lowered == "none" || lowered == "transparent") return paint;
   if (lowered == "currentcolor") {
-    paint.kind = Paint::Kind::kCurrentColor;
+    paint.kind = Paint::Kind::kCurrentColour;
     return paint;
   }
   if (starts_with(lowered, "url(")) {
@@ -383,8 +383,8 @@ Paint parse_paint(std::string_view text) {
                          std::string(value) + "'; use a plain colour");
     return parse_paint(fallback);
   }
-  paint.kind = Paint::Kind::kColor;
-  paint.color = parse_color(value);
+  paint.kind = Paint::Kind::kColour;
+  paint.colour = parse_colour(value);
   return paint;
 }
 

@@ -24,7 +24,7 @@ TEST(RenderCommand, DrawsAnOverlayAfterARun) {
   img->GetDimensions(dims);
   EXPECT_EQ(dims[0], 480);
   EXPECT_EQ(dims[1], 300);
-  EXPECT_GT(test::pixels_near(img, vis::kHandleColor), 5);
+  EXPECT_GT(test::pixels_near(img, vis::kHandleColour), 5);
 }
 
 TEST(RenderCommand, DefaultIsTheVertexTypePicture) {
@@ -34,7 +34,7 @@ TEST(RenderCommand, DefaultIsTheVertexTypePicture) {
   // Nothing but what sdog says: no VTK log lines.
   EXPECT_EQ(r.err.find("ERR|"), std::string::npos) << r.err;
   auto img = test::read_png(dir + "/types.png");
-  EXPECT_GT(test::pixels_near(img, vis::vertex_type_color(VertexType::kCoarseOnly)), 5);
+  EXPECT_GT(test::pixels_near(img, vis::vertex_type_colour(VertexType::kCoarseOnly)), 5);
 }
 
 TEST(RenderCommand, UnknownOverlayListsTheKnownOnes) {

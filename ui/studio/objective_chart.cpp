@@ -17,7 +17,7 @@ constexpr double kLogFloor = -16;  // log10 of values at or below 0 (unused term
 
 // The palette's colours, dashed once they repeat (nine series, seven colours).
 QPen series_pen(int index) {
-  const vis::Rgb c = vis::series_color(index);
+  const vis::Rgb c = vis::series_colour(index);
   return QPen(QColor::fromRgbF(c[0], c[1], c[2]), 1.6, index >= 7 ? Qt::DashLine : Qt::SolidLine);
 }
 

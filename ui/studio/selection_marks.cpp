@@ -13,7 +13,7 @@ namespace sdog::studio {
 namespace {
 
 // RGB of the selection (not the handles' orange).
-constexpr double kRed = vis::kSelectionColor[0], kGreen = vis::kSelectionColor[1], kBlue = vis::kSelectionColor[2];
+constexpr double kRed = vis::kSelectionColour[0], kGreen = vis::kSelectionColour[1], kBlue = vis::kSelectionColour[2];
 
 }  // namespace
 

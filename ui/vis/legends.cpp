@@ -20,7 +20,7 @@ constexpr double kColumnWidth = 0.99 - kLegendColumnLeft;
 constexpr double kTop = 0.97;
 
 void style_text(vtkTextProperty* p, int font, bool bold = false) {
-  p->SetColor(kTextColor[0], kTextColor[1], kTextColor[2]);
+  p->SetColor(kTextColour[0], kTextColour[1], kTextColour[2]);
   p->SetFontSize(font);
   p->SetBold(bold);
   p->SetItalic(false);
@@ -61,7 +61,7 @@ Legend Legend::categories(const std::string& title, const std::vector<LegendEntr
     const vtkIdType first = 4 * static_cast<vtkIdType>(k);
     const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
     quads->InsertNextCell(4, ids);
-    const Rgb& c = entries[k].color;
+    const Rgb& c = entries[k].colour;
     rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
     auto label = vtkSmartPointer<vtkTextActor>::New();
     label->SetInput(entries[k].label.c_str());
@@ -156,15 +156,15 @@ double Legend::entry_width_pixels(int font) const {
 
 std::vector<LegendEntry> patch_legend_entries(int patch_count) {
   std::vector<LegendEntry> entries;
-  if (patch_count <= kPatchColors) {
-    for (int p = 0; p < patch_count; ++p) entries.push_back({"patch " + std::to_string(p), patch_color(p)});
+  if (patch_count <= kPatchColours) {
+    for (int p = 0; p < patch_count; ++p) entries.push_back({"patch " + std::to_string(p), patch_colour(p)});
     return entries;
   }
   constexpr int kNamed = 3;  // patch numbers named per colour before "..."
-  for (int c = 0; c < kPatchColors; ++c) {
+  for (int c = 0; c < kPatchColours; ++c) {
     std::string numbers;
     int named = 0;
-    for (int p = c; p < patch_count; p += kPatchColors) {
+    for (int p = c; p < patch_count; p += kPatchColours) {
       if (named == kNamed) {
         numbers += ", ...";
         break;
@@ -172,7 +172,7 @@ std::vector<LegendEntry> patch_legend_entries(int patch_count) {
       numbers += (named ? ", " : "") + std::to_string(p);
       ++named;
     }
-    entries.push_back({(named == 1 ? "patch " : "patches ") + numbers, patch_color(c)});
+    entries.push_back({(named == 1 ? "patch " : "patches ") + numbers, patch_colour(c)});
   }
   return entries;
 }

@@ -25,7 +25,7 @@ inline constexpr double kLabelScale = 0.85;
 
 struct LegendEntry {
   std::string label;
-  Rgb color;
+  Rgb colour;
 };
 
 class Legend {

@@ -25,7 +25,7 @@ namespace {
 
 void style_text(vtkTextProperty* p, int size, bool bold = false) {
   p->SetFontSize(size);
-  p->SetColor(kTextColor[0], kTextColor[1], kTextColor[2]);
+  p->SetColor(kTextColour[0], kTextColour[1], kTextColour[2]);
   p->SetBold(bold);
 }
 
@@ -157,7 +157,7 @@ void render_line_chart(const LineChart& chart, const ImageSize& size, const std:
             size.height);
   for (size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];
-    const Rgb c = s.color ? *s.color : series_color(static_cast<int>(k));
+    const Rgb c = s.colour ? *s.colour : series_colour(static_cast<int>(k));
     vtkSmartPointer<vtkTable> table = series_table(s, chart);
     // A run that failed in its first iteration has one point: a line needs two.
     vtkPlot* line = xy->AddPlot(table->GetNumberOfRows() < 2 ? vtkChart::POINTS : vtkChart::LINE);

@@ -13,7 +13,7 @@ namespace sdog::vis {
 struct ChartSeries {
   std::string name;  ///< legend entry
   std::vector<double> x, y;  ///< same length; non-finite points are left out
-  std::optional<Rgb> color;  ///< default: series_color(index of the series)
+  std::optional<Rgb> colour;  ///< default: series_color(index of the series)
 };
 
 struct LineChart {

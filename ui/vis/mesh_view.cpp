@@ -25,13 +25,13 @@ vtkSmartPointer<vtkCellArray> vertex_cells(vtkIdType n) {
 }
 
 // The colours of the vertex types (one colour for all without types), as 8-bit RGB.
-vtkSmartPointer<vtkUnsignedCharArray> vertex_type_colors(const DogMesh& mesh,
+vtkSmartPointer<vtkUnsignedCharArray> vertex_type_colours(const DogMesh& mesh,
                                                          const std::vector<VertexType>* types) {
   auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
   rgb->SetName("vertex_type_color");
   rgb->SetNumberOfComponents(3);
   for (int v = 0; v < mesh.vertex_count(); ++v) {
-    const Rgb c = types ? vertex_type_color((*types)[v]) : kUntypedVertexColor;
+    const Rgb c = types ? vertex_type_colour((*types)[v]) : kUntypedVertexColour;
     rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
   }
   return rgb;
@@ -56,13 +56,13 @@ vtkSmartPointer<vtkCellArray> quad_edge_lines(const DogMesh& mesh) {
 
 }  // namespace
 
-vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& color) {
+vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& colour) {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(data);
   mapper->SetColorModeToDirectScalars();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
   actor->GetProperty()->SetLighting(false);
   return actor;
 }
@@ -88,12 +88,12 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   surface_mapper_->InterpolateScalarsBeforeMappingOn();
   surface_ = vtkSmartPointer<vtkActor>::New();
   surface_->SetMapper(surface_mapper_);
-  surface_->GetProperty()->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
-  surface_->GetProperty()->SetEdgeColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
+  surface_->GetProperty()->SetColor(kSurfaceColour[0], kSurfaceColour[1], kSurfaceColour[2]);
+  surface_->GetProperty()->SetEdgeColor(kEdgeColour[0], kEdgeColour[1], kEdgeColour[2]);
   surface_->GetProperty()->SetAmbient(0.35);
   surface_->GetProperty()->SetDiffuse(0.65);
 
-  edge_color_ = kEdgeColor;
+  edge_colour_ = kEdgeColour;
   // The trimmed surface: its topology once, its positions and normals with every state.
   trimmed_surface_ = trimmed_surface(mesh, mesh.V);
   trimmed_poly_ = triangle_surface(trimmed_surface_, {});
@@ -105,7 +105,7 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   trimmed_mapper_->SetRelativeCoincidentTopologyPolygonOffsetParameters(1, 1);
   trimmed_actor_ = vtkSmartPointer<vtkActor>::New();
   trimmed_actor_->SetMapper(trimmed_mapper_);
-  trimmed_actor_->GetProperty()->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
+  trimmed_actor_->GetProperty()->SetColor(kSurfaceColour[0], kSurfaceColour[1], kSurfaceColour[2]);
   trimmed_actor_->GetProperty()->SetAmbient(0.35);
   trimmed_actor_->GetProperty()->SetDiffuse(0.65);
 
@@ -113,7 +113,7 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   vertices_poly_ = vtkSmartPointer<vtkPolyData>::New();
   vertices_poly_->SetPoints(points_);
   vertices_poly_->SetVerts(vertex_cells(mesh.vertex_count()));
-  vertices_poly_->GetPointData()->SetScalars(vertex_type_colors(mesh, types));
+  vertices_poly_->GetPointData()->SetScalars(vertex_type_colours(mesh, types));
   vertex_actor_ = flat_actor(vertices_poly_, {0.4, 0.4, 0.4});
   vertex_actor_->GetProperty()->RenderPointsAsSpheresOn();
 
@@ -121,7 +121,7 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   quad_edges_ = vtkSmartPointer<vtkPolyData>::New();
   quad_edges_->SetPoints(points_);
   quad_edges_->SetLines(quad_edge_lines(mesh));
-  quad_edge_actor_ = flat_actor(quad_edges_, kEdgeColor);
+  quad_edge_actor_ = flat_actor(quad_edges_, kEdgeColour);
 
   // Crease lines and crease points share the crease points' coordinates.
   crease_point_coords_ = vtkSmartPointer<vtkPoints>::New();
@@ -136,14 +136,14 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   crease_lines_ = vtkSmartPointer<vtkPolyData>::New();
   crease_lines_->SetPoints(crease_point_coords_);
   crease_lines_->SetLines(lines);
-  crease_line_actor_ = flat_actor(crease_lines_, fold_color(Fold::kUnassigned));
+  crease_line_actor_ = flat_actor(crease_lines_, fold_colour(Fold::kUnassigned));
   std::vector<Fold> folds;
   for (const auto& c : mesh.stitching.curves) folds.push_back(c.fold);
   set_crease_folds(folds);
   crease_points_poly_ = vtkSmartPointer<vtkPolyData>::New();
   crease_points_poly_->SetPoints(crease_point_coords_);
   crease_points_poly_->SetVerts(vertex_cells(crease_point_coords_->GetNumberOfPoints()));
-  crease_point_actor_ = flat_actor(crease_points_poly_, kCreasePointColor);
+  crease_point_actor_ = flat_actor(crease_points_poly_, kCreasePointColour);
   crease_point_actor_->GetProperty()->RenderPointsAsSpheresOn();
 
   for (vtkActor* a : actors()) renderer_->AddActor(a);
@@ -195,7 +195,7 @@ void MeshView::set_cell_array(const char* name, const std::vector<double>& value
 
 void MeshView::set_paper(bool paper) {
   vtkProperty* front = trimmed_actor_->GetProperty();
-  const Rgb colour = paper ? kPaperColor : kSurfaceColor;
+  const Rgb colour = paper ? kPaperColour : kSurfaceColour;
   front->SetColor(colour[0], colour[1], colour[2]);
   front->SetAmbient(paper ? 0.15 : 0.35);
   front->SetDiffuse(paper ? 0.8 : 0.65);
@@ -204,7 +204,7 @@ void MeshView::set_paper(bool paper) {
   if (paper) {
     auto back = vtkSmartPointer<vtkProperty>::New();
     back->DeepCopy(front);
-    back->SetColor(kPaperBackColor[0], kPaperBackColor[1], kPaperBackColor[2]);
+    back->SetColor(kPaperBackColour[0], kPaperBackColour[1], kPaperBackColour[2]);
     trimmed_actor_->SetBackfaceProperty(back);
   } else {
     trimmed_actor_->SetBackfaceProperty(nullptr);
@@ -220,9 +220,9 @@ void MeshView::set_trimmed(bool trimmed) {
   apply_visibility();
 }
 
-void MeshView::set_filled(bool filled, const std::array<double, 3>& edge_color) {
+void MeshView::set_filled(bool filled, const std::array<double, 3>& edge_colour) {
   filled_ = filled;
-  edge_color_ = edge_color;
+  edge_colour_ = edge_colour;
   apply_visibility();
 }
 
@@ -231,7 +231,7 @@ void MeshView::set_visible(bool visible) {
   apply_visibility();
 }
 
-void MeshView::color_by(const char* array, bool cell_array, vtkScalarsToColors* lut) {
+void MeshView::colour_by(const char* array, bool cell_array, vtkScalarsToColors* lut) {
   colour_array_ = array;
   colour_cells_ = cell_array;
   colour_lut_ = lut;
@@ -275,7 +275,7 @@ void MeshView::set_crease_folds(const std::vector<Fold>& folds) {
   for (size_t k = 0; k < mesh_.stitching.curves.size(); ++k) {
     const Fold fold = k < folds.size() ? folds[k] : Fold::kUnassigned;
     code->InsertNextValue(static_cast<int>(fold));
-    const Rgb c = fold_color(fold);
+    const Rgb c = fold_colour(fold);
     rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
   }
   crease_lines_->GetCellData()->AddArray(code);
@@ -308,14 +308,14 @@ void MeshView::apply_visibility() {
   } else if (filled_) {
     surface_->SetVisibility(visible_);
     p->SetRepresentationToSurface();
-    p->SetColor(kSurfaceColor[0], kSurfaceColor[1], kSurfaceColor[2]);
-    p->SetEdgeColor(edge_color_[0], edge_color_[1], edge_color_[2]);
+    p->SetColor(kSurfaceColour[0], kSurfaceColour[1], kSurfaceColour[2]);
+    p->SetEdgeColor(edge_colour_[0], edge_colour_[1], edge_colour_[2]);
     p->SetLighting(true);
     p->SetEdgeVisibility(edges_);
   } else {
     surface_->SetVisibility(visible_);
     p->SetRepresentationToWireframe();
-    p->SetColor(edge_color_[0], edge_color_[1], edge_color_[2]);
+    p->SetColor(edge_colour_[0], edge_colour_[1], edge_colour_[2]);
     p->SetLineWidth(2);
     p->SetLighting(false);
     p->SetEdgeVisibility(false);

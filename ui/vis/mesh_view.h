@@ -29,7 +29,7 @@
 namespace sdog::vis {
 
 /// An unlit actor drawing the poly data in `color`, or in its own RGB point or cell scalars.
-vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const std::array<double, 3>& color);
+vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const std::array<double, 3>& colour);
 
 /// Position of each crease point: the mean of its copies p = t x_v1 + (1 - t) x_v2 in X.
 std::vector<Eigen::Vector3d> crease_point_positions(const DogMesh& mesh, const Eigen::MatrixX3d& X);
@@ -56,11 +56,11 @@ class MeshView {
   void set_offset(double dx);
   double offset() const { return offset_; }
   /// Filled surface, or only its edges in `edge_color` (a coarse mesh over the fine one).
-  void set_filled(bool filled, const std::array<double, 3>& edge_color);
+  void set_filled(bool filled, const std::array<double, 3>& edge_colour);
   void set_visible(bool visible);
 
   /// Colours the surface by a point or cell array of the grid through `lut`; nullptr: plain.
-  void color_by(const char* array, bool cell_array, vtkScalarsToColors* lut);
+  void colour_by(const char* array, bool cell_array, vtkScalarsToColors* lut);
   void set_vertices_visible(bool visible);
   void set_crease_lines_visible(bool visible);
   /// Colours each crease line by its assignment (fold_color; cell arrays `assignment`, 0 to 3 as
@@ -97,7 +97,7 @@ class MeshView {
   TrimmedSurface trimmed_surface_;
   vtkSmartPointer<vtkPolyData> trimmed_poly_;
   vtkSmartPointer<vtkPolyDataMapper> trimmed_mapper_;
-  std::array<double, 3> edge_color_{};
+  std::array<double, 3> edge_colour_{};
   const char* colour_array_ = nullptr;  ///< what color_by chose (nullptr: plain)
   bool colour_cells_ = false;
   vtkScalarsToColors* colour_lut_ = nullptr;

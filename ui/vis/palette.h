@@ -9,7 +9,7 @@ namespace sdog::vis {
 
 using Rgb = std::array<double, 3>;
 
-inline Rgb vertex_type_color(VertexType t) {
+inline Rgb vertex_type_colour(VertexType t) {
   switch (t) {
     case VertexType::kLink:
       return {0.17, 0.63, 0.17};  // green
@@ -23,11 +23,11 @@ inline Rgb vertex_type_color(VertexType t) {
   return {0, 0, 0};
 }
 /// Vertices of a mesh without a fine/coarse map (no types).
-inline constexpr Rgb kUntypedVertexColor{0.4, 0.4, 0.4};
-inline constexpr Rgb kCreasePointColor{1.0, 0.45, 0.75};  // pink
+inline constexpr Rgb kUntypedVertexColour{0.4, 0.4, 0.4};
+inline constexpr Rgb kCreasePointColour{1.0, 0.45, 0.75};  // pink
 /// Crease lines by assignment (crease_pattern.h): mountain red, valley blue, unassigned grey,
 /// flat light grey (a crease that stays flat hardly matters to the shape).
-inline Rgb fold_color(Fold fold) {
+inline Rgb fold_colour(Fold fold) {
   switch (fold) {
     case Fold::kMountain:
       return {0.85, 0.10, 0.10};
@@ -40,38 +40,38 @@ inline Rgb fold_color(Fold fold) {
   }
   return {0.40, 0.40, 0.40};
 }
-inline constexpr Rgb kSurfaceColor{0.94, 0.94, 0.94};
-inline constexpr Rgb kPaperColor{0.97, 0.96, 0.92};      // the paper style's front side
-inline constexpr Rgb kPaperBackColor{0.78, 0.82, 0.88};  // and its back side
-inline constexpr Rgb kEdgeColor{0.62, 0.62, 0.62};
-inline constexpr Rgb kTextColor{0.1, 0.1, 0.1};
-inline constexpr Rgb kLinkLineColor{0.15, 0.15, 0.15};
-inline constexpr Rgb kHandleColor{0.95, 0.55, 0.05};       // orange
-inline constexpr Rgb kSelectionColor{0.05, 0.05, 0.05};    // the studio's selected vertices: black
-inline constexpr Rgb kTargetColor{0.10, 0.20, 0.60};       // dark blue
-inline constexpr Rgb kResidualLineColor{0.85, 0.10, 0.10}; // red
-inline constexpr Rgb kAngleSiteColor{0.00, 0.75, 0.80};    // cyan
-inline constexpr Rgb kCoarseEdgeColor{0.20, 0.30, 0.75};   // the coarse mesh over the fine one
+inline constexpr Rgb kSurfaceColour{0.94, 0.94, 0.94};
+inline constexpr Rgb kPaperColour{0.97, 0.96, 0.92};      // the paper style's front side
+inline constexpr Rgb kPaperBackColour{0.78, 0.82, 0.88};  // and its back side
+inline constexpr Rgb kEdgeColour{0.62, 0.62, 0.62};
+inline constexpr Rgb kTextColour{0.1, 0.1, 0.1};
+inline constexpr Rgb kLinkLineColour{0.15, 0.15, 0.15};
+inline constexpr Rgb kHandleColour{0.95, 0.55, 0.05};       // orange
+inline constexpr Rgb kSelectionColour{0.05, 0.05, 0.05};    // the studio's selected vertices: black
+inline constexpr Rgb kTargetColour{0.10, 0.20, 0.60};       // dark blue
+inline constexpr Rgb kResidualLineColour{0.85, 0.10, 0.10}; // red
+inline constexpr Rgb kAngleSiteColour{0.00, 0.75, 0.80};    // cyan
+inline constexpr Rgb kCoarseEdgeColour{0.20, 0.30, 0.75};   // the coarse mesh over the fine one
 
 /// The number of patch colours: light, distinct colours (the vertex and handle colours stay
 /// readable on them); patches beyond it take them again from the start.
-inline constexpr int kPatchColors = 12;
-inline Rgb patch_color(int index) {
-  static constexpr Rgb colors[kPatchColors] = {
+inline constexpr int kPatchColours = 12;
+inline Rgb patch_colour(int index) {
+  static constexpr Rgb colours[kPatchColours] = {
       {0.99, 0.80, 0.60}, {0.70, 0.85, 0.95}, {0.78, 0.92, 0.70}, {0.95, 0.75, 0.85},
       {0.85, 0.80, 0.95}, {0.98, 0.93, 0.62}, {0.72, 0.90, 0.88}, {0.90, 0.82, 0.72},
       {0.96, 0.66, 0.62}, {0.86, 0.95, 0.56}, {0.66, 0.74, 0.92}, {0.88, 0.68, 0.92}};
-  return colors[((index % kPatchColors) + kPatchColors) % kPatchColors];
+  return colours[((index % kPatchColours) + kPatchColours) % kPatchColours];
 }
 
 /// Colours of the lines of a chart, told apart also by colour-blind readers (the Okabe-Ito
 /// palette without its yellow, which is too faint on white): blue, vermillion, bluish green,
 /// reddish purple, orange, sky blue, black; then again from the start.
-inline Rgb series_color(int index) {
-  static constexpr Rgb colors[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65},
+inline Rgb series_colour(int index) {
+  static constexpr Rgb colours[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65},
                                    {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91}, {0.00, 0.00, 0.00}};
-  constexpr int n = sizeof colors / sizeof colors[0];
-  return colors[((index % n) + n) % n];
+  constexpr int n = sizeof colours / sizeof colours[0];
+  return colours[((index % n) + n) % n];
 }
 
 }  // namespace sdog::vis

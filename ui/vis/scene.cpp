@@ -20,7 +20,7 @@
 #include <stdexcept>
 
 #include "base/errors.h"
-#include "ui/vis/color_maps.h"
+#include "ui/vis/colour_maps.h"
 #include "ui/vis/legends.h"
 #include "ui/vis/mesh_view.h"
 #include "ui/vis/palette.h"
@@ -42,7 +42,7 @@ vtkSmartPointer<vtkPolyData> poly_data() {
 
 vtkSmartPointer<vtkTextActor> text_actor(int justification) {
   auto t = vtkSmartPointer<vtkTextActor>::New();
-  t->GetTextProperty()->SetColor(kTextColor[0], kTextColor[1], kTextColor[2]);
+  t->GetTextProperty()->SetColor(kTextColour[0], kTextColour[1], kTextColour[2]);
   t->GetTextProperty()->SetJustification(justification);
   t->GetTextProperty()->SetVerticalJustificationToBottom();
   return t;
@@ -73,7 +73,7 @@ void check_size(size_t got, int expected, const char* what) {
 // The actors of the layers that are not part of a mesh view.
 struct Scene::Overlays {
   vtkSmartPointer<vtkPolyData> links = poly_data();
-  vtkSmartPointer<vtkActor> links_actor = flat_actor(links, kLinkLineColor);
+  vtkSmartPointer<vtkActor> links_actor = flat_actor(links, kLinkLineColour);
 
   vtkSmartPointer<vtkPolyData> gaps = poly_data();
   vtkSmartPointer<vtkLookupTable> gap_lut = heat_lut(0, 1);
@@ -85,10 +85,10 @@ struct Scene::Overlays {
   vtkSmartPointer<vtkPolyData> handle_points = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> target_points = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> angle_sites = poly_data();
-  vtkSmartPointer<vtkActor> residual_actor = flat_actor(handle_lines, kResidualLineColor);
-  vtkSmartPointer<vtkActor> handle_actor = flat_actor(handle_points, kHandleColor);
-  vtkSmartPointer<vtkActor> target_actor = flat_actor(target_points, kTargetColor);
-  vtkSmartPointer<vtkActor> angle_actor = flat_actor(angle_sites, kAngleSiteColor);
+  vtkSmartPointer<vtkActor> residual_actor = flat_actor(handle_lines, kResidualLineColour);
+  vtkSmartPointer<vtkActor> handle_actor = flat_actor(handle_points, kHandleColour);
+  vtkSmartPointer<vtkActor> target_actor = flat_actor(target_points, kTargetColour);
+  vtkSmartPointer<vtkActor> angle_actor = flat_actor(angle_sites, kAngleSiteColour);
 
   vtkSmartPointer<vtkLookupTable> residual_lut = dog_residual_lut();
   vtkSmartPointer<vtkLookupTable> bending_lut = sequential_lut(0, 1);
@@ -174,18 +174,18 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   o.patch_lut = categorical_lut(model.fine.patch_count());
   std::vector<LegendEntry> types;
   if (model.has_coarse)
-    types = {{"link", vertex_type_color(VertexType::kLink)},
-             {"I: on a coarse edge", vertex_type_color(VertexType::kI)},
-             {"X: in a coarse quad", vertex_type_color(VertexType::kX)},
-             {"coarse-only", vertex_type_color(VertexType::kCoarseOnly)}};
+    types = {{"link", vertex_type_colour(VertexType::kLink)},
+             {"I: on a coarse edge", vertex_type_colour(VertexType::kI)},
+             {"X: in a coarse quad", vertex_type_colour(VertexType::kX)},
+             {"coarse-only", vertex_type_colour(VertexType::kCoarseOnly)}};
   else
-    types = {{"vertex (no coarse mesh)", kUntypedVertexColor}};
-  types.push_back({"crease point", kCreasePointColor});
+    types = {{"vertex (no coarse mesh)", kUntypedVertexColour}};
+  types.push_back({"crease point", kCreasePointColour});
   const std::vector<LegendEntry> patches = patch_legend_entries(model.fine.patch_count());
   o.legends.emplace(Layer::kVertexTypes, Legend::categories("vertex type", types));
-  o.legends.emplace(Layer::kLinks, Legend::categories("links", {{"link to coarse twin", kLinkLineColor}}));
+  o.legends.emplace(Layer::kLinks, Legend::categories("links", {{"link to coarse twin", kLinkLineColour}}));
   o.legends.emplace(Layer::kPatches,
-                    Legend::categories(model.fine.patch_count() > kPatchColors
+                    Legend::categories(model.fine.patch_count() > kPatchColours
                                            ? std::to_string(model.fine.patch_count()) + " patches"
                                            : std::string("patches"),
                                        patches));
@@ -193,16 +193,16 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   o.legends.emplace(Layer::kEdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
   o.legends.emplace(Layer::kStitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
   o.legends.emplace(Layer::kBending, Legend::scalar_bar("bending", o.bending_lut));
-  o.legends.emplace(Layer::kHandles, Legend::categories("constraints", {{"handle", kHandleColor},
-                                                                        {"target", kTargetColor},
-                                                                        {"handle to target", kResidualLineColor},
-                                                                        {"angle constraint", kAngleSiteColor}}));
+  o.legends.emplace(Layer::kHandles, Legend::categories("constraints", {{"handle", kHandleColour},
+                                                                        {"target", kTargetColour},
+                                                                        {"handle to target", kResidualLineColour},
+                                                                        {"angle constraint", kAngleSiteColour}}));
   o.legends.emplace(Layer::kCreaseCurves,
-                    Legend::categories("creases", {{"mountain", fold_color(Fold::kMountain)},
-                                                   {"valley", fold_color(Fold::kValley)},
-                                                   {"flat", fold_color(Fold::kFlat)},
-                                                   {"unassigned", fold_color(Fold::kUnassigned)},
-                                                   {"crease point", kCreasePointColor}}));
+                    Legend::categories("creases", {{"mountain", fold_colour(Fold::kMountain)},
+                                                   {"valley", fold_colour(Fold::kValley)},
+                                                   {"flat", fold_colour(Fold::kFlat)},
+                                                   {"unassigned", fold_colour(Fold::kUnassigned)},
+                                                   {"crease point", kCreasePointColour}}));
   for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
 
   // Patches do not change: their cell arrays are set once.
@@ -380,7 +380,7 @@ void Scene::apply_view() {
   const bool side = options_.view == View::kSideBySide;
   if (coarse_) {
     coarse_->set_visible(side || options_.coarse);
-    coarse_->set_filled(side, side ? kEdgeColor : kCoarseEdgeColor);
+    coarse_->set_filled(side, side ? kEdgeColour : kCoarseEdgeColour);
     coarse_->set_offset(coarse_offset());
   }
   refresh();  // positions depend on the view (flat: rest positions; links: the offset)
@@ -402,22 +402,22 @@ void Scene::apply_layers() {
   }
   switch (colour.value_or(Layer::kWireframe)) {  // wireframe: not a colour layer
     case Layer::kPatches:
-      fine_->color_by("patch", true, o.patch_lut);
-      if (coarse_) coarse_->color_by("patch", true, o.patch_lut);
+      fine_->colour_by("patch", true, o.patch_lut);
+      if (coarse_) coarse_->colour_by("patch", true, o.patch_lut);
       break;
     case Layer::kDogResidual:
-      fine_->color_by("log10_dog_residual", false, o.residual_lut);
+      fine_->colour_by("log10_dog_residual", false, o.residual_lut);
       break;
     case Layer::kEdgeStrain:
-      fine_->color_by("edge_strain", true, o.strain_lut);
+      fine_->colour_by("edge_strain", true, o.strain_lut);
       break;
     case Layer::kBending:
-      fine_->color_by("bending", false, o.bending_lut);
+      fine_->colour_by("bending", false, o.bending_lut);
       break;
     default:
-      fine_->color_by(nullptr, false, nullptr);
+      fine_->colour_by(nullptr, false, nullptr);
   }
-  if (coarse_ && !(colour && *colour == Layer::kPatches)) coarse_->color_by(nullptr, false, nullptr);
+  if (coarse_ && !(colour && *colour == Layer::kPatches)) coarse_->colour_by(nullptr, false, nullptr);
 
   const bool coarse_shown = coarse_ && (options_.view == View::kSideBySide || options_.coarse);
   o.links_actor->SetVisibility(on_[Layer::kLinks] && coarse_shown);

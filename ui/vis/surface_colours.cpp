@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "geometry/mesh/fine_coarse_map.h"
-#include "ui/vis/color_maps.h"
+#include "ui/vis/colour_maps.h"
 #include "ui/vis/palette.h"
 #include "ui/vis/scene_state.h"
 
@@ -71,13 +71,13 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
   switch (layer) {
     case Layer::kVertexTypes: {
       const NamedArray* types = find(mesh_arrays.point, "vertex_type");
-      if (!types) return std::vector<Rgb8>(n, bytes(kUntypedVertexColor));
+      if (!types) return std::vector<Rgb8>(n, bytes(kUntypedVertexColour));
       for (double type : trimmed_point_values(surface, types->values, types->integral))
-        out.push_back(bytes(vertex_type_color(static_cast<VertexType>(std::lround(type)))));
+        out.push_back(bytes(vertex_type_colour(static_cast<VertexType>(std::lround(type)))));
       return out;
     }
     case Layer::kPatches:
-      for (int patch : surface.vertex_patch) out.push_back(bytes(patch_color(patch)));
+      for (int patch : surface.vertex_patch) out.push_back(bytes(patch_colour(patch)));
       return out;
     case Layer::kDogResidual: {
       const NamedArray& residual = require(mesh_arrays.point, "dog_residual");

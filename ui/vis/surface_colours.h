@@ -1,7 +1,7 @@
 #pragma once
 // The colours of a colour layer (layers.h) at the vertices of the trimmed surface, for files that
 // carry colours (PLY): the colours the renderer gives the same layer on the fine mesh (palette.h,
-// color_maps.h), taken at each surface vertex.
+// colour_maps.h), taken at each surface vertex.
 #include <array>
 #include <vector>
 

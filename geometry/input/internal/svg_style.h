@@ -41,11 +41,11 @@ Affine operator*(const Affine& l, const Affine& r);
 Affine parse_transform(std::string_view text);
 
 /// "#rrggbb" in lower case. Throws ElementError for anything that is not a colour.
-std::string parse_color(std::string_view text);
+std::string parse_colour(std::string_view text);
 
 struct Paint {
-  enum class Kind { kNone, kColor, kCurrentColor } kind = Kind::kNone;
-  std::string color;  ///< "#rrggbb" when kind == color
+  enum class Kind { kNone, kColour, kCurrentColour } kind = Kind::kNone;
+  std::string colour;  ///< "#rrggbb" when kind == color
 };
 Paint parse_paint(std::string_view text);
 

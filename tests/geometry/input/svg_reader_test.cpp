@@ -387,7 +387,7 @@ TEST(SvgExactness, ReadsAnIllustratorSampleExactly) {
   EXPECT_EQ(drawing.viewbox.ymax, 0);
   ASSERT_EQ(drawing.curves.size(), 1u);
   const SvgCurve& curve = drawing.curves[0];
-  EXPECT_EQ(curve.color, "#ef4545");
+  EXPECT_EQ(curve.colour, "#ef4545");
   EXPECT_FALSE(curve.is_boundary);
   EXPECT_FALSE(curve.dashed);
   EXPECT_FALSE(curve.closed);
@@ -609,23 +609,23 @@ TEST(SvgTransforms, TheParserAndAffineMapsGiveHandComputedValues) {
 // Colours and styles
 
 TEST(SvgStyle, ReadsEveryColourFormat) {
-  using sdog::svg::parse_color;
-  EXPECT_EQ(parse_color("#ABC"), "#aabbcc");
-  EXPECT_EQ(parse_color(" #EF4545 "), "#ef4545");
-  EXPECT_EQ(parse_color("rgb(255, 0, 16)"), "#ff0010");
-  EXPECT_EQ(parse_color("rgb(100%,0%,50%)"), "#ff0080");
-  EXPECT_EQ(parse_color("RGB(300 -4 0)"), "#ff0000");
-  EXPECT_EQ(parse_color("DarkRed"), "#8b0000");
-  EXPECT_EQ(parse_color("black"), "#000000");
-  EXPECT_EQ(parse_color("white"), "#ffffff");
-  EXPECT_EQ(parse_color("green"), "#008000");
+  using sdog::svg::parse_colour;
+  EXPECT_EQ(parse_colour("#ABC"), "#aabbcc");
+  EXPECT_EQ(parse_colour(" #EF4545 "), "#ef4545");
+  EXPECT_EQ(parse_colour("rgb(255, 0, 16)"), "#ff0010");
+  EXPECT_EQ(parse_colour("rgb(100%,0%,50%)"), "#ff0080");
+  EXPECT_EQ(parse_colour("RGB(300 -4 0)"), "#ff0000");
+  EXPECT_EQ(parse_colour("DarkRed"), "#8b0000");
+  EXPECT_EQ(parse_colour("black"), "#000000");
+  EXPECT_EQ(parse_colour("white"), "#ffffff");
+  EXPECT_EQ(parse_colour("green"), "#008000");
   for (const char* bad : {"#12", "#ggg", "rgb(1,2)", "rgb(1,2,3", "bluish", ""})
-    EXPECT_THROW(parse_color(bad), sdog::svg::ElementError) << bad;
+    EXPECT_THROW(parse_colour(bad), sdog::svg::ElementError) << bad;
 }
 
 TEST(SvgStyle, TheStrokeAttributeSetsTheColour) {
   const SvgCurve curve = only_curve("<path stroke=\"red\" d=\"M0 0 L1 1\"/>");
-  EXPECT_EQ(curve.color, "#ff0000");
+  EXPECT_EQ(curve.colour, "#ff0000");
   EXPECT_FALSE(curve.is_boundary);
 }
 
@@ -633,17 +633,17 @@ TEST(SvgStyle, InlineStyleOverClassOverAttribute) {
   const std::string sheet = "<style>.a{stroke:#0000ff}</style>";
   EXPECT_EQ(only_curve(sheet + "<path class=\"a\" stroke=\"red\" style=\"fill:none; stroke: "
                                "#00FF00 !important\" d=\"M0 0 L1 1\"/>")
-                .color,
+                .colour,
             "#00ff00");
-  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" stroke=\"red\" d=\"M0 0 L1 1\"/>").color,
+  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" stroke=\"red\" d=\"M0 0 L1 1\"/>").colour,
             "#0000ff");
-  EXPECT_EQ(only_curve(sheet + "<path stroke=\"red\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
+  EXPECT_EQ(only_curve(sheet + "<path stroke=\"red\" d=\"M0 0 L1 1\"/>").colour, "#ff0000");
 }
 
 TEST(SvgStyle, LaterRulesWinAmongClasses) {
   const std::string sheet = "<style>.a{stroke:red} .b{stroke:blue}</style>";
-  EXPECT_EQ(only_curve(sheet + "<path class=\"b a\" d=\"M0 0 L1 1\"/>").color, "#0000ff");
-  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
+  EXPECT_EQ(only_curve(sheet + "<path class=\"b a\" d=\"M0 0 L1 1\"/>").colour, "#0000ff");
+  EXPECT_EQ(only_curve(sheet + "<path class=\"a\" d=\"M0 0 L1 1\"/>").colour, "#ff0000");
 }
 
 TEST(SvgStyle, ReadsStylesheetRules) {
@@ -660,41 +660,41 @@ TEST(SvgStyle, ReadsStylesheetRules) {
             "<path class=\"st1\" d=\"M0 0 L1 1\"/><path class=\"st2\" d=\"M0 0 L1 1\"/>"
             "<path class=\"st3\" d=\"M0 0 L1 1\"/>");
   ASSERT_EQ(drawing.curves.size(), 3u);
-  EXPECT_EQ(drawing.curves[0].color, "#ef4545");
-  EXPECT_EQ(drawing.curves[1].color, "#3f48cc");
+  EXPECT_EQ(drawing.curves[0].colour, "#ef4545");
+  EXPECT_EQ(drawing.curves[1].colour, "#3f48cc");
   EXPECT_TRUE(drawing.curves[1].dashed);
-  EXPECT_EQ(drawing.curves[2].color, "#000000");
+  EXPECT_EQ(drawing.curves[2].colour, "#000000");
   EXPECT_TRUE(drawing.curves[2].is_boundary);
 }
 
 TEST(SvgStyle, GroupsPassTheirStyleToChildren) {
-  EXPECT_EQ(only_curve("<g stroke=\"#123456\"><g><path d=\"M0 0 L1 1\"/></g></g>").color,
+  EXPECT_EQ(only_curve("<g stroke=\"#123456\"><g><path d=\"M0 0 L1 1\"/></g></g>").colour,
             "#123456");
   EXPECT_EQ(only_curve("<g stroke=\"red\"><g style=\"stroke:blue\"><path d=\"M0 0 L1 1\"/></g></g>")
-                .color,
+                .colour,
             "#0000ff");
   // The element's own attribute beats a style inherited from its parent.
-  EXPECT_EQ(only_curve("<g style=\"stroke:blue\"><path stroke=\"red\" d=\"M0 0 L1 1\"/></g>").color,
+  EXPECT_EQ(only_curve("<g style=\"stroke:blue\"><path stroke=\"red\" d=\"M0 0 L1 1\"/></g>").colour,
             "#ff0000");
-  EXPECT_EQ(only_curve("<g stroke=\"blue\"><path stroke=\"inherit\" d=\"M0 0 L1 1\"/></g>").color,
+  EXPECT_EQ(only_curve("<g stroke=\"blue\"><path stroke=\"inherit\" d=\"M0 0 L1 1\"/></g>").colour,
             "#0000ff");
   EXPECT_EQ(
-      only_curve("<style>.k{stroke:lime}</style><g class=\"k\"><path d=\"M0 0 L1 1\"/></g>").color,
+      only_curve("<style>.k{stroke:lime}</style><g class=\"k\"><path d=\"M0 0 L1 1\"/></g>").colour,
       "#00ff00");
 }
 
 TEST(SvgStyle, FillGivesTheColourWithoutAStroke) {
-  EXPECT_EQ(only_curve("<path fill=\"#00ff00\" d=\"M0 0 L1 1\"/>").color, "#00ff00");
-  EXPECT_EQ(only_curve("<path stroke=\"none\" fill=\"blue\" d=\"M0 0 L1 1\"/>").color, "#0000ff");
-  EXPECT_EQ(only_curve("<g fill=\"blue\"><path stroke=\"none\" d=\"M0 0 L1 1\"/></g>").color,
+  EXPECT_EQ(only_curve("<path fill=\"#00ff00\" d=\"M0 0 L1 1\"/>").colour, "#00ff00");
+  EXPECT_EQ(only_curve("<path stroke=\"none\" fill=\"blue\" d=\"M0 0 L1 1\"/>").colour, "#0000ff");
+  EXPECT_EQ(only_curve("<g fill=\"blue\"><path stroke=\"none\" d=\"M0 0 L1 1\"/></g>").colour,
             "#0000ff");
   const SvgCurve unpainted = only_curve("<path d=\"M0 0 L1 1\"/>");
-  EXPECT_EQ(unpainted.color, "#000000");
+  EXPECT_EQ(unpainted.colour, "#000000");
   EXPECT_TRUE(unpainted.is_boundary);
-  EXPECT_EQ(only_curve("<path fill=\"none\" stroke=\"none\" d=\"M0 0 L1 1\"/>").color, "#000000");
-  EXPECT_EQ(only_curve("<path stroke=\"url(#g) red\" d=\"M0 0 L1 1\"/>").color, "#ff0000");
+  EXPECT_EQ(only_curve("<path fill=\"none\" stroke=\"none\" d=\"M0 0 L1 1\"/>").colour, "#000000");
+  EXPECT_EQ(only_curve("<path stroke=\"url(#g) red\" d=\"M0 0 L1 1\"/>").colour, "#ff0000");
   EXPECT_EQ(
-      only_curve("<g color=\"teal\"><path stroke=\"currentColor\" d=\"M0 0 L1 1\"/></g>").color,
+      only_curve("<g color=\"teal\"><path stroke=\"currentColor\" d=\"M0 0 L1 1\"/></g>").colour,
       "#008080");
   const SvgCurve near_black = only_curve("<path stroke=\"#000001\" d=\"M0 0 L1 1\"/>");
   EXPECT_FALSE(near_black.is_boundary);

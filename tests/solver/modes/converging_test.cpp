@@ -91,7 +91,7 @@ TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
 // the iteration's state is restored to the constraint tolerance once, at its end. The same far
 // target costs fewer factorisations than with every sub-step restored to the constraint
 // tolerance, and every iteration still ends within it.
-TEST(Continuation, LooseSubstepsSaveFactorisationsAndEveryIterationEndsFeasible) {
+TEST(Continuation, LooseSubstepsSaveFactorizationsAndEveryIterationEndsFeasible) {
   const Eigen::MatrixX3d& rest = model().fine.V;
   const Eigen::Vector3d move = 0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
   const double tolerance = RunConfig{}.standard.sqp.constraint_tolerance;

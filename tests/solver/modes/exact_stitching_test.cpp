@@ -88,7 +88,7 @@ TEST(ExactStitching, TheThesisPresetStitchesSoftly) {
 
 // The last iteration's polish stops at its factorisation budget: each factorisation more in the
 // budget is one more in the last iteration, until the polish needs no more.
-TEST(PolishBudget, BoundsTheLastIterationsFactorisations) {
+TEST(PolishBudget, BoundsTheLastIterationsFactorizations) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   auto last_factorizations = [&](int budget) {
     RunConfig config = test::short_run(20, 0);

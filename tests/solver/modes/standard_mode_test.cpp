@@ -148,7 +148,7 @@ TEST(StandardMode, NonFiniteTargetsFailAndRollBack) {
 // A factorisation that fails in a held iteration (here forced: three whole refactorisations, every
 // rho and shift, fail in a row) is taken back and retried with a shorter step: the run goes on,
 // ends converged and folded the drawn way, and counts the recovered passes.
-TEST(StandardMode, AFailedFactorisationIsRecovered) {
+TEST(StandardMode, AFailedFactorizationIsRecovered) {
   const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;

@@ -81,18 +81,18 @@ TEST(PatchLegend, OneEntryPerPatchUpToTheColoursThenOnePerColour) {
   ASSERT_EQ(few.size(), 5u);
   EXPECT_EQ(few[4].label, "patch 4");
   const auto many = patch_legend_entries(41);
-  ASSERT_EQ(many.size(), size_t(kPatchColors));
-  EXPECT_EQ(kPatchColors, 12);
+  ASSERT_EQ(many.size(), size_t(kPatchColours));
+  EXPECT_EQ(kPatchColours, 12);
   EXPECT_EQ(many[0].label, "patches 0, 12, 24, ...");  // 36 shares it too
   EXPECT_EQ(many[5].label, "patches 5, 17, 29");
   EXPECT_EQ(patch_legend_entries(21)[9].label, "patch 9");  // the only one of its colour
   std::set<Rgb> colours;
-  for (int k = 0; k < kPatchColors; ++k) {
-    EXPECT_EQ(many[k].color, patch_color(k));
-    colours.insert(patch_color(k));
+  for (int k = 0; k < kPatchColours; ++k) {
+    EXPECT_EQ(many[k].colour, patch_colour(k));
+    colours.insert(patch_colour(k));
   }
-  EXPECT_EQ(colours.size(), size_t(kPatchColors));  // all distinct
-  EXPECT_EQ(patch_color(kPatchColors), patch_color(0));
+  EXPECT_EQ(colours.size(), size_t(kPatchColours));  // all distinct
+  EXPECT_EQ(patch_colour(kPatchColours), patch_colour(0));
 }
 
 TEST(PanelTitles, DoNotOverlapInANarrowSideBySideView) {

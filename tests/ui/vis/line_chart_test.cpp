@@ -17,24 +17,24 @@ namespace {
 
 using test::pixels_near;
 
-int distinct_colors(vtkImageData* img) {
+int distinct_colours(vtkImageData* img) {
   int dims[3];
   img->GetDimensions(dims);
-  std::set<long> colors;
+  std::set<long> colours;
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       long key = 0;
       for (int k = 0; k < 3; ++k) key = 256 * key + static_cast<long>(img->GetScalarComponentAsDouble(x, y, 0, k));
-      colors.insert(key);
+      colours.insert(key);
     }
-  return static_cast<int>(colors.size());
+  return static_cast<int>(colours.size());
 }
 
 vis::LineChart three_lines() {
   vis::LineChart chart = vis::titled_chart("three lines", "iteration", "objective (weighted)");
-  const vis::Rgb colors[] = {{0.9, 0.1, 0.1}, {0.1, 0.6, 0.1}, {0.1, 0.1, 0.9}};
+  const vis::Rgb colours[] = {{0.9, 0.1, 0.1}, {0.1, 0.6, 0.1}, {0.1, 0.1, 0.9}};
   for (int s = 0; s < 3; ++s) {
-    vis::ChartSeries series{"series " + std::to_string(s), {}, {}, colors[s]};
+    vis::ChartSeries series{"series " + std::to_string(s), {}, {}, colours[s]};
     for (int i = 1; i <= 50; ++i) {
       series.x.push_back(i);
       series.y.push_back((s + 1) * std::sqrt(i));
@@ -54,19 +54,19 @@ TEST(LineChart, WritesAPngOfTheSizeWithEverySeriesColour) {
   img->GetDimensions(dims);
   EXPECT_EQ(dims[0], 900);
   EXPECT_EQ(dims[1], 500);
-  for (const auto& s : chart.series) EXPECT_GT(pixels_near(img, *s.color), 100) << s.name;
+  for (const auto& s : chart.series) EXPECT_GT(pixels_near(img, *s.colour), 100) << s.name;
   EXPECT_GT(pixels_near(img, {1, 1, 1}), 900 * 500 / 2);  // white background
-  EXPECT_GT(distinct_colors(img), 8);                      // lines, text, antialiased glyphs
+  EXPECT_GT(distinct_colours(img), 8);                      // lines, text, antialiased glyphs
 }
 
 TEST(LineChart, DefaultColoursComeFromThePalette) {
   const std::string path = test::temp_dir("line_chart_palette") + "/chart.png";
   vis::LineChart chart = three_lines();
-  for (auto& s : chart.series) s.color.reset();
+  for (auto& s : chart.series) s.colour.reset();
   chart.log_y = true;
   vis::render_line_chart(chart, {640, 400}, path);
   auto img = test::read_png(path);
-  for (int k = 0; k < 3; ++k) EXPECT_GT(pixels_near(img, vis::series_color(k)), 50) << k;
+  for (int k = 0; k < 3; ++k) EXPECT_GT(pixels_near(img, vis::series_colour(k)), 50) << k;
 }
 
 TEST(LineChart, BadPathThrowsAndLeavesNoFile) {

@@ -111,14 +111,14 @@ TEST(OverlayRendering, EveryLayerColourAppearsInThePicture) {
   const std::string types = render(find_case("overlay_vertex_types"), "types.png");
   auto img = test::read_png(types);
   for (VertexType t : {VertexType::kLink, VertexType::kI, VertexType::kX, VertexType::kCoarseOnly})
-    EXPECT_GT(pixels_near(img, vis::vertex_type_color(t)), 20) << enum_name(t);
-  EXPECT_GT(pixels_near(img, vis::kCreasePointColor), 20);
+    EXPECT_GT(pixels_near(img, vis::vertex_type_colour(t)), 20) << enum_name(t);
+  EXPECT_GT(pixels_near(img, vis::kCreasePointColour), 20);
   auto handles = test::read_png(render(find_case("overlay_handles"), "handles.png"));
-  EXPECT_GT(pixels_near(handles, vis::kHandleColor), 10);
-  EXPECT_GT(pixels_near(handles, vis::kAngleSiteColor), 10);
+  EXPECT_GT(pixels_near(handles, vis::kHandleColour), 10);
+  EXPECT_GT(pixels_near(handles, vis::kAngleSiteColour), 10);
   auto patches = test::read_png(render(find_case("overlay_patches"), "patches.png"));
   for (int p = 0; p < test::arcs_model().fine.patch_count(); ++p)
-    EXPECT_GT(pixels_near(patches, vis::patch_color(p)), 200) << "patch " << p;
+    EXPECT_GT(pixels_near(patches, vis::patch_colour(p)), 200) << "patch " << p;
 }
 
 // The comparison must be able to fail: a picture with a different colour layer, one with the

@@ -153,7 +153,7 @@ TEST_F(SurfaceFileTest, PlyReadsBackWithNormalsAndPatchColours) {
       ASSERT_NEAR(p[k], in_sheet_units(surface.V(v, k), k), 1e-6 * kArcsSheet) << "vertex " << v << " axis " << k;
       ASSERT_NEAR(normals->GetComponent(v, k), surface.N(v, k), 1e-6) << "vertex " << v;
     }
-    const vis::Rgb8 c = bytes(vis::patch_color(surface.vertex_patch[v]));
+    const vis::Rgb8 c = bytes(vis::patch_colour(surface.vertex_patch[v]));
     for (int k = 0; k < 3; ++k) ASSERT_EQ(rgb->GetValue(3 * v + k), c[k]) << "vertex " << v;
   }
 }
@@ -209,9 +209,9 @@ TEST_F(SurfaceFileTest, CategoricalColoursAreThePalettes) {
   const auto types = vis::surface_colours(vis::Layer::kVertexTypes, surface, arrays);
   const auto patches = vis::surface_colours(vis::Layer::kPatches, surface, arrays);
   for (int v = 0; v < surface.vertex_count(); ++v) {
-    EXPECT_EQ(patches[v], bytes(vis::patch_color(surface.vertex_patch[v]))) << v;
+    EXPECT_EQ(patches[v], bytes(vis::patch_colour(surface.vertex_patch[v]))) << v;
     if (surface.weight(v, 0) == 1) {
-      EXPECT_EQ(types[v], bytes(vis::vertex_type_color(m.map.fine_type[surface.source(v, 0)])))
+      EXPECT_EQ(types[v], bytes(vis::vertex_type_colour(m.map.fine_type[surface.source(v, 0)])))
           << v;
     }
   }

@@ -1,4 +1,4 @@
-#include "ui/vis/color_maps.h"
+#include "ui/vis/colour_maps.h"
 
 #include <vtkColorTransferFunction.h>
 
@@ -9,13 +9,13 @@ namespace {
 
 struct Stop {
   double at;
-  Rgb color;
+  Rgb colour;
 };
 
 vtkSmartPointer<vtkLookupTable> lut_from_stops(const std::vector<Stop>& stops, double low, double high) {
   auto ctf = vtkSmartPointer<vtkColorTransferFunction>::New();
   ctf->SetColorSpaceToLab();
-  for (const auto& s : stops) ctf->AddRGBPoint(s.at, s.color[0], s.color[1], s.color[2]);
+  for (const auto& s : stops) ctf->AddRGBPoint(s.at, s.colour[0], s.colour[1], s.colour[2]);
   constexpr int n = 256;
   auto lut = vtkSmartPointer<vtkLookupTable>::New();
   lut->SetNumberOfTableValues(n);
@@ -51,7 +51,7 @@ vtkSmartPointer<vtkLookupTable> categorical_lut(int count) {
   lut->IndexedLookupOn();
   lut->SetNumberOfTableValues(std::max(count, 1));
   for (int k = 0; k < count; ++k) {
-    const Rgb c = patch_color(k);
+    const Rgb c = patch_colour(k);
     lut->SetTableValue(k, c[0], c[1], c[2], 1);
     lut->SetAnnotation(vtkVariant(k), ("patch " + std::to_string(k)).c_str());
   }
