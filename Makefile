@@ -1,6 +1,7 @@
 # Scalable DOGs: `make demo` and `make test` install what is missing (Debian 12 packages), build
 # (CMake + Ninja, RelWithDebInfo) and run. `make fuzz` runs the libFuzzer targets (clang), each for
-# FUZZ_SECONDS.
+# FUZZ_SECONDS. `make format` formats the C++ sources with clang-format (.clang-format), `make
+# format-check` fails on a source it would change (CI runs it).
 BUILD    ?= build
 FUZZ_BUILD ?= build-fuzz
 JOBS     ?= 2
@@ -14,10 +15,10 @@ DEMO_RES = 41x41
 
 DEPS = cmake ninja-build g++ libeigen3-dev libcgal-dev libceres-dev libsuitesparse-dev \
        libopenblas-dev libtbb-dev libvtk9-dev libvtk9-qt-dev qtbase5-dev libgtest-dev \
-       libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth python3
+       libpugixml-dev libcli11-dev nlohmann-json3-dev xvfb xauth python3 clang-format
 FUZZ_DEPS = clang libclang-rt-14-dev
 
-.PHONY: all deps fuzz-deps configure build demo test fuzz previews reference-docs clean
+.PHONY: all deps fuzz-deps configure build demo test format format-check fuzz previews reference-docs clean
 
 all: build
 
@@ -56,6 +57,13 @@ demo: build
 
 test: build
 	cd $(BUILD) && $(XVFB) ctest --output-on-failure -j $(JOBS)
+
+format: deps
+	git ls-files '*.cpp' '*.h' | xargs clang-format -i
+
+format-check: deps
+	@git ls-files '*.cpp' '*.h' | xargs clang-format --dry-run --Werror 2>&1 | grep -E "error:" | sed 's/: error: code should be clang-formatted.*/: not formatted (make format)/' ; \
+	git ls-files '*.cpp' '*.h' | xargs clang-format --dry-run --Werror >/dev/null 2>&1 && echo "clang-format: every C++ source is formatted"
 
 fuzz: fuzz-deps deps
 	@[ -f $(FUZZ_BUILD)/build.ninja ] || CXX=clang++ CC=clang cmake -S . -B $(FUZZ_BUILD) -G Ninja -DSDOG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -13,9 +13,10 @@
 namespace sdog::cli {
 
 void add_preset_option(CLI::App& cmd, std::string& preset) {
-  cmd.add_option("--preset", preset,
-                 "solver settings to start from, before --config and the other options: default (exact "
-                 "stitching) or thesis (the thesis's solver, for its numbers)")
+  cmd.add_option(
+         "--preset", preset,
+         "solver settings to start from, before --config and the other options: default (exact "
+         "stitching) or thesis (the thesis's solver, for its numbers)")
       ->check(CLI::IsMember(enum_names<Preset>()));
 }
 
@@ -58,7 +59,8 @@ DogModel build_model(const PatternOptions& o, bool warn) {
   SvgReadOptions svg;
   svg.flatness = o.flatness;
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
-  const Resolution res = resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
+  const Resolution res =
+      resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
   DogModel model = build_dog_model(pattern, res, mesh_options);
   if (warn) print_warnings(model);
   return model;
@@ -90,7 +92,8 @@ void register_sdog_commands(CLI::App& app, Runner& run, const std::string& comma
   app.name("sdog");
   app.description(
       "Scalable DOGs: crease patterns (SVG or FOLD) to discrete orthogonal geodesic nets (DOGs), "
-      "their coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's options.");
+      "their coarse twins and the map between them.\nRun `sdog COMMAND --help` for a command's "
+      "options.");
   app.require_subcommand(1);
   app.set_version_flag("--version", version_line("sdog"), "Print the version and exit");
   register_mesh_command(app, run);
@@ -108,7 +111,8 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   if (argc < 2) throw UsageError("no command given; the commands are " + list + usage);
   if (argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end())
-    throw UsageError(std::string("unknown command '") + argv[1] + "'; the commands are " + list + usage);
+    throw UsageError(std::string("unknown command '") + argv[1] + "'; the commands are " + list +
+                     usage);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -117,6 +121,16 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     throw UsageError(e.what() + usage);
   }
   return std::nullopt;
+}
+
+void add_schedule_options(CLI::App& cmd, ScheduleOptions& o) {
+  o.iterations_opt =
+      cmd.add_option("--iters", o.iterations, "iterations over which the targets move")
+          ->check(CLI::Range(0, 1000000))
+          ->capture_default_str();
+  o.hold_opt = cmd.add_option("--hold", o.hold, "iterations with the final targets")
+                   ->check(CLI::Range(0, 1000000))
+                   ->capture_default_str();
 }
 
 }  // namespace sdog::cli

@@ -2,6 +2,7 @@
 // Shared pieces of the sdog subcommands: pattern/resolution options and the model they build.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
@@ -21,6 +22,26 @@ struct PatternOptions {
 /// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand
 /// (PATTERN `required` or not).
 void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required = true);
+
+/// --iters and --hold of the commands that run a scenario, and whether each was given.
+struct ScheduleOptions {
+  int iterations = 250;
+  int hold = 50;
+  CLI::Option* iterations_opt = nullptr;
+  CLI::Option* hold_opt = nullptr;
+};
+
+/// Adds --iters N (iterations over which the targets move) and --hold N (iterations with the final
+/// targets).
+void add_schedule_options(CLI::App& cmd, ScheduleOptions& o);
+
+/// The cases of bench and compare: patterns x resolutions, or the thesis grid from patterns_dir.
+struct CaseGridArgs {
+  std::vector<std::string> patterns;
+  std::vector<std::string> resolutions;
+  bool thesis_grid = false;
+  std::string patterns_dir = "../shared/reference/patterns";
+};
 
 /// Adds --preset NAME (the solver settings a run starts from: default or thesis).
 void add_preset_option(CLI::App& cmd, std::string& preset);

@@ -12,14 +12,14 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/compare_plots.h"
 #include "app/progress.h"
 #include "app/threads.h"
 #include "app/versions.h"
 #include "base/atomic_output.h"
+#include "base/csv.h"
 #include "base/errors.h"
 #include "base/text_format.h"
-#include "app/compare_plots.h"
-#include "base/csv.h"
 #include "solver/config/run_config_json.h"
 #include "solver/experiments/case_rounds.h"
 #include "solver/experiments/tables.h"
@@ -28,18 +28,13 @@
 namespace sdog::cli {
 namespace {
 
-struct CompareArgs {
-  std::vector<std::string> patterns;
-  std::vector<std::string> resolutions;
+struct CompareArgs : CaseGridArgs {
   std::vector<std::string> modes{"all"};
-  bool thesis_grid = false;
-  std::string patterns_dir = "../shared/reference/patterns";
-  int iterations = 250;
-  int hold = 50;
+  ScheduleOptions schedule;
   std::string scenario = "corners";
   std::string config;
   std::string preset;
-  CLI::Option *scenario_opt = nullptr, *iterations_opt = nullptr, *hold_opt = nullptr;
+  CLI::Option* scenario_opt = nullptr;
   int threads = 0;
   int repeat = 1;
   std::string out;
@@ -52,27 +47,33 @@ struct CompareArgs {
 std::vector<ModeKind> resolve_modes(const std::vector<std::string>& requested) {
   std::vector<ModeKind> modes;
   for (const auto& m : requested) {
-    const std::vector<std::string> names = m == "all" ? enum_names<ModeKind>() : std::vector<std::string>{m};
+    const std::vector<std::string> names =
+        m == "all" ? enum_names<ModeKind>() : std::vector<std::string>{m};
     for (const auto& n : names) {
       const ModeKind mode = parse_enum<ModeKind>(n, "--modes: ");
       if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
     }
   }
-  if (modes.empty()) throw UsageError("--modes: give at least one mode (" + known_names<ModeKind>() + ") or 'all'");
-  std::stable_partition(modes.begin(), modes.end(), [](ModeKind m) { return m == ModeKind::kStandard; });
+  if (modes.empty())
+    throw UsageError("--modes: give at least one mode (" + known_names<ModeKind>() + ") or 'all'");
+  std::stable_partition(modes.begin(), modes.end(),
+                        [](ModeKind m) { return m == ModeKind::kStandard; });
   return modes;
 }
 
 // Every (pattern, resolution) in order, each as its cases of every mode.
-std::vector<std::vector<Case>> make_places(const CompareArgs& a, const std::vector<ModeKind>& modes) {
+std::vector<std::vector<Case>> make_places(const CompareArgs& a,
+                                           const std::vector<ModeKind>& modes) {
   std::vector<Case> places;
   if (a.thesis_grid) {
     places = thesis_grid(a.patterns_dir, modes.front());
   } else {
-    if (a.patterns.empty() || a.resolutions.empty()) throw UsageError("give --pattern and --res (or --thesis-grid)");
+    if (a.patterns.empty() || a.resolutions.empty())
+      throw UsageError("give --pattern and --res (or --thesis-grid)");
     for (const auto& r : a.resolutions) parse_resolution(r);
     for (const auto& p : a.patterns) {
-      if (!std::filesystem::is_regular_file(p)) throw InputError(p + ": no such crease pattern file");
+      if (!std::filesystem::is_regular_file(p))
+        throw InputError(p + ": no such crease pattern file");
       for (const auto& r : a.resolutions) places.push_back({p, r});
     }
   }
@@ -89,7 +90,8 @@ void print_fields(const std::vector<std::string>& fields) {
   std::string line;
   for (size_t i = 0; i < fields.size(); ++i) {
     const auto it = min_width.find(columns[i]);
-    const size_t width = std::max<size_t>(columns[i].size(), it == min_width.end() ? 8 : it->second);
+    const size_t width =
+        std::max<size_t>(columns[i].size(), it == min_width.end() ? 8 : it->second);
     std::string f = fields[i];
     if (i + 1 < fields.size()) f.resize(std::max(width, f.size()), ' ');
     line += f + (i + 1 < fields.size() ? " " : "");
@@ -98,16 +100,30 @@ void print_fields(const std::vector<std::string>& fields) {
 }
 
 nlohmann::json row_json(const CaseResult& r) {
-  auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-  nlohmann::json j = {{"pattern", r.pattern}, {"res", r.res}, {"mode", enum_name(r.mode)},
-                      {"status", enum_name(r.status)}, {"note", r.note}};
+  auto optional = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
+  nlohmann::json j = {{"pattern", r.pattern},
+                      {"res", r.res},
+                      {"mode", enum_name(r.mode)},
+                      {"status", enum_name(r.status)},
+                      {"note", r.note}};
   if (r.status == CaseStatus::kSkipped) return j;
-  j.update({{"vertices", r.vertices}, {"dof", r.dof}, {"iterations", r.iterations},
-            {"final_objective", r.final_objective}, {"objective_ratio", optional(r.objective_ratio)},
-            {"median_ms", r.median_ms}, {"speedup", optional(r.speedup)}, {"total_s", r.total_s},
-            {"total_speedup", optional(r.total_speedup)}, {"round_ms", r.round_ms},
-            {"speedup_paired", optional(r.speedup_paired)}, {"dog_max", r.dog_max},
-            {"dog_max_run", r.dog_max_run}, {"stitch_gap_max", r.stitch_gap_max}, {"folded", r.folded}});
+  j.update({{"vertices", r.vertices},
+            {"dof", r.dof},
+            {"iterations", r.iterations},
+            {"final_objective", r.final_objective},
+            {"objective_ratio", optional(r.objective_ratio)},
+            {"median_ms", r.median_ms},
+            {"speedup", optional(r.speedup)},
+            {"total_s", r.total_s},
+            {"total_speedup", optional(r.total_speedup)},
+            {"round_ms", r.round_ms},
+            {"speedup_paired", optional(r.speedup_paired)},
+            {"dog_max", r.dog_max},
+            {"dog_max_run", r.dog_max_run},
+            {"stitch_gap_max", r.stitch_gap_max},
+            {"folded", r.folded}});
   return j;
 }
 
@@ -115,20 +131,25 @@ RunConfig compare_config(const CompareArgs& a) {
   RunConfig config;
   apply_preset_option(a.preset, a.thesis_grid, config);
   if (!a.config.empty()) read_run_config(a.config, config);
-  if (a.scenario_opt->count() || a.config.empty()) config.scenario = parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
-  if (a.iterations_opt->count() || a.config.empty()) config.iterations = a.iterations;
-  if (a.hold_opt->count() || a.config.empty()) config.hold = a.hold;
+  if (a.scenario_opt->count() || a.config.empty())
+    config.scenario = parse_enum<ScenarioKind>(a.scenario, "--scenario: ");
+  if (a.schedule.iterations_opt->count() || a.config.empty())
+    config.iterations = a.schedule.iterations;
+  if (a.schedule.hold_opt->count() || a.config.empty()) config.hold = a.schedule.hold;
   if (!config.switches.empty())
-    throw UsageError(a.config + ": $.switches: sdog compare runs every mode on its own (use sdog run --switch)");
-  validate_run_config(config, a.config.empty() ? "command line" : a.config + " with the command line",
+    throw UsageError(
+        a.config + ": $.switches: sdog compare runs every mode on its own (use sdog run --switch)");
+  validate_run_config(config,
+                      a.config.empty() ? "command line" : a.config + " with the command line",
                       a.config.empty() ? ErrorKind::kUsage : ErrorKind::kInput);
   return config;
 }
 
 // Runs the modes of one pattern and resolution in rounds (run_rounds), one progress bar per run,
 // and reports each finished case on stderr and its row on stdout.
-std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Case>& place, const RunConfig& config,
-                                      size_t first_case, size_t case_count, std::chrono::steady_clock::time_point start) {
+std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Case>& place,
+                                      const RunConfig& config, size_t first_case, size_t case_count,
+                                      std::chrono::steady_clock::time_point start) {
   const auto place_start = std::chrono::steady_clock::now();
   std::unique_ptr<ProgressBar> progress;
   RoundsOptions options;
@@ -137,8 +158,9 @@ std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Ca
     if (progress) progress->finish();
     progress = std::make_unique<ProgressBar>(config.iterations + config.hold, true);
     if (a.repeat > 1)
-      std::cerr << "sdog compare: " << std::filesystem::path(c.pattern).stem().string() << " " << c.res
-                << ": round " << round + 1 << "/" << a.repeat << ": " << enum_name(c.mode) << "\n"
+      std::cerr << "sdog compare: " << std::filesystem::path(c.pattern).stem().string() << " "
+                << c.res << ": round " << round + 1 << "/" << a.repeat << ": " << enum_name(c.mode)
+                << "\n"
                 << std::flush;
     return {progress.get()};
   };
@@ -146,22 +168,26 @@ std::vector<CaseResult> compare_place(const CompareArgs& a, const std::vector<Ca
   if (progress) progress->finish();
   for (size_t i = 0; i < done.size(); ++i) {
     const CaseResult& r = done[i];
-    std::cerr << "sdog compare: case " << first_case + i + 1 << "/" << case_count << ": " << r.pattern << " " << r.res
-              << " " << enum_name(r.mode) << ": " << enum_name(r.status)
-              << (r.note.empty() ? "" : ": " + r.note + (r.completed() ? "" : "; recorded, going on")) << "\n";
+    std::cerr << "sdog compare: case " << first_case + i + 1 << "/" << case_count << ": "
+              << r.pattern << " " << r.res << " " << enum_name(r.mode) << ": "
+              << enum_name(r.status)
+              << (r.note.empty() ? ""
+                                 : ": " + r.note + (r.completed() ? "" : "; recorded, going on"))
+              << "\n";
     print_fields(compare_fields(r));
   }
-  const std::string cases = done.size() == 1 ? "case " + std::to_string(first_case + 1)
-                                             : "cases " + std::to_string(first_case + 1) + " to " +
-                                                   std::to_string(first_case + done.size()) + " side by side";
-  std::cerr << "sdog compare: " << cases << " in " << format_number(seconds_since(place_start)) << " s (elapsed "
-            << format_number(seconds_since(start)) << " s)\n"
+  const std::string cases = done.size() == 1
+                                ? "case " + std::to_string(first_case + 1)
+                                : "cases " + std::to_string(first_case + 1) + " to " +
+                                      std::to_string(first_case + done.size()) + " side by side";
+  std::cerr << "sdog compare: " << cases << " in " << format_number(seconds_since(place_start))
+            << " s (elapsed " << format_number(seconds_since(start)) << " s)\n"
             << std::flush;
   return done;
 }
 
-nlohmann::json compare_json(const CompareArgs& a, const std::vector<ModeKind>& modes, const RunConfig& config,
-                            const std::vector<CaseResult>& rows) {
+nlohmann::json compare_json(const CompareArgs& a, const std::vector<ModeKind>& modes,
+                            const RunConfig& config, const std::vector<CaseResult>& rows) {
   nlohmann::json json_rows = nlohmann::json::array();
   for (const auto& r : rows) json_rows.push_back(row_json(r));
   std::vector<std::string> mode_list;
@@ -193,14 +219,16 @@ void compare(const CompareArgs& a) {
   // The tables need no display; without one the plots are left out, which is said once.
   const std::string no_display = vis::display_unavailable();
   if (!no_display.empty())
-    std::cerr << "sdog compare: " << no_display << ": the plots are skipped (the tables are written); to draw them, "
+    std::cerr << "sdog compare: " << no_display
+              << ": the plots are skipped (the tables are written); to draw them, "
               << "run the command with an X display or under `xvfb-run -a`\n";
   set_thread_count(a.threads);
 
   std::vector<CaseResult> rows;
   print_fields(compare_columns());
   for (const auto& place : places) {
-    const std::vector<CaseResult> done = compare_place(a, place, config, rows.size(), case_count, start);
+    const std::vector<CaseResult> done =
+        compare_place(a, place, config, rows.size(), case_count, start);
     rows.insert(rows.end(), done.begin(), done.end());
   }
   std::string table = csv_line(compare_columns()), series = csv_line(series_columns());
@@ -218,13 +246,15 @@ void compare(const CompareArgs& a) {
       plots.push_back(name);
     }
   out.commit();
-  const auto failed = std::count_if(rows.begin(), rows.end(), [](const CaseResult& r) { return !r.completed(); });
+  const auto failed =
+      std::count_if(rows.begin(), rows.end(), [](const CaseResult& r) { return !r.completed(); });
   if (failed > 0)
     std::cerr << "sdog compare: " << failed << " of " << rows.size()
               << " runs did not complete (status column of compare.csv)\n";
   std::cout << "sdog compare: " << rows.size() << (rows.size() == 1 ? " case" : " cases")
-            << (a.repeat > 1 ? " (" + std::to_string(a.repeat) + " rounds)" : std::string()) << " in "
-            << format_number(seconds_since(start)) << " s; wrote " << a.out << "/{compare.csv, series.csv, compare.json"
+            << (a.repeat > 1 ? " (" + std::to_string(a.repeat) + " rounds)" : std::string())
+            << " in " << format_number(seconds_since(start)) << " s; wrote " << a.out
+            << "/{compare.csv, series.csv, compare.json"
             << (plots.empty() ? "" : ", " + join(plots, ", ")) << "}\n";
 }
 
@@ -233,46 +263,53 @@ void compare(const CompareArgs& a) {
 void register_compare_command(CLI::App& app, Runner& runner, const std::string& command_line) {
   auto a = std::make_shared<CompareArgs>();
   a->command_line = command_line;
-  CLI::App* cmd = app.add_subcommand(
-      "compare",
-      "Run the thesis protocol with several solver modes and compare them: compare.csv (final objective and "
-      "its ratio to standard, median ms per iteration and the speedup, the whole run's time and its "
-      "speedup, DOG residuals, stitching gap), "
-      "series.csv, compare.json and PNG plots (the plots need an X display: without one they are skipped; use "
-      "xvfb-run on a headless machine)");
+  CLI::App* cmd = app.add_subcommand("compare",
+                                     "Run the thesis protocol with several solver modes and "
+                                     "compare them: compare.csv (final objective and "
+                                     "its ratio to standard, median ms per iteration and the "
+                                     "speedup, the whole run's time and its "
+                                     "speedup, DOG residuals, stitching gap), "
+                                     "series.csv, compare.json and PNG plots (the plots need an X "
+                                     "display: without one they are skipped; use "
+                                     "xvfb-run on a headless machine)");
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
-  cmd->add_option("--res", a->resolutions, "resolution(s) XxY (odd for modes that need the coarse mesh)");
-  cmd->add_option("--modes", a->modes, "'all' or solver modes, comma separated (" + known_names<ModeKind>() + ")")
+  cmd->add_option("--res", a->resolutions,
+                  "resolution(s) XxY (odd for modes that need the coarse mesh)");
+  cmd->add_option("--modes", a->modes,
+                  "'all' or solver modes, comma separated (" + known_names<ModeKind>() + ")")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_flag("--thesis-grid", a->thesis_grid,
-                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset unless --preset "
+                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset "
+                "unless --preset "
                 "says otherwise");
   add_preset_option(*cmd, a->preset);
-  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir, "folder of the thesis patterns for --thesis-grid")
+  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir,
+                  "folder of the thesis patterns for --thesis-grid")
       ->capture_default_str();
-  a->iterations_opt = cmd->add_option("--iters", a->iterations, "iterations over which the targets move")
-                          ->check(CLI::Range(0, 1000000))
-                          ->capture_default_str();
-  a->hold_opt = cmd->add_option("--hold", a->hold, "iterations with the final targets")
-                    ->check(CLI::Range(0, 1000000))
-                    ->capture_default_str();
+  add_schedule_options(*cmd, a->schedule);
   a->scenario_opt =
-      cmd->add_option("--scenario", a->scenario, "scenario of every run (" + join(enum_names<ScenarioKind>(), ", ") + ")")
+      cmd->add_option("--scenario", a->scenario,
+                      "scenario of every run (" + join(enum_names<ScenarioKind>(), ", ") + ")")
           ->capture_default_str();
-  cmd->add_option("--config", a->config,
-                  "JSON file of weights, solver and mode options (as for sdog run; no switches) for every run; "
-                  "--iters, --hold and --scenario win");
+  cmd->add_option(
+      "--config", a->config,
+      "JSON file of weights, solver and mode options (as for sdog run; no switches) for every run; "
+      "--iters, --hold and --scenario win");
   cmd->add_option("--threads", a->threads, "threads for parallel patch solves (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--repeat", a->repeat,
-                  "runs per case, in rounds over the modes (median_ms: the median of their medians; "
-                  "speedup_paired: the median of the rounds' ratios)")
+  cmd->add_option(
+         "--repeat", a->repeat,
+         "runs per case, in rounds over the modes (median_ms: the median of their medians; "
+         "speedup_paired: the median of the rounds' ratios)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->add_option("--out", a->out, "directory for compare.csv, series.csv, compare.json and the plots")->required();
-  cmd->add_option("--plot-size", a->plot_size, "size of the PNG plots WIDTHxHEIGHT in pixels")->capture_default_str();
+  cmd->add_option("--out", a->out,
+                  "directory for compare.csv, series.csv, compare.json and the plots")
+      ->required();
+  cmd->add_option("--plot-size", a->plot_size, "size of the PNG plots WIDTHxHEIGHT in pixels")
+      ->capture_default_str();
   cmd->callback([a, &runner]() { runner = [a]() { compare(*a); }; });
 }
 

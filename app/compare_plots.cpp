@@ -19,16 +19,20 @@ vis::Rgb mode_colour(ModeKind mode) {
 
 vis::ChartSeries mode_series(const CaseResult& r) {
   vis::ChartSeries s;
-  s.name = std::string(enum_name(r.mode)) + (r.completed() ? "" : std::string(" (") + enum_name(r.status) + ")");
+  s.name = std::string(enum_name(r.mode)) +
+           (r.completed() ? "" : std::string(" (") + enum_name(r.status) + ")");
   s.colour = mode_colour(r.mode);
   return s;
 }
 
 // Plots of one pattern and resolution: objective and time per iteration against iteration.
-std::vector<std::pair<std::string, vis::LineChart>> case_charts(const std::vector<const CaseResult*>& rows) {
+std::vector<std::pair<std::string, vis::LineChart>> case_charts(
+    const std::vector<const CaseResult*>& rows) {
   const std::string place = rows.front()->pattern + " " + rows.front()->res;
-  vis::LineChart objective = vis::titled_chart(place + ": objective", "iteration", "objective (weighted, fine mesh)");
-  vis::LineChart time = vis::titled_chart(place + ": time per iteration", "iteration", "time per iteration (ms)");
+  vis::LineChart objective =
+      vis::titled_chart(place + ": objective", "iteration", "objective (weighted, fine mesh)");
+  vis::LineChart time =
+      vis::titled_chart(place + ": time per iteration", "iteration", "time per iteration (ms)");
   // The modes' objectives differ by orders of magnitude (thesis Fig. 6.2), and the first and last
   // iterations (symbolic analysis, final polish) take many times longer than the others.
   objective.log_y = time.log_y = true;
@@ -51,9 +55,10 @@ std::vector<std::pair<std::string, vis::LineChart>> case_charts(const std::vecto
 
 // ms per iteration per DoF against the vertex count, one line per mode, for a pattern run at more
 // than one resolution (completed runs only).
-std::optional<vis::LineChart> scaling_chart(const std::string& pattern, const std::vector<CaseResult>& rows) {
-  vis::LineChart chart =
-      vis::titled_chart(pattern + ": time per iteration per DoF", "fine vertices", "time per iteration per DoF (ms)");
+std::optional<vis::LineChart> scaling_chart(const std::string& pattern,
+                                            const std::vector<CaseResult>& rows) {
+  vis::LineChart chart = vis::titled_chart(pattern + ": time per iteration per DoF",
+                                           "fine vertices", "time per iteration per DoF (ms)");
   std::set<std::string> resolutions;
   std::map<ModeKind, vis::ChartSeries> by_mode;
   for (const auto& r : rows) {
@@ -83,7 +88,8 @@ std::optional<vis::LineChart> scaling_chart(const std::string& pattern, const st
 
 }  // namespace
 
-std::vector<std::pair<std::string, vis::LineChart>> comparison_charts(const std::vector<CaseResult>& rows) {
+std::vector<std::pair<std::string, vis::LineChart>> comparison_charts(
+    const std::vector<CaseResult>& rows) {
   std::vector<std::pair<std::string, vis::LineChart>> charts;
   std::vector<std::string> patterns;
   for (size_t i = 0; i < rows.size();) {

@@ -12,6 +12,7 @@
 namespace sdog::cli {
 
 /// Every plot of the comparison with its file name, from results ordered by pattern and resolution.
-std::vector<std::pair<std::string, vis::LineChart>> comparison_charts(const std::vector<CaseResult>& results);
+std::vector<std::pair<std::string, vis::LineChart>> comparison_charts(
+    const std::vector<CaseResult>& results);
 
 }  // namespace sdog::cli

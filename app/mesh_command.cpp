@@ -43,7 +43,10 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
   nlohmann::json creases = nlohmann::json::array();
   for (size_t k = 0; k < m.clean.creases.size(); ++k) {
     const Crease& c = m.clean.creases[k];
-    creases.push_back({{"index", k}, {"element", c.origin}, {"id", c.id}, {"assignment", enum_name(c.fold)},
+    creases.push_back({{"index", k},
+                       {"element", c.origin},
+                       {"id", c.id},
+                       {"assignment", enum_name(c.fold)},
                        {"angle", c.angle ? nlohmann::json(*c.angle) : nlohmann::json(nullptr)}});
   }
   nlohmann::json j = {

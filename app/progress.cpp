@@ -7,9 +7,13 @@
 namespace sdog::cli {
 
 ProgressBar::ProgressBar(int total, bool enabled)
-    : total_(total), enabled_(enabled && isatty(fileno(stderr))), start_(std::chrono::steady_clock::now()) {}
+    : total_(total),
+      enabled_(enabled && isatty(fileno(stderr))),
+      start_(std::chrono::steady_clock::now()) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 void ProgressBar::on_iteration(const IterationReport& r, const Dofs&) {
   if (!enabled_) return;
@@ -24,8 +28,8 @@ void ProgressBar::on_iteration(const IterationReport& r, const Dofs&) {
   char bar[kWidth + 1];
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '.';
   bar[kWidth] = 0;
-  std::fprintf(stderr, "\r[%s] %d/%d  t %.2f  objective %.5g  dog %.1e  %.0f ms/it  ETA %.0f s   ", bar,
-               r.iteration, total_, r.t, r.diagnostics.objective, r.diagnostics.dog_max,
+  std::fprintf(stderr, "\r[%s] %d/%d  t %.2f  objective %.5g  dog %.1e  %.0f ms/it  ETA %.0f s   ",
+               bar, r.iteration, total_, r.t, r.diagnostics.objective, r.diagnostics.dog_max,
                1000 * elapsed / std::max(1, r.iteration), eta);
   std::fflush(stderr);
 }

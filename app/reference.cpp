@@ -21,14 +21,17 @@ std::string option_table(const CLI::App& app) {
     if (o->get_lnames() == std::vector<std::string>{"help"}) continue;
     const bool flag = o->get_expected_min() == 0;
     const std::string value = flag ? "" : markdown_cell(o->get_type_name());
-    const std::string fallback = o->get_default_str().empty() ? "" : "`" + markdown_cell(o->get_default_str()) + "`";
-    out += "| " + option_names(*o) + " | " + value + " | " + fallback + " | " + markdown_cell(o->get_description()) + " |\n";
+    const std::string fallback =
+        o->get_default_str().empty() ? "" : "`" + markdown_cell(o->get_default_str()) + "`";
+    out += "| " + option_names(*o) + " | " + value + " | " + fallback + " | " +
+           markdown_cell(o->get_description()) + " |\n";
   }
   return out;
 }
 
 std::string section(const std::string& title, const CLI::App& app) {
-  return "\n## `" + title + "`\n\n" + markdown_cell(app.get_description()) + "\n\n" + option_table(app);
+  return "\n## `" + title + "`\n\n" + markdown_cell(app.get_description()) + "\n\n" +
+         option_table(app);
 }
 
 }  // namespace
@@ -38,7 +41,8 @@ std::string command_line_reference() {
   Runner run;
   register_sdog_commands(sdog, run, "sdog");
   std::string out;
-  for (const CLI::App* command : sdog.get_subcommands({})) out += section("sdog " + command->get_name(), *command);
+  for (const CLI::App* command : sdog.get_subcommands({}))
+    out += section("sdog " + command->get_name(), *command);
   CLI::App studio;
   StudioArgs args;
   add_studio_options(studio, args);

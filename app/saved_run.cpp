@@ -4,8 +4,8 @@
 
 #include "base/errors.h"
 #include "base/json_field.h"
-#include "solver/modes/mode_kind.h"
 #include "solver/config/run_config_json.h"
+#include "solver/modes/mode_kind.h"
 
 namespace sdog::cli {
 
@@ -29,17 +29,21 @@ SavedRun read_saved_run(const std::string& path) {
   const Field root(j, "$", path);
   if (!j.is_object()) root.fail("expected a JSON object (the run.json that sdog run --out writes)");
   for (const char* key : {"pattern", "resolution", "mode", "config"})
-    if (!root.has(key)) root.fail(std::string("missing \"") + key + "\": not a run.json of sdog run");
+    if (!root.has(key))
+      root.fail(std::string("missing \"") + key + "\": not a run.json of sdog run");
   SavedRun run;
   run.record = path;
   run.mode = root["mode"].text();
-  if (!find_enum<ModeKind>(run.mode)) root["mode"].fail("unknown mode '" + run.mode + "' (known: " + known_names<ModeKind>() + ")");
+  if (!find_enum<ModeKind>(run.mode))
+    root["mode"].fail("unknown mode '" + run.mode + "' (known: " + known_names<ModeKind>() + ")");
   apply_run_config(j["config"], path + " ($.config)", run.config);
 
   PatternOptions& o = run.pattern;
   const std::string given = root["pattern"].text();
   const std::string absolute = root.has("pattern_path") ? root["pattern_path"].text() : given;
-  o.pattern = std::filesystem::is_regular_file(absolute) || !std::filesystem::is_regular_file(given) ? absolute : given;
+  o.pattern = std::filesystem::is_regular_file(absolute) || !std::filesystem::is_regular_file(given)
+                  ? absolute
+                  : given;
   const Field res = root["resolution"];
   o.res = res["fine"].text();
   o.fine_only = res.has("coarse") && res["coarse"].text().empty();

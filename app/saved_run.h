@@ -16,9 +16,10 @@ namespace sdog::cli {
 void add_model_record(nlohmann::json& run_json, const PatternOptions& pattern);
 
 struct SavedRun {
-  std::string record;      ///< the run.json file
-  PatternOptions pattern;  ///< the pattern file, the fine resolution and the mesh options of the run
-  std::string mode;        ///< the mode the run started with
+  std::string record;  ///< the run.json file
+  PatternOptions
+      pattern;       ///< the pattern file, the fine resolution and the mesh options of the run
+  std::string mode;  ///< the mode the run started with
   RunConfig config;
 
   /// The mode computing iteration k (the start mode, or the last switch at or before k).

@@ -40,11 +40,14 @@ SavedState load_saved_state(const SavedStateRequest& r) {
   fs::path dir;
   if (!r.run.empty()) {
     if (!fs::is_directory(r.run))
-      throw InputError(r.run + (fs::exists(r.run) ? ": not a directory (--run takes the folder of sdog run --out)"
-                                                  : ": no such directory"));
+      throw InputError(r.run + (fs::exists(r.run)
+                                    ? ": not a directory (--run takes the folder of sdog run --out)"
+                                    : ": no such directory"));
     const std::string pvd = (fs::path(r.run) / "frames.pvd").string();
     if (!fs::exists(pvd))
-      throw InputError(r.run + ": no frames.pvd, so no saved frames (sdog run --out writes them unless --frames-every 0)");
+      throw InputError(r.run +
+                       ": no frames.pvd, so no saved frames (sdog run --out writes them unless "
+                       "--frames-every 0)");
     const vis::FrameEntry entry = vis::find_frame(vis::read_frame_list(pvd), r.iteration, pvd);
     s.frame = entry.path;
     s.iteration = entry.iteration;
@@ -60,9 +63,11 @@ SavedState load_saved_state(const SavedStateRequest& r) {
   if (fs::exists(record))
     s.run = read_saved_run(record.string());
   else if (!r.given("PATTERN"))
-    throw InputError((r.run.empty() ? r.frame + ": no run.json beside it" : r.run + ": no run.json") +
-                     " to say which pattern and resolution the frame belongs to (sdog run --out writes one): give "
-                     "PATTERN and --res");
+    throw InputError(
+        (r.run.empty() ? r.frame + ": no run.json beside it" : r.run + ": no run.json") +
+        " to say which pattern and resolution the frame belongs to (sdog run --out writes one): "
+        "give "
+        "PATTERN and --res");
 
   s.pattern = s.run ? s.run->pattern : r.command_line;
   bool overridden = !s.run;
@@ -78,16 +83,19 @@ SavedState load_saved_state(const SavedStateRequest& r) {
   take("--snap-tol", &PatternOptions::snap_fraction);
   take("--fine-only", &PatternOptions::fine_only);
   if (s.run && !r.given("PATTERN") && !fs::is_regular_file(s.pattern.pattern))
-    throw InputError(s.run->record + ": the run's pattern " + s.pattern.pattern +
-                     " is not there any more (moved or deleted?): give the pattern file as PATTERN");
-  s.model_source = overridden ? std::string("as given on the command line") : "as " + s.run->record + " records it";
+    throw InputError(
+        s.run->record + ": the run's pattern " + s.pattern.pattern +
+        " is not there any more (moved or deleted?): give the pattern file as PATTERN");
+  s.model_source = overridden ? std::string("as given on the command line")
+                              : "as " + s.run->record + " records it";
   return s;
 }
 
 DogModel saved_state_model(const SavedState& s) {
   DogModel model = build_model(s.pattern);
-  vis::check_frame_of(s.data, model.fine, s.frame,
-                      s.pattern.pattern + " at " + model.fine_res.str() + " (" + s.model_source + ")");
+  vis::check_frame_of(
+      s.data, model.fine, s.frame,
+      s.pattern.pattern + " at " + model.fine_res.str() + " (" + s.model_source + ")");
   if (s.run) apply_crease_settings(s.run->config.creases, model);
   return model;
 }
@@ -99,7 +107,8 @@ RunConfig saved_state_config(const SavedState& s, ScenarioKind scenario) {
   return config;
 }
 
-Workspace saved_workspace(const SavedState& s, const DogModel& model, const std::optional<std::string>& mode) {
+Workspace saved_workspace(const SavedState& s, const DogModel& model,
+                          const std::optional<std::string>& mode) {
   Workspace w;
   w.pattern = s.pattern.pattern;
   w.resolution = model.fine_res.str();
@@ -110,14 +119,15 @@ Workspace saved_workspace(const SavedState& s, const DogModel& model, const std:
   return w;
 }
 
-vis::SceneState saved_scene_state(const SavedState& s, const DogModel& model, const RunConfig& config,
-                                  bool constraints) {
+vis::SceneState saved_scene_state(const SavedState& s, const DogModel& model,
+                                  const RunConfig& config, bool constraints) {
   const DogProblem problem(model.fine, model.fine_topology, config.weights);
   const Dofs x = to_dofs(s.data.positions);
   if (!constraints) return vis::scene_state(problem, x);
   const Scenario scenario = make_scenario(config, model.fine);
   // The targets of iteration k are those at the scenario's time of k (0 for the start state).
-  const double t = s.run && s.iteration ? (*s.iteration > 0 ? scenario.time_of(*s.iteration) : 0.0) : 1.0;
+  const double t =
+      s.run && s.iteration ? (*s.iteration > 0 ? scenario.time_of(*s.iteration) : 0.0) : 1.0;
   return vis::scene_state(problem, x, nullptr, &scenario, t);
 }
 

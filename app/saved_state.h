@@ -27,11 +27,12 @@ struct SavedStateRequest {
 };
 
 struct SavedState {
-  std::string frame;             ///< the frame file
-  std::optional<int> iteration;  ///< listed in frames.pvd beside it, or from its name frame_NNNN.vtu
-  std::optional<SavedRun> run;   ///< the run.json beside the frame
-  PatternOptions pattern;        ///< the model's options
-  std::string model_source;      ///< "as DIR/run.json records it" or "as given on the command line"
+  std::string frame;  ///< the frame file
+  std::optional<int>
+      iteration;                ///< listed in frames.pvd beside it, or from its name frame_NNNN.vtu
+  std::optional<SavedRun> run;  ///< the run.json beside the frame
+  PatternOptions pattern;       ///< the model's options
+  std::string model_source;     ///< "as DIR/run.json records it" or "as given on the command line"
   vis::SavedFrame data;
 };
 
@@ -51,13 +52,14 @@ RunConfig saved_state_config(const SavedState& state, ScenarioKind scenario);
 /// The state as a studio workspace on `model` (saved_state_model): pattern, resolution, iteration
 /// (0 when unknown), configuration, positions, and the mode: `mode` when given, else the run's at
 /// the frame's iteration (without a record: standard).
-Workspace saved_workspace(const SavedState& state, const DogModel& model, const std::optional<std::string>& mode);
+Workspace saved_workspace(const SavedState& state, const DogModel& model,
+                          const std::optional<std::string>& mode);
 
 /// What the run's pictures showed at the frame: its positions, the fields measured on the model
 /// with the configuration's weights (as the run and its frames measure them) and, with
 /// `constraints`, the configuration's scenario at the frame's iteration (at its end without a
 /// record or a known iteration). The coarse mesh is not saved: it is drawn at rest.
-vis::SceneState saved_scene_state(const SavedState& state, const DogModel& model, const RunConfig& config,
-                                  bool constraints);
+vis::SceneState saved_scene_state(const SavedState& state, const DogModel& model,
+                                  const RunConfig& config, bool constraints);
 
 }  // namespace sdog::cli

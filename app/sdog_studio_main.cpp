@@ -4,17 +4,17 @@
 //   sdog-studio --screenshot FILE.png [PATTERN ... --iters N]   renders the window, saves it, exits
 //   sdog-studio --measure-fps SECONDS PATTERN ...   plays, turns the camera, prints the frame rate
 // Exit codes as sdog's: 0 success, 1 bad input or output, 2 usage error.
+#include <QVTKOpenGLNativeWidget.h>
 #include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QSurfaceFormat>
 #include <QTimer>
-#include <QVTKOpenGLNativeWidget.h>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <string>
 
 #include "app/blas_kernels.h"
 #include "app/saved_state.h"
@@ -28,11 +28,13 @@
 namespace {
 
 QString about_text() {
-  QString text = "<h3>Scalable DOGs studio</h3><p>Crease patterns to discrete orthogonal geodesic nets, "
-                 "deformed by the solver modes and inspected on the fine and coarse meshes.</p><table>";
+  QString text =
+      "<h3>Scalable DOGs studio</h3><p>Crease patterns to discrete orthogonal geodesic nets, "
+      "deformed by the solver modes and inspected on the fine and coarse meshes.</p><table>";
   const auto versions = sdog::cli::software_versions().get<std::map<std::string, std::string>>();
   for (const auto& [name, version] : versions)
-    text += QString("<tr><td>%1</td><td>%2</td></tr>").arg(QString::fromStdString(name), QString::fromStdString(version));
+    text += QString("<tr><td>%1</td><td>%2</td></tr>")
+                .arg(QString::fromStdString(name), QString::fromStdString(version));
   return text + QString("<tr><td>qt</td><td>%1</td></tr></table>").arg(qVersion());
 }
 
@@ -70,8 +72,8 @@ bool configure_window(sdog::studio::MainWindow& window, const StudioArgs& a) {
 // iteration) unless --mode says otherwise. Returns the iteration it opens at, or nothing: after a
 // message on stderr when the saved state cannot be read (`exit_code` 1 or 2: the program ends), or
 // when the window reported why it cannot open it.
-std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const StudioArgs& a, const CLI::App& cli,
-                                    int& exit_code) {
+std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const StudioArgs& a,
+                                    const CLI::App& cli, int& exit_code) {
   sdog::cli::SavedStateRequest request;
   request.frame = a.frame;
   request.run = a.run;
@@ -84,8 +86,8 @@ std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const Stud
   try {
     const sdog::cli::SavedState saved = sdog::cli::load_saved_state(request);
     auto model = std::make_shared<const sdog::DogModel>(sdog::cli::saved_state_model(saved));
-    const sdog::Workspace state =
-        sdog::cli::saved_workspace(saved, *model, cli.count("--mode") ? std::optional<std::string>(a.mode) : std::nullopt);
+    const sdog::Workspace state = sdog::cli::saved_workspace(
+        saved, *model, cli.count("--mode") ? std::optional<std::string>(a.mode) : std::nullopt);
     const std::string source = saved.run ? saved.run->record : saved.frame;
     if (window.open_state(model, state, QString::fromStdString(source))) return state.iteration;
   } catch (const sdog::Error& e) {
@@ -97,31 +99,37 @@ std::optional<int> open_saved_state(sdog::studio::MainWindow& window, const Stud
 
 // --measure-fps: once the first state is shown (and the solver is at iteration `until`), plays and
 // turns the camera for the given time, prints the frame rate and quits.
-void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until, QApplication& qt,
-                        const int& exit_code) {
+void measure_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until,
+                        QApplication& qt, const int& exit_code) {
   auto measuring = std::make_shared<bool>(false);
-  QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until, measuring] {
-    if (*measuring || window.snapshot()->iteration < until) return;
-    *measuring = true;
-    QTimer::singleShot(0, &window, [&] {
-      const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
-      const sdog::vis::ImageSize view{window.renderer()->GetSize()[0], window.renderer()->GetSize()[1]};
-      const sdog::DogModel& model = *window.model();
-      std::printf("view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d pixels:\n",
-                  window.snapshot()->mode.c_str(), model.pattern.source.c_str(), model.fine_res.str().c_str(),
-                  model.fine.vertex_count(), view.width, view.height);
-      std::printf("  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max %.1f ms\n",
-                  r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
-      std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
-      std::fflush(stdout);
-      qt.exit(exit_code);
-    });
-  });
+  QObject::connect(
+      &window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until, measuring] {
+        if (*measuring || window.snapshot()->iteration < until) return;
+        *measuring = true;
+        QTimer::singleShot(0, &window, [&] {
+          const sdog::studio::FrameRate r = sdog::studio::measure_frame_rate(window, a.measure_fps);
+          const sdog::vis::ImageSize view{window.renderer()->GetSize()[0],
+                                          window.renderer()->GetSize()[1]};
+          const sdog::DogModel& model = *window.model();
+          std::printf(
+              "view frame rate while playing %s on %s at %s (%d fine vertices), view %dx%d "
+              "pixels:\n",
+              window.snapshot()->mode.c_str(), model.pattern.source.c_str(),
+              model.fine_res.str().c_str(), model.fine.vertex_count(), view.width, view.height);
+          std::printf(
+              "  %d frames in %.1f s: %.1f fps; between frames median %.1f ms, p95 %.1f ms, max "
+              "%.1f ms\n",
+              r.frames, r.seconds, r.fps, r.median_ms, r.p95_ms, r.max_ms);
+          std::printf("  solver: %d iterations, %d states shown\n", r.iterations, r.states_shown);
+          std::fflush(stdout);
+          qt.exit(exit_code);
+        });
+      });
 }
 
 // --screenshot: saves the window once the state of iteration `until` is shown, and quits.
-void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until, QApplication& qt,
-                           const int& exit_code) {
+void screenshot_when_shown(sdog::studio::MainWindow& window, const StudioArgs& a, int until,
+                           QApplication& qt, const int& exit_code) {
   QObject::connect(&window, &sdog::studio::MainWindow::snapshot_shown, &window, [&, until] {
     if (window.snapshot()->iteration < until) return;
     QTimer::singleShot(300, &window, [&] {
@@ -149,7 +157,8 @@ int main(int argc, char** argv) {
       return 0;
     }
   if (!has_display(argc, argv)) {
-    std::cerr << "sdog-studio: no display to open windows on (DISPLAY is not set); run it in a desktop session, or "
+    std::cerr << "sdog-studio: no display to open windows on (DISPLAY is not set); run it in a "
+                 "desktop session, or "
                  "headless as `xvfb-run -a sdog-studio ...`\n";
     return 1;
   }
@@ -181,8 +190,9 @@ int main(int argc, char** argv) {
     const std::optional<int> start = open_saved_state(window, a, cli, exit_code);
     if (!start && (exit_code || batch)) return exit_code ? exit_code : 1;
     until += start.value_or(0);
-  } else if (!a.pattern.empty() && !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res),
-                                                        QString::fromStdString(a.mode))) {
+  } else if (!a.pattern.empty() &&
+             !window.open_pattern(QString::fromStdString(a.pattern), QString::fromStdString(a.res),
+                                  QString::fromStdString(a.mode))) {
     if (batch) return 1;
   }
   if (a.iterations > 0) window.step(a.iterations);

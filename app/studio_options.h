@@ -6,7 +6,8 @@
 namespace sdog::cli {
 
 struct StudioArgs {
-  std::string pattern, res = "auto", mode = "standard", overlay, view = "3d", screenshot, size = "1600x1000";
+  std::string pattern, res = "auto", mode = "standard", overlay, view = "3d", screenshot,
+                       size = "1600x1000";
   int iterations = 0;
   double measure_fps = 0;
   std::string frame, run;  ///< a saved state to open (saved_state.h)

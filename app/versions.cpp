@@ -27,8 +27,8 @@ nlohmann::json software_versions() {
           {"blas", blas_description()},
           {"tbb", TBB_VERSION_STRING},
           {"vtk", vtkVersion::GetVTKVersion()},
-          {"nlohmann_json",
-           dotted(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)}};
+          {"nlohmann_json", dotted(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR,
+                                   NLOHMANN_JSON_VERSION_PATCH)}};
 }
 
 std::string version_line(const std::string& program) {

@@ -31,7 +31,8 @@ OutputSet::OutputSet(std::string dir) : dir_(std::move(dir)) {
   // Writable means a file can be made in it: create and remove one, so that an unusable directory
   // is refused now and not after the work (access() would say yes to root everywhere, also in
   // /proc or /sys).
-  const std::string probe = (fs::path(dir_) / (".sdog-probe." + std::to_string(::getpid()))).string();
+  const std::string probe =
+      (fs::path(dir_) / (".sdog-probe." + std::to_string(::getpid()))).string();
   std::ofstream test(probe, std::ios::binary);
   test << 'x';
   test.close();
@@ -66,8 +67,8 @@ void OutputSet::write_text(const std::string& name, const std::string& text) {
   out << text;
   out.close();
   if (!out)
-    throw OutputError((fs::path(dir_) / name).string() + ": cannot write (" + std::strerror(errno) + "; writing " +
-                      tmp + ")");
+    throw OutputError((fs::path(dir_) / name).string() + ": cannot write (" + std::strerror(errno) +
+                      "; writing " + tmp + ")");
 }
 
 std::vector<std::string> OutputSet::commit() {

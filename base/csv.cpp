@@ -10,7 +10,9 @@ std::string csv_number(double v, int digits) {
   return buf;
 }
 
-std::string csv_number(const std::optional<double>& v, int digits) { return v ? csv_number(*v, digits) : std::string(); }
+std::string csv_number(const std::optional<double>& v, int digits) {
+  return v ? csv_number(*v, digits) : std::string();
+}
 
 std::string csv_line(const std::vector<std::string>& fields) {
   std::string line;

@@ -8,7 +8,8 @@
 //
 //   template <> struct EnumNames<Preset> {
 //     static constexpr const char* noun = "preset";
-//     static constexpr EnumName<Preset> rows[] = {{Preset::kDefault, "default"}, {Preset::kThesis, "thesis"}};
+//     static constexpr EnumName<Preset> rows[] = {{Preset::kDefault, "default"}, {Preset::kThesis,
+//     "thesis"}};
 //   };
 #include <algorithm>
 #include <cstddef>
@@ -45,7 +46,8 @@ constexpr bool in_value_order() {
 /// The enumerator's name.
 template <class E>
 const char* enum_name(E value) {
-  static_assert(enum_names_detail::in_value_order<E>(), "EnumNames rows must follow the enum's values");
+  static_assert(enum_names_detail::in_value_order<E>(),
+                "EnumNames rows must follow the enum's values");
   return EnumNames<E>::rows[static_cast<std::size_t>(value)].name;
 }
 
@@ -75,7 +77,8 @@ const std::vector<std::string>& enum_names() {
 template <class E>
 std::string known_names() {
   std::string out;
-  for (const EnumName<E>& row : EnumNames<E>::rows) out += (out.empty() ? "" : ", ") + std::string(row.name);
+  for (const EnumName<E>& row : EnumNames<E>::rows)
+    out += (out.empty() ? "" : ", ") + std::string(row.name);
   return out;
 }
 
@@ -89,9 +92,11 @@ std::optional<E> find_enum(std::string_view name) {
 
 /// The enumerator named `name`; else an error of `kind`: "`where`unknown NOUN 'name' (known: ...)".
 template <class E>
-E parse_enum(const std::string& name, const std::string& where = "", ErrorKind kind = ErrorKind::kUsage) {
+E parse_enum(const std::string& name, const std::string& where = "",
+             ErrorKind kind = ErrorKind::kUsage) {
   if (const auto value = find_enum<E>(name)) return *value;
-  throw_error(kind, where + "unknown " + EnumNames<E>::noun + " '" + name + "' (known: " + known_names<E>() + ")");
+  throw_error(kind, where + "unknown " + EnumNames<E>::noun + " '" + name +
+                        "' (known: " + known_names<E>() + ")");
 }
 
 /// A comma-separated list of names ("obj,ply"): at least one, none empty, none twice; else an
@@ -100,7 +105,8 @@ template <class E>
 std::vector<E> parse_enum_list(const std::string& text, const std::string& where = "",
                                ErrorKind kind = ErrorKind::kUsage) {
   const std::string noun = EnumNames<E>::noun;
-  if (text.empty()) throw_error(kind, where + "no " + noun + " given (known: " + known_names<E>() + ")");
+  if (text.empty())
+    throw_error(kind, where + "no " + noun + " given (known: " + known_names<E>() + ")");
   std::vector<E> out;
   for (std::size_t start = 0; start <= text.size();) {
     const std::size_t comma = std::min(text.find(',', start), text.size());

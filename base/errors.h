@@ -26,7 +26,9 @@ enum class ErrorKind {
 
 /// The exit code of an executable that stops with an error of this kind: 2 for usage errors (an
 /// option must be changed), 1 for the others (a file or a setting must be fixed).
-inline int exit_code(ErrorKind kind) { return kind == ErrorKind::kUsage ? 2 : 1; }
+inline int exit_code(ErrorKind kind) {
+  return kind == ErrorKind::kUsage ? 2 : 1;
+}
 
 /// The base of the shorthands below; thrown only as one of them (throw_error picks it by kind).
 class Error : public std::runtime_error {

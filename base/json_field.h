@@ -20,7 +20,9 @@ class Field {
   Field(const nlohmann::json& value, std::string path, std::string source)
       : v_(value), path_(std::move(path)), source_(std::move(source)) {}
 
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(source_ + ": " + path_ + ": " + what); }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source_ + ": " + path_ + ": " + what);
+  }
   const std::string& path() const { return path_; }
   /// "file: $.path", for messages raised later.
   std::string where() const { return source_ + ": " + path_; }
@@ -32,11 +34,14 @@ class Field {
     const std::set<std::string> allowed(known.begin(), known.end());
     for (auto it = v_.begin(); it != v_.end(); ++it)
       if (!allowed.count(it.key()))
-        throw InputError(source_ + ": " + path_ + "." + it.key() + ": unknown key (known: " + join(known, ", ") + ")");
+        throw InputError(source_ + ": " + path_ + "." + it.key() +
+                         ": unknown key (known: " + join(known, ", ") + ")");
   }
   bool has(const char* key) const { return v_.contains(key); }
   Field operator[](const char* key) const { return Field(v_.at(key), path_ + "." + key, source_); }
-  Field operator[](size_t i) const { return Field(v_.at(i), path_ + "[" + std::to_string(i) + "]", source_); }
+  Field operator[](size_t i) const {
+    return Field(v_.at(i), path_ + "[" + std::to_string(i) + "]", source_);
+  }
 
   double number() const {
     if (!v_.is_number()) fail("expected a number");
@@ -51,14 +56,16 @@ class Field {
   }
   double at_least(double min) const {
     const double d = number();
-    if (!(d >= min)) fail("expected a number >= " + format_number(min) + ", got " + format_number(d));
+    if (!(d >= min))
+      fail("expected a number >= " + format_number(min) + ", got " + format_number(d));
     return d;
   }
   double non_negative() const { return at_least(0); }
   int integer(int min) const {
     if (!v_.is_number_integer()) fail("expected an integer");
     const long long i = v_.get<long long>();
-    if (i < min || i > 100000000) fail("expected an integer >= " + std::to_string(min) + ", got " + std::to_string(i));
+    if (i < min || i > 100000000)
+      fail("expected an integer >= " + std::to_string(min) + ", got " + std::to_string(i));
     return static_cast<int>(i);
   }
   bool boolean() const {
@@ -71,7 +78,8 @@ class Field {
   }
   template <int N>
   Eigen::Matrix<double, N, 1> vector() const {
-    if (!v_.is_array() || v_.size() != N) fail("expected an array of " + std::to_string(N) + " numbers");
+    if (!v_.is_array() || v_.size() != N)
+      fail("expected an array of " + std::to_string(N) + " numbers");
     Eigen::Matrix<double, N, 1> out;
     for (int i = 0; i < N; ++i) out[i] = (*this)[static_cast<size_t>(i)].number();
     return out;

@@ -16,8 +16,8 @@ bool Bounds::contains(double v) const {
 std::string Bounds::symbols() const {
   const bool low = std::isfinite(min), high = std::isfinite(max);
   if (low && high)
-    return std::string("in ") + (open_min ? "(" : "[") + format_number(min) + ", " + format_number(max) +
-           (open_max ? ")" : "]");
+    return std::string("in ") + (open_min ? "(" : "[") + format_number(min) + ", " +
+           format_number(max) + (open_max ? ")" : "]");
   if (low) return (open_min ? "> " : ">= ") + format_number(min);
   if (high) return (open_max ? "< " : "<= ") + format_number(max);
   return "any";

@@ -23,8 +23,12 @@ struct Bounds {
 
   static Bounds any() { return {}; }
   static Bounds positive() { return above(0); }
-  static Bounds above(double m) { return {m, std::numeric_limits<double>::infinity(), true, false}; }
-  static Bounds at_least(double m) { return {m, std::numeric_limits<double>::infinity(), false, false}; }
+  static Bounds above(double m) {
+    return {m, std::numeric_limits<double>::infinity(), true, false};
+  }
+  static Bounds at_least(double m) {
+    return {m, std::numeric_limits<double>::infinity(), false, false};
+  }
   static Bounds between(double a, double b) { return {a, b, false, false}; }
   static Bounds open(double a, double b) { return {a, b, true, true}; }
 
@@ -54,29 +58,50 @@ using OptionTable = std::vector<Option<S>>;
 
 template <class S>
 Option<S> real_option(const char* key, double S::*member, Bounds bounds, const char* help) {
-  return {key, OptionType::kReal, bounds, {}, help, {},
+  return {key,
+          OptionType::kReal,
+          bounds,
+          {},
+          help,
+          {},
           [member](const S& s) { return std::optional<double>(s.*member); },
           [member](S& s, std::optional<double> v) { s.*member = *v; }};
 }
 
 /// A number that may be left unset; `unset` says what the code then uses.
 template <class S>
-Option<S> optional_real_option(const char* key, std::optional<double> S::*member, Bounds bounds, const char* unset,
-                               const char* help) {
-  return {key, OptionType::kReal, bounds, {}, help, unset, [member](const S& s) { return s.*member; },
+Option<S> optional_real_option(const char* key, std::optional<double> S::*member, Bounds bounds,
+                               const char* unset, const char* help) {
+  return {key,
+          OptionType::kReal,
+          bounds,
+          {},
+          help,
+          unset,
+          [member](const S& s) { return s.*member; },
           [member](S& s, std::optional<double> v) { s.*member = v; }};
 }
 
 template <class S>
 Option<S> integer_option(const char* key, int S::*member, Bounds bounds, const char* help) {
-  return {key, OptionType::kInteger, bounds, {}, help, {},
+  return {key,
+          OptionType::kInteger,
+          bounds,
+          {},
+          help,
+          {},
           [member](const S& s) { return std::optional<double>(s.*member); },
           [member](S& s, std::optional<double> v) { s.*member = static_cast<int>(*v); }};
 }
 
 template <class S>
 Option<S> boolean_option(const char* key, bool S::*member, const char* help) {
-  return {key, OptionType::kBoolean, Bounds::between(0, 1), {}, help, {},
+  return {key,
+          OptionType::kBoolean,
+          Bounds::between(0, 1),
+          {},
+          help,
+          {},
           [member](const S& s) { return std::optional<double>(s.*member ? 1 : 0); },
           [member](S& s, std::optional<double> v) { s.*member = *v != 0; }};
 }
@@ -86,9 +111,16 @@ template <class S, class E>
 Option<S> choice_option(const char* key, E S::*member, const char* help) {
   const std::vector<std::string>& names = enum_names<E>();
   const double last = static_cast<double>(names.size()) - 1;
-  return {key, OptionType::kChoice, Bounds::between(0, last), names, help, {},
+  return {key,
+          OptionType::kChoice,
+          Bounds::between(0, last),
+          names,
+          help,
+          {},
           [member](const S& s) { return std::optional<double>(static_cast<int>(s.*member)); },
-          [member](S& s, std::optional<double> v) { s.*member = static_cast<E>(static_cast<int>(*v)); }};
+          [member](S& s, std::optional<double> v) {
+            s.*member = static_cast<E>(static_cast<int>(*v));
+          }};
 }
 
 /// The rows of `inner`, the table of a member struct, as rows of S.

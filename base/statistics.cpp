@@ -10,7 +10,8 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-std::optional<double> paired_ratio(const std::vector<double>& reference, const std::vector<double>& values) {
+std::optional<double> paired_ratio(const std::vector<double>& reference,
+                                   const std::vector<double>& values) {
   if (values.empty() || values.size() != reference.size()) return std::nullopt;
   std::vector<double> ratios;
   for (size_t k = 0; k < values.size(); ++k) ratios.push_back(reference[k] / values[k]);

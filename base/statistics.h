@@ -10,6 +10,7 @@ double median(std::vector<double> values);
 
 /// The median over k of reference[k] / values[k] (each ratio of two measurements made one shortly
 /// after the other); empty unless both have the same, non-zero number of values.
-std::optional<double> paired_ratio(const std::vector<double>& reference, const std::vector<double>& values);
+std::optional<double> paired_ratio(const std::vector<double>& reference,
+                                   const std::vector<double>& values);
 
 }  // namespace sdog

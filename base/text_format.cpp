@@ -23,9 +23,12 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
 std::string markdown_cell(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '\n') out += ' ';
-    else if (c == '|') out += "\\|";
-    else out += c;
+    if (c == '\n')
+      out += ' ';
+    else if (c == '|')
+      out += "\\|";
+    else
+      out += c;
   }
   return out;
 }

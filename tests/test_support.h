@@ -21,7 +21,8 @@ inline std::string dataset(const std::string& name) {
 inline std::vector<std::string> all_datasets() {
   std::vector<std::string> out;
   for (const auto& e : std::filesystem::directory_iterator(SDOG_DATASETS_DIR))
-    if (e.path().extension() == ".svg" || e.path().extension() == ".fold") out.push_back(e.path().string());
+    if (e.path().extension() == ".svg" || e.path().extension() == ".fold")
+      out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -37,7 +38,8 @@ inline std::vector<std::string> all_reference_patterns() {
   const std::string dir = reference_patterns_dir();
   if (dir.empty()) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".svg" || e.path().extension() == ".fold") out.push_back(e.path().string());
+    if (e.path().extension() == ".svg" || e.path().extension() == ".fold")
+      out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
 }

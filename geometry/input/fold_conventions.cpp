@@ -36,15 +36,22 @@ CurveReading read_curve(const SvgCurve& curve, const std::string& where) {
   CurveReading reading;
   // 2. and 4.: the colour.
   const std::string& c = curve.colour;
-  if (c == "#000000") reading.role = CurveRole::kBoundary;
-  else if (c == "#ff0000") reading.fold = Fold::kMountain;
-  else if (c == "#0000ff") reading.fold = Fold::kValley;
-  else if (c == "#00ff00" || c == "#008000") reading.role = CurveRole::kCut;
-  else if (c == "#ffff00") reading.role = CurveRole::kFacet;
+  if (c == "#000000")
+    reading.role = CurveRole::kBoundary;
+  else if (c == "#ff0000")
+    reading.fold = Fold::kMountain;
+  else if (c == "#0000ff")
+    reading.fold = Fold::kValley;
+  else if (c == "#00ff00" || c == "#008000")
+    reading.role = CurveRole::kCut;
+  else if (c == "#ffff00")
+    reading.role = CurveRole::kFacet;
   const bool simulator_colour = c == "#ff0000" || c == "#0000ff" || c == "#ff00ff";
-  if ((c == "#ff0000" || c == "#0000ff") && curve.opacity) reading.angle = *curve.opacity * kHalfTurn;
+  if ((c == "#ff0000" || c == "#0000ff") && curve.opacity)
+    reading.angle = *curve.opacity * kHalfTurn;
   // 3.: dashes, on black and on colours without a meaning of their own.
-  if (curve.dashed && !simulator_colour && (reading.role == CurveRole::kBoundary || reading.role == CurveRole::kCrease)) {
+  if (curve.dashed && !simulator_colour &&
+      (reading.role == CurveRole::kBoundary || reading.role == CurveRole::kCrease)) {
     reading.role = CurveRole::kCrease;
     reading.fold = curve.dash_dot ? Fold::kMountain : Fold::kValley;
   }
@@ -57,7 +64,8 @@ CurveReading read_curve(const SvgCurve& curve, const std::string& where) {
   if (curve.data_angle) {
     reading.angle = angle_of_attribute(*curve.data_angle, where);
     if (reading.fold == Fold::kFlat && *reading.angle != 0)
-      throw InputError(where + ": data-angle=\"" + *curve.data_angle + "\" on a flat crease; a flat crease does not fold");
+      throw InputError(where + ": data-angle=\"" + *curve.data_angle +
+                       "\" on a flat crease; a flat crease does not fold");
   }
   if (reading.fold == Fold::kFlat) reading.angle = 0;
   return reading;

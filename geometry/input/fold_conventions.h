@@ -21,8 +21,8 @@
 #include <optional>
 #include <string>
 
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/input/svg_reader.h"
+#include "geometry/pattern/crease_pattern.h"
 
 namespace sdog {
 

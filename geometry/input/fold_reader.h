@@ -11,10 +11,10 @@
 //    mountain crease, V a valley crease, F a flat crease, U a crease without assignment, J a join
 //    edge (a modelling helper, not a crease: ignored, with a warning). C, a cut, is refused.
 //  - edges_foldAngle (optional): the fold angle of each edge in degrees, -180 to 180, or null for
-//    none. FOLD's sign is this project's (geometry/input/fold_conventions.h): valleys positive, mountains
-//    negative. Crease::angle is its magnitude; a sign that contradicts M or V, or a nonzero angle
-//    on a B or F edge, is an error. A U edge with a nonzero angle becomes a mountain or a valley
-//    by the sign; 0 on a U edge means no angle.
+//    none. FOLD's sign is this project's (geometry/input/fold_conventions.h): valleys positive,
+//    mountains negative. Crease::angle is its magnitude; a sign that contradicts M or V, or a
+//    nonzero angle on a B or F edge, is an error. A U edge with a nonzero angle becomes a mountain
+//    or a valley by the sign; 0 on a U edge means no angle.
 //  - frame_classes (optional): a frame that is a "foldedForm" and not a "creasePattern" is
 //    refused (its coordinates are a folded state, not the flat sheet).
 //

@@ -57,7 +57,8 @@ std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol)
       if (extended) {
         Polyline2& next = open[best].points;
         if (reversed) std::reverse(next.begin(), next.end());
-        current.points.insert(current.points.end(), next.begin() + (nearest == 0 ? 1 : 0), next.end());
+        current.points.insert(current.points.end(), next.begin() + (nearest == 0 ? 1 : 0),
+                              next.end());
         open.erase(open.begin() + static_cast<std::ptrdiff_t>(best));
       }
       if (!extended) {
@@ -108,8 +109,10 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol)
       continue;
     }
     if (reading.role == CurveRole::kCut)
-      throw InputError(origin_of(drawing.source, c) + ": a cut line (green): cuts are not supported, the sheet "
-                       "must stay one piece along every crease; remove the cut or make it a crease");
+      throw InputError(
+          origin_of(drawing.source, c) +
+          ": a cut line (green): cuts are not supported, the sheet "
+          "must stay one piece along every crease; remove the cut or make it a crease");
     if (reading.role == CurveRole::kCrease) {
       out.creases.push_back(&c);
       out.readings.push_back(reading);
@@ -172,8 +175,9 @@ size_t append_continuations(const std::vector<const SvgCurve*>& curves, size_t k
 
 // The creases of the crease curves: subpaths of one <path> that continue each other are joined,
 // and a crease whose ends meet within closed_fraction of the sheet size is closed.
-void add_creases(const std::vector<const SvgCurve*>& curves, const std::vector<CurveReading>& readings,
-                 const std::string& source, double closed_fraction, CreasePattern& pattern) {
+void add_creases(const std::vector<const SvgCurve*>& curves,
+                 const std::vector<CurveReading>& readings, const std::string& source,
+                 double closed_fraction, CreasePattern& pattern) {
   const double sheet_tol = closed_fraction * pattern.size();
   for (size_t k = 0; k < curves.size(); ++k) {
     const SvgCurve& c = *curves[k];
@@ -203,14 +207,16 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
   CreasePattern pattern;
   pattern.source = drawing.source;
   const double tol = closing_tolerance(drawing, closed_fraction);
-  const SortedCurves curves = sort_curves(drawing, tol, closing_tolerance(drawing, kBoundaryJoinFraction));
+  const SortedCurves curves =
+      sort_curves(drawing, tol, closing_tolerance(drawing, kBoundaryJoinFraction));
   pattern.sheet = curves.loops.empty() ? sheet_from_viewbox(drawing)
                                        : sheet_from_loops(curves.loops, curves.loop_origins);
   pattern.sheet.bbox = box_of(pattern.sheet.outer);
   add_creases(curves.creases, curves.readings, drawing.source, closed_fraction, pattern);
   if (curves.facet_lines > 0)
-    pattern.warnings.push_back(std::to_string(curves.facet_lines) +
-                               " facet line(s) (yellow, Origami Simulator's triangulation) ignored");
+    pattern.warnings.push_back(
+        std::to_string(curves.facet_lines) +
+        " facet line(s) (yellow, Origami Simulator's triangulation) ignored");
   return pattern;
 }
 

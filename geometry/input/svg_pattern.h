@@ -1,6 +1,7 @@
 #pragma once
-// From an SVG drawing to a crease pattern, with the conventions of geometry/input/fold_conventions.h:
-// black curves are the sheet boundary (none: the viewBox rectangle), the others creases.
+// From an SVG drawing to a crease pattern, with the conventions of
+// geometry/input/fold_conventions.h: black curves are the sheet boundary (none: the viewBox
+// rectangle), the others creases.
 
 #include "geometry/input/svg_reader.h"
 #include "geometry/pattern/crease_pattern.h"

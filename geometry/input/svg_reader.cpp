@@ -33,7 +33,7 @@ constexpr int kMaxNesting = 256;
 struct InheritedStyle {
   std::optional<std::string> stroke, fill, dasharray, colour, stroke_opacity, data_fold, data_angle;
   std::optional<double> opacity;  ///< product of the opacity of the element and its groups
-  Affine ctm;  ///< maps the element's user space to the root's
+  Affine ctm;                     ///< maps the element's user space to the root's
 };
 
 /// An element's geometry before flattening, in its own user space.
@@ -246,8 +246,8 @@ class Reader {
   /// which holds the parent's values on entry, and composes its transform.
   /// Returns false for display:none.
   bool apply_element_style(const pugi::xml_node& node, InheritedStyle& style) const {
-    static const char* const kProperties[] = {"stroke", "fill", "stroke-dasharray", "color",
-                                              "display", "stroke-opacity", "opacity"};
+    static const char* const kProperties[] = {
+        "stroke", "fill", "stroke-dasharray", "color", "display", "stroke-opacity", "opacity"};
     std::map<std::string, std::string> own;
     for (const char* name : kProperties)
       if (const pugi::xml_attribute attribute = node.attribute(name)) own[name] = attribute.value();
@@ -272,10 +272,12 @@ class Reader {
     inherit("stroke-opacity", style.stroke_opacity);
     const auto opacity = own.find("opacity");
     if (opacity != own.end()) {
-      const double value = guarded(node, "opacity", [&] { return svg::parse_opacity(opacity->second); });
+      const double value =
+          guarded(node, "opacity", [&] { return svg::parse_opacity(opacity->second); });
       style.opacity = style.opacity.value_or(1.0) * value;
     }
-    for (auto [name, slot] : {std::pair{"data-fold", &style.data_fold}, std::pair{"data-angle", &style.data_angle}})
+    for (auto [name, slot] :
+         {std::pair{"data-fold", &style.data_fold}, std::pair{"data-angle", &style.data_angle}})
       if (const pugi::xml_attribute attribute = node.attribute(name)) *slot = attribute.value();
 
     if (const pugi::xml_attribute transform = node.attribute("transform")) {
@@ -358,9 +360,9 @@ class Reader {
     shape.meta.dash_dot = is_dash_dot(dashes);
     if (style.opacity || style.stroke_opacity) {
       const double stroke_opacity =
-          style.stroke_opacity
-              ? guarded(node, "stroke-opacity", [&] { return svg::parse_opacity(*style.stroke_opacity); })
-              : 1.0;
+          style.stroke_opacity ? guarded(node, "stroke-opacity",
+                                         [&] { return svg::parse_opacity(*style.stroke_opacity); })
+                               : 1.0;
       shape.meta.opacity = style.opacity.value_or(1.0) * stroke_opacity;
     }
     shape.meta.data_fold = style.data_fold;

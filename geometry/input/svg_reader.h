@@ -65,7 +65,7 @@ namespace sdog {
 struct SvgCurve {
   std::vector<Eigen::Vector2d> points;  ///< flattened, y up; consecutive duplicates removed
   bool closed = false;       ///< closed by Z, or a polygon/rect/circle/ellipse (last != first)
-  std::string colour;         ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
+  std::string colour;        ///< resolved stroke (or fill) colour as "#rrggbb" in lower case
   bool is_boundary = false;  ///< colour is exactly black (#000000)
   bool dashed = false;       ///< stroke-dasharray set and not "none"
   /// Dashed, with dashes of different lengths (the longest at least twice the shortest).
@@ -75,10 +75,10 @@ struct SvgCurve {
   std::optional<double> opacity;
   /// data-fold and data-angle of the element or its nearest group that has them.
   std::optional<std::string> data_fold, data_angle;
-  std::string element;       ///< tag name, e.g. "path"
-  std::string id;            ///< the element's id attribute, or empty
-  int line = 0;              ///< line of the element in the file (1-based), 0 if unknown
-  int subpath = 0;           ///< index of the subpath inside a <path> (each M starts a new one)
+  std::string element;  ///< tag name, e.g. "path"
+  std::string id;       ///< the element's id attribute, or empty
+  int line = 0;         ///< line of the element in the file (1-based), 0 if unknown
+  int subpath = 0;      ///< index of the subpath inside a <path> (each M starts a new one)
 };
 
 struct SvgDrawing {

@@ -508,11 +508,14 @@ double parse_opacity(std::string_view text) {
   std::size_t pos = 0;
   double v = 0;
   if (scan_number(value, pos, v) != NumberScan::kOk)
-    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) + "'");
+    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) +
+                       "'");
   const std::string_view rest = trim(value.substr(pos));
-  if (rest == "%") v /= 100;
+  if (rest == "%")
+    v /= 100;
   else if (!rest.empty())
-    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) + "'");
+    throw ElementError("expected an opacity (a number from 0 to 1), found '" + std::string(value) +
+                       "'");
   return std::clamp(v, 0.0, 1.0);
 }
 

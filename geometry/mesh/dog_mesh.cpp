@@ -85,8 +85,9 @@ void add_patch(int p, const std::vector<int>& cells, int nx, DogMesh& mesh,
 // The grid vertex that crease points a and b (consecutive along a crease, between the same two
 // patches, each strictly inside a grid edge) both lie within kVertexCreaseDistance of, as an
 // on-vertex point, if there is one and the nesting allows it (build_dog_mesh).
-std::optional<GridEdgePoint> shared_vertex(const PatchLayout::CreasePoint& a, const PatchLayout::CreasePoint& b,
-                                           const DogMesh& mesh, int coarse_step) {
+std::optional<GridEdgePoint> shared_vertex(const PatchLayout::CreasePoint& a,
+                                           const PatchLayout::CreasePoint& b, const DogMesh& mesh,
+                                           int coarse_step) {
   if (a.edge.on_vertex() || b.edge.on_vertex() || a.patches.size() != 2 || a.patches != b.patches)
     return std::nullopt;
   const Eigen::Vector2i ends_a[2] = {{a.edge.i0, a.edge.j0}, {a.edge.i1, a.edge.j1}};
@@ -109,8 +110,8 @@ std::optional<GridEdgePoint> shared_vertex(const PatchLayout::CreasePoint& a, co
 // it (build_dog_mesh): the vertex points are appended to `points`, `taken` marks the points left
 // out, and the curves refer to the points that stay.
 void merge_close_points(const PatchLayout& layout, const DogMesh& mesh, int coarse_step,
-                        std::vector<PatchLayout::CreasePoint>& points, std::vector<PatchLayout::Curve>& curves,
-                        std::vector<bool>& taken) {
+                        std::vector<PatchLayout::CreasePoint>& points,
+                        std::vector<PatchLayout::Curve>& curves, std::vector<bool>& taken) {
   points = layout.points;
   curves = layout.curves;
   taken.assign(points.size(), false);
@@ -124,8 +125,9 @@ void merge_close_points(const PatchLayout& layout, const DogMesh& mesh, int coar
   // taken as its middle point.
   auto same_place = [&](int a, int b) {
     const auto &p = points[a], &q = points[b];
-    return uses[a] == 1 && uses[b] == 1 && !p.edge.on_vertex() && p.patches.size() == 2 && p.patches == q.patches &&
-           p.edge.i0 == q.edge.i0 && p.edge.j0 == q.edge.j0 && p.edge.i1 == q.edge.i1 && p.edge.j1 == q.edge.j1 &&
+    return uses[a] == 1 && uses[b] == 1 && !p.edge.on_vertex() && p.patches.size() == 2 &&
+           p.patches == q.patches && p.edge.i0 == q.edge.i0 && p.edge.j0 == q.edge.j0 &&
+           p.edge.i1 == q.edge.i1 && p.edge.j1 == q.edge.j1 &&
            (mesh.to_mesh(p.position) - mesh.to_mesh(q.position)).norm() < kVertexCreaseDistance;
   };
   for (auto& c : curves) {
@@ -244,10 +246,12 @@ DogMesh build_dog_mesh(const PatchLayout& layout, const Eigen::Vector2d& sheet_o
   for (const auto& piece : layout.pieces) {
     const auto& cells = patch_cells[piece.patch];
     const auto at = std::lower_bound(cells.begin(), cells.end(), piece.cell) - cells.begin();
-    mesh.quad_pieces.push_back({mesh.quad_patch_begin[piece.patch] + static_cast<int>(at), piece.uv});
+    mesh.quad_pieces.push_back(
+        {mesh.quad_patch_begin[piece.patch] + static_cast<int>(at), piece.uv});
   }
-  std::stable_sort(mesh.quad_pieces.begin(), mesh.quad_pieces.end(),
-                   [](const DogMesh::QuadPiece& a, const DogMesh::QuadPiece& b) { return a.quad < b.quad; });
+  std::stable_sort(
+      mesh.quad_pieces.begin(), mesh.quad_pieces.end(),
+      [](const DogMesh::QuadPiece& a, const DogMesh::QuadPiece& b) { return a.quad < b.quad; });
   return mesh;
 }
 

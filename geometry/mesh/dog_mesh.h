@@ -41,7 +41,8 @@ struct CreaseStitching {
   struct Curve {
     std::vector<int> points;  ///< crease points in order along the crease
     bool closed = false;
-    Fold fold = Fold::kUnassigned;  ///< the cleaned crease's assignment and angle (crease_pattern.h)
+    Fold fold =
+        Fold::kUnassigned;  ///< the cleaned crease's assignment and angle (crease_pattern.h)
     std::optional<double> angle;
     std::string id;  ///< its element id
   };
@@ -67,8 +68,8 @@ struct DogMesh {
   /// The quads whose cell a crease or the boundary cuts, with the part of the cell that belongs to
   /// their patch: a convex polygon, counter-clockwise, in the quad's cell coordinates (u, v) in
   /// [0, 1]^2 from F(q, 0) towards F(q, 1) and F(q, 3) (PatchLayout::CellPiece). A quad may have
-  /// several pieces, or one without points (none of its cell lies in the patch); quads not listed lie
-  /// wholly in their patch. Sorted by quad.
+  /// several pieces, or one without points (none of its cell lies in the patch); quads not listed
+  /// lie wholly in their patch. Sorted by quad.
   struct QuadPiece {
     int quad = 0;
     std::vector<Eigen::Vector2d> uv;

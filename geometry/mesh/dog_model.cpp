@@ -50,10 +50,11 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   m.clean = clean_pattern(pattern, options.cleaning);
   m.expected_patches = count_pattern_patches(m.clean);
   if (const int k = first_non_separating_crease(m.clean); k >= 0)
-    throw InputError("crease " + std::to_string(k) + " (" + m.clean.creases[k].origin +
-                     ") does not separate the sheet: the same piece of paper lies on both of its sides (as for "
-                     "a crease from the outer boundary to a hole), and a DOG patch cannot fold along a crease "
-                     "inside it; extend the crease so that it divides the sheet, or remove it");
+    throw InputError(
+        "crease " + std::to_string(k) + " (" + m.clean.creases[k].origin +
+        ") does not separate the sheet: the same piece of paper lies on both of its sides (as for "
+        "a crease from the outer boundary to a hole), and a DOG patch cannot fold along a crease "
+        "inside it; extend the crease so that it divides the sheet, or remove it");
   m.fine_res = res;
 
   const Box2& b = m.clean.sheet.bbox;
@@ -104,7 +105,8 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
 std::vector<std::string> model_warnings(const DogModel& model) {
   std::vector<std::string> warnings = model.clean.warnings;
   const auto& box = model.pattern.sheet.bbox;
-  if (std::string grid = cell_shape_warning(model.fine_res, box.width(), box.height()); !grid.empty())
+  if (std::string grid = cell_shape_warning(model.fine_res, box.width(), box.height());
+      !grid.empty())
     warnings.push_back(std::move(grid));
   // A crease that crosses no grid edge between two patches runs along grid lines (or from vertex
   // to vertex): it has no fold site, so nothing folds it and nothing measures its angle.
@@ -116,20 +118,23 @@ std::vector<std::string> model_warnings(const DogModel& model) {
       return copies.size() == 2 && copies[0].v1 != copies[0].v2;
     });
     if (!crosses && st.curves[k].fold != Fold::kFlat)
-      warnings.push_back("crease " + std::to_string(k) + " (" + model.clean.creases[k].origin + ") runs along grid lines at " +
-                         model.fine_res.str() +
-                         " and crosses no grid edge: it has no fold site, so the fold scenario cannot fold it "
-                         "and creases.csv has no angle for it (another resolution moves the grid lines off it)");
+      warnings.push_back(
+          "crease " + std::to_string(k) + " (" + model.clean.creases[k].origin +
+          ") runs along grid lines at " + model.fine_res.str() +
+          " and crosses no grid edge: it has no fold site, so the fold scenario cannot fold it "
+          "and creases.csv has no angle for it (another resolution moves the grid lines off it)");
   }
   for (const FoldTip& tip : fold_tips(model.clean)) {
     const auto& c = model.clean.creases;
-    warnings.push_back("creases " + std::to_string(tip.creases[0]) + " (" + c[tip.creases[0]].origin + ") and " +
-                       std::to_string(tip.creases[1]) + " (" + c[tip.creases[1]].origin + ") end together at " +
-                       format_point(tip.point) + " inside the sheet, at " + format_number(std::round(tip.angle_degrees)) +
-                       " degrees to each other: a sheet that bends smoothly cannot keep a fold up to such a point "
-                       "(around it the sheet would be a cone), so their folds fade there; fold sites within " +
-                       format_number(kFoldTipRadius) +
-                       " grid edges of it may bend less than asked or the other way and are counted apart");
+    warnings.push_back(
+        "creases " + std::to_string(tip.creases[0]) + " (" + c[tip.creases[0]].origin + ") and " +
+        std::to_string(tip.creases[1]) + " (" + c[tip.creases[1]].origin + ") end together at " +
+        format_point(tip.point) + " inside the sheet, at " +
+        format_number(std::round(tip.angle_degrees)) +
+        " degrees to each other: a sheet that bends smoothly cannot keep a fold up to such a point "
+        "(around it the sheet would be a cone), so their folds fade there; fold sites within " +
+        format_number(kFoldTipRadius) +
+        " grid edges of it may bend less than asked or the other way and are counted apart");
   }
   return warnings;
 }

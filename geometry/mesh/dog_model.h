@@ -3,12 +3,12 @@
 // them: the whole geometry pipeline in one call.
 #include <optional>
 
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/dog_mesh.h"
 #include "geometry/mesh/fine_coarse_map.h"
 #include "geometry/mesh/grid.h"
-#include "geometry/pattern/pattern_cleaning.h"
 #include "geometry/mesh/quad_topology.h"
+#include "geometry/pattern/crease_pattern.h"
+#include "geometry/pattern/pattern_cleaning.h"
 
 namespace sdog {
 

@@ -65,7 +65,8 @@ int cover_fine_patches(PatchLayout& coarse, const PatchLayout& fine) {
     owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
     added += static_cast<int>(owners.size() - own);
     for (int p : owners)  // an added owner has no part of the coarse cell: an empty piece
-      if (!std::binary_search(coarse.owners(cell), coarse.owners(cell) + own, p)) coarse.pieces.push_back({cell, p, {}});
+      if (!std::binary_search(coarse.owners(cell), coarse.owners(cell) + own, p))
+        coarse.pieces.push_back({cell, p, {}});
     patches.insert(patches.end(), owners.begin(), owners.end());
     offsets.push_back(static_cast<int>(patches.size()));
   }

@@ -37,8 +37,9 @@ Resolution parse_resolution(const std::string& text) {
 Resolution resolve_resolution(const std::string& text, double width, double height) {
   if (text != "auto") return parse_resolution(text);
   const int longer = 41;
-  const int shorter =
-      std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(width, height) / std::max(width, height))) + 1);
+  const int shorter = std::max(3, 2 * static_cast<int>(std::lround(20.0 * std::min(width, height) /
+                                                                   std::max(width, height))) +
+                                      1);
   return width >= height ? Resolution{longer, shorter} : Resolution{shorter, longer};
 }
 
@@ -55,8 +56,8 @@ std::string cell_shape_warning(const Resolution& res, double width, double heigh
   const Resolution square = res.nx >= res.ny ? Resolution{res.nx, lines_for(res.nx, width, height)}
                                              : Resolution{lines_for(res.ny, height, width), res.ny};
   return "grid cells are " + format_number(std::round(aspect * 10) / 10) + " times as " +
-         (cell_h > cell_w ? "tall as wide" : "wide as tall") + " (" + res.str() + " on a sheet of " +
-         format_number(width) + " x " + format_number(height) +
+         (cell_h > cell_w ? "tall as wide" : "wide as tall") + " (" + res.str() +
+         " on a sheet of " + format_number(width) + " x " + format_number(height) +
          "): folds are smoothest on nearly square cells, which " + square.str() + " gives";
 }
 

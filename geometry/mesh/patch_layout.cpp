@@ -301,7 +301,8 @@ CellCuts cut_cells(const Grid& grid, const std::vector<Traits::Curve_2>& segs) {
 
 // The convex pieces into which the chords split cell (i, j), counter-clockwise, sorted by the
 // position of their vertex average: by y, then x.
-std::vector<Poly> cell_pieces(const Grid& grid, int i, int j, const std::vector<std::pair<Point, Point>>& chords) {
+std::vector<Poly> cell_pieces(const Grid& grid, int i, int j,
+                              const std::vector<std::pair<Point, Point>>& chords) {
   std::vector<Poly> pieces{{Point(grid.X[i], grid.Y[j]), Point(grid.X[i + 1], grid.Y[j]),
                             Point(grid.X[i + 1], grid.Y[j + 1]), Point(grid.X[i], grid.Y[j + 1])}};
   for (const auto& [p, q] : chords) {
@@ -329,7 +330,9 @@ std::vector<Poly> cell_pieces(const Grid& grid, int i, int j, const std::vector<
 std::vector<Eigen::Vector2d> cell_coordinates(const Grid& grid, int i, int j, const Poly& piece) {
   std::vector<Eigen::Vector2d> uv;
   const FT w = grid.X[i + 1] - grid.X[i], h = grid.Y[j + 1] - grid.Y[j];
-  for (const auto& p : piece) uv.emplace_back(CGAL::to_double((p.x() - grid.X[i]) / w), CGAL::to_double((p.y() - grid.Y[j]) / h));
+  for (const auto& p : piece)
+    uv.emplace_back(CGAL::to_double((p.x() - grid.X[i]) / w),
+                    CGAL::to_double((p.y() - grid.Y[j]) / h));
   return uv;
 }
 
@@ -398,8 +401,9 @@ using FacePatches = std::unordered_map<const void*, int>;
 
 // Locates the queries and fills the owners of every cell; faces inside the sheet become patches
 // in the order in which the cells meet them. Returns the patch of each face met.
-FacePatches assign_cells(const Arrangement& arr, const Grid& grid, const CellCuts& cuts, const CellQueries& q,
-                         const std::vector<Poly>& loops, PatchLayout& layout) {
+FacePatches assign_cells(const Arrangement& arr, const Grid& grid, const CellCuts& cuts,
+                         const CellQueries& q, const std::vector<Poly>& loops,
+                         PatchLayout& layout) {
   const auto faces = locate_faces(arr, q.points);
   FacePatches patch_of_face;
   auto patch_of_query = [&](int query) {
@@ -424,7 +428,8 @@ FacePatches assign_cells(const Arrangement& arr, const Grid& grid, const CellCut
         const int p = patch_of_query(q.of_pieces[cell][k]);
         if (p < 0) continue;
         owners.push_back(p);
-        layout.pieces.push_back({cell, p, cell_coordinates(grid, cell % ncx, cell / ncx, q.pieces[cell][k])});
+        layout.pieces.push_back(
+            {cell, p, cell_coordinates(grid, cell % ncx, cell / ncx, q.pieces[cell][k])});
       }
     } else {
       int& p = component_patch[q.component[cell]];

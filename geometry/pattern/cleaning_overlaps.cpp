@@ -54,7 +54,8 @@ class SegmentIndex {
   };
   long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
   static unsigned long long cell_key(long i, long j) {
-    return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(j) & 0xffffffffULL);
+    return (static_cast<unsigned long long>(i) << 32) ^
+           (static_cast<unsigned long long>(j) & 0xffffffffULL);
   }
   double cell_, tol_;
   std::vector<Segment> segments_;
@@ -67,7 +68,8 @@ std::vector<int> common_owners(const SegmentIndex& index, const Vec2& a, const V
   for (const Vec2& p : {Vec2(0.5 * (a + b)), b}) {
     const std::vector<int> near = index.owners_near(p);
     std::vector<int> both;
-    std::set_intersection(owners.begin(), owners.end(), near.begin(), near.end(), std::back_inserter(both));
+    std::set_intersection(owners.begin(), owners.end(), near.begin(), near.end(),
+                          std::back_inserter(both));
     owners = std::move(both);
   }
   return owners;
@@ -81,7 +83,8 @@ void Cleaner::drop_overlapping_segments() {
   constexpr int kBoundary = -1;
   SegmentIndex index(L / kCellsPerSide, tol);
   for (const auto& loop : loops_)
-    for (size_t i = 0; i < loop.size(); ++i) index.add(kBoundary, loop[i], loop[(i + 1) % loop.size()]);
+    for (size_t i = 0; i < loop.size(); ++i)
+      index.add(kBoundary, loop[i], loop[(i + 1) % loop.size()]);
   std::vector<Crease> kept;
   for (int k = 0; k < static_cast<int>(creases_.size()); ++k) {
     const Crease& crease = creases_[k];
@@ -94,8 +97,10 @@ void Cleaner::drop_overlapping_segments() {
       const std::vector<int> owners = common_owners(index, pts[i], pts[(i + 1) % pts.size()]);
       if (owners.empty()) continue;
       drop[i] = true;
-      if (owners.front() == kBoundary) ++along_boundary;
-      else duplicated.push_back(owners.front());
+      if (owners.front() == kBoundary)
+        ++along_boundary;
+      else
+        duplicated.push_back(owners.front());
     }
     for (int i = 0; i < segments; ++i) index.add(k, pts[i], pts[(i + 1) % pts.size()]);
     if (std::none_of(drop.begin(), drop.end(), [](bool d) { return d; })) {
@@ -110,7 +115,8 @@ void Cleaner::drop_overlapping_segments() {
     for (int j : duplicated) {
       std::string what = name(k) + " is drawn again along " + name(j) + "; merged into it";
       if (!creases_[j].folds_like(crease))
-        what += " (its assignment " + std::string(enum_name(crease.fold)) + " dropped for " + enum_name(creases_[j].fold) + ")";
+        what += " (its assignment " + std::string(enum_name(crease.fold)) + " dropped for " +
+                enum_name(creases_[j].fold) + ")";
       warn(what);
     }
     // The runs of kept segments become creases (a closed crease starts after a dropped segment).

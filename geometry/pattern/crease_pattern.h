@@ -1,7 +1,7 @@
 #pragma once
 // A crease pattern as drawn: the sheet (outer boundary with holes) and the crease curves with their
-// fold assignments, in sheet units (y up). The readers of geometry/input/ build it from SVG drawings
-// and FOLD files (geometry/input/pattern_file.h loads either).
+// fold assignments, in sheet units (y up). The readers of geometry/input/ build it from SVG
+// drawings and FOLD files (geometry/input/pattern_file.h loads either).
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -35,7 +35,8 @@ struct Crease {
   /// The fold angle the drawing gives, in degrees, 0 to 180 (its direction is `fold`'s); unset
   /// when the drawing gives none.
   std::optional<double> angle;
-  std::string id;      ///< the drawn element's id (SVG: its id attribute; FOLD: "edge N" of its first edge), or empty
+  std::string id;  ///< the drawn element's id (SVG: its id attribute; FOLD: "edge N" of its first
+                   ///< edge), or empty
   std::string origin;  ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
   /// Same assignment and angle: creases that may be joined into one.
   bool folds_like(const Crease& other) const { return fold == other.fold && angle == other.angle; }
@@ -51,7 +52,7 @@ struct Sheet {
 struct CreasePattern {
   std::string source;  ///< file name, for messages
   Sheet sheet;
-  std::vector<Crease> creases;  ///< drawing order
+  std::vector<Crease> creases;        ///< drawing order
   std::vector<std::string> warnings;  ///< what reading left out, one line each
   /// L = max(width, height) of the sheet: the length all tolerances are relative to.
   double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }

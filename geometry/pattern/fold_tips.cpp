@@ -7,7 +7,8 @@ namespace sdog {
 namespace {
 
 // Where crease c touches the point q: 0 not at all, 1 one of its ends, 2 passes through (an inner
-// vertex, or any vertex of a closed crease). `away` gets the unit direction from q along the crease.
+// vertex, or any vertex of a closed crease). `away` gets the unit direction from q along the
+// crease.
 int touch(const Crease& c, const Eigen::Vector2d& q, Eigen::Vector2d& away) {
   const auto& pts = c.points;
   const int n = static_cast<int>(pts.size());
@@ -41,7 +42,9 @@ std::vector<FoldTip> fold_tips(const CleanPattern& pattern) {
       }
     }
     if (passes || ends.size() != 2) continue;
-    if (pattern.creases[ends[0]].fold == Fold::kFlat && pattern.creases[ends[1]].fold == Fold::kFlat) continue;
+    if (pattern.creases[ends[0]].fold == Fold::kFlat &&
+        pattern.creases[ends[1]].fold == Fold::kFlat)
+      continue;
     const double angle = std::acos(std::clamp(dirs[0].dot(dirs[1]), -1.0, 1.0)) * 180 / M_PI;
     if (angle >= 180 - kStraightCreaseDegrees) continue;
     tips.push_back({q, {ends[0], ends[1]}, angle});

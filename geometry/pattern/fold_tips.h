@@ -22,13 +22,14 @@ constexpr double kStraightCreaseDegrees = 5;
 
 /// Fold sites closer than this to a fold tip (mesh units: grid edges) are counted apart when folds
 /// are compared with their targets. On DOGs folded at 41x41 and 61x61 the sites that bend the other
-/// way next to a fold tip lie within 5.2 grid edges of it (docs/design/standard-solver.md#fold-tips).
+/// way next to a fold tip lie within 5.2 grid edges of it
+/// (docs/design/standard-solver.md#fold-tips).
 constexpr double kFoldTipRadius = 6;
 
 struct FoldTip {
   Eigen::Vector2d point;       ///< sheet units
   std::array<int, 2> creases;  ///< the cleaned creases that end there, ascending
-  double angle_degrees = 0;    ///< between the two creases' directions away from the tip, in (0, 180)
+  double angle_degrees = 0;  ///< between the two creases' directions away from the tip, in (0, 180)
 };
 
 /// The fold tips of a cleaned pattern (creases that are both flat make none), in junction order.

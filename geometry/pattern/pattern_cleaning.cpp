@@ -23,7 +23,10 @@ std::string CleaningOptions::validate() const {
 namespace cleaning {
 
 Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
-    : source_(pattern.source), sheet_(pattern.sheet), creases_(pattern.creases), warnings_(pattern.warnings) {
+    : source_(pattern.source),
+      sheet_(pattern.sheet),
+      creases_(pattern.creases),
+      warnings_(pattern.warnings) {
   const double L = pattern.size();
   merge_tol_ = options.merge_fraction * L;
   snap_tol_ = options.snap_fraction * L;

@@ -39,7 +39,7 @@ struct CleanPattern {
   /// Points that must be grid vertices: junctions, and crease ends on parts of the boundary that
   /// are not on the sheet's bounding box (those lie on a grid line already).
   std::vector<Eigen::Vector2d> pins;
-  std::vector<std::string> changes;   ///< what cleaning changed, one line each
+  std::vector<std::string> changes;  ///< what cleaning changed, one line each
   /// What reading and cleaning dropped or merged from the drawing, one line each: facet lines,
   /// creases drawn along the boundary or twice.
   std::vector<std::string> warnings;

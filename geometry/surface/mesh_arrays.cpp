@@ -4,6 +4,12 @@
 
 namespace sdog {
 
+NamedArray quad_patch(const DogMesh& mesh) {
+  NamedArray a{"patch", {}, true};
+  for (int q = 0; q < mesh.quad_count(); ++q) a.values.push_back(mesh.vertex_patch[mesh.F(q, 0)]);
+  return a;
+}
+
 const NamedArray* MeshArrays::find_point(const std::string& name) const {
   for (const auto& a : point)
     if (a.name == name) return &a;
@@ -17,12 +23,6 @@ NamedArray integral_array(const std::string& name, const std::vector<T>& values)
   NamedArray a{name, {}, true};
   a.values.reserve(values.size());
   for (const auto& v : values) a.values.push_back(static_cast<double>(v));
-  return a;
-}
-
-NamedArray quad_patch(const DogMesh& mesh) {
-  NamedArray a{"patch", {}, true};
-  for (int q = 0; q < mesh.quad_count(); ++q) a.values.push_back(mesh.vertex_patch[mesh.F(q, 0)]);
   return a;
 }
 

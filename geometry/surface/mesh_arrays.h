@@ -18,7 +18,11 @@ struct MeshArrays {
   const NamedArray* find_point(const std::string& name) const;
 };
 
+struct DogMesh;
 struct DogModel;
+
+/// The cell array "patch": the patch of each quad of the mesh.
+NamedArray quad_patch(const DogMesh& mesh);
 
 /// Fine mesh arrays: vertex_type (link 0, I 1, X 2), patch, partner (coarse twin or -1),
 /// vertex_class (star 0, bnd3 1, bnd2 2, bnd4 3); cell array patch.

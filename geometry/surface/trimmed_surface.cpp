@@ -41,7 +41,8 @@ std::vector<std::array<int, 3>> triangulate_convex(const std::vector<Eigen::Vect
     const size_t n = left.size();
     size_t ear = n;
     for (size_t k = 0; k < n && ear == n; ++k)
-      if (doubled_area(poly[left[(k + n - 1) % n]], poly[left[k]], poly[left[(k + 1) % n]]) > kFlat) ear = k;
+      if (doubled_area(poly[left[(k + n - 1) % n]], poly[left[k]], poly[left[(k + 1) % n]]) > kFlat)
+        ear = k;
     if (ear == n) break;  // what is left has no area
     triangles.push_back({left[(ear + n - 1) % n], left[ear], left[(ear + 1) % n]});
     left.erase(left.begin() + static_cast<std::ptrdiff_t>(ear));
@@ -116,7 +117,8 @@ TrimmedSurface trimmed_surface(const DogMesh& mesh, const Eigen::MatrixX3d& X) {
       builder.add_polygon(q, whole);
       continue;
     }
-    for (; piece != mesh.quad_pieces.end() && piece->quad == q; ++piece) builder.add_polygon(q, piece->uv);
+    for (; piece != mesh.quad_pieces.end() && piece->quad == q; ++piece)
+      builder.add_polygon(q, piece->uv);
   }
   TrimmedSurface surface = std::move(builder).finish();
   place_trimmed_surface(surface, X);
@@ -131,7 +133,8 @@ void place_trimmed_surface(TrimmedSurface& s, const Eigen::MatrixX3d& X) {
   s.N = Eigen::MatrixX3d::Zero(n, 3);
   for (Eigen::Index t = 0; t < s.T.rows(); ++t) {
     const Eigen::Vector3d a = s.V.row(s.T(t, 0)), b = s.V.row(s.T(t, 1)), c = s.V.row(s.T(t, 2));
-    const Eigen::RowVector3d area_normal = (b - a).cross(c - a).transpose();  // twice the area, as its length
+    const Eigen::RowVector3d area_normal =
+        (b - a).cross(c - a).transpose();  // twice the area, as its length
     for (int k = 0; k < 3; ++k) s.N.row(s.T(t, k)) += area_normal;
   }
   for (Eigen::Index r = 0; r < n; ++r) {
@@ -140,7 +143,8 @@ void place_trimmed_surface(TrimmedSurface& s, const Eigen::MatrixX3d& X) {
   }
 }
 
-std::vector<double> trimmed_point_values(const TrimmedSurface& s, const std::vector<double>& values, bool integral) {
+std::vector<double> trimmed_point_values(const TrimmedSurface& s, const std::vector<double>& values,
+                                         bool integral) {
   const Eigen::Index n = s.source.rows();
   std::vector<double> out(static_cast<size_t>(n));
   for (Eigen::Index r = 0; r < n; ++r) {
@@ -157,7 +161,8 @@ std::vector<double> trimmed_point_values(const TrimmedSurface& s, const std::vec
   return out;
 }
 
-std::vector<double> trimmed_cell_values(const TrimmedSurface& s, const std::vector<double>& values) {
+std::vector<double> trimmed_cell_values(const TrimmedSurface& s,
+                                        const std::vector<double>& values) {
   std::vector<double> out;
   out.reserve(s.triangle_quad.size());
   for (int q : s.triangle_quad) out.push_back(values[q]);
@@ -168,7 +173,8 @@ MeshArrays trimmed_arrays(const TrimmedSurface& s, const MeshArrays& mesh_arrays
   MeshArrays out;
   for (const auto& a : mesh_arrays.point)
     out.point.push_back({a.name, trimmed_point_values(s, a.values, a.integral), a.integral});
-  for (const auto& a : mesh_arrays.cell) out.cell.push_back({a.name, trimmed_cell_values(s, a.values), a.integral});
+  for (const auto& a : mesh_arrays.cell)
+    out.cell.push_back({a.name, trimmed_cell_values(s, a.values), a.integral});
   return out;
 }
 

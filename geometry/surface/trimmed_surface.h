@@ -19,11 +19,11 @@
 namespace sdog {
 
 struct TrimmedSurface {
-  Eigen::MatrixX3d V;               ///< positions
-  Eigen::MatrixX3d N;               ///< unit vertex normals (area-weighted over the patch's triangles)
-  Eigen::MatrixX3i T;               ///< triangles, counter-clockwise seen from +z at rest
-  std::vector<int> triangle_quad;   ///< the quad each triangle lies in
-  std::vector<int> vertex_patch;    ///< the patch of each vertex
+  Eigen::MatrixX3d V;  ///< positions
+  Eigen::MatrixX3d N;  ///< unit vertex normals (area-weighted over the patch's triangles)
+  Eigen::MatrixX3i T;  ///< triangles, counter-clockwise seen from +z at rest
+  std::vector<int> triangle_quad;  ///< the quad each triangle lies in
+  std::vector<int> vertex_patch;   ///< the patch of each vertex
   /// Vertex r is sum_k weight(r, k) * X(source(r, k)) (bilinear in its quad; unused entries have
   /// weight 0).
   Eigen::MatrixX4i source;
@@ -41,10 +41,11 @@ void place_trimmed_surface(TrimmedSurface& surface, const Eigen::MatrixX3d& X);
 
 /// One per-vertex array of the mesh at the surface's vertices: interpolated with the vertices'
 /// weights, or (integral) the value of the source with the largest weight.
-std::vector<double> trimmed_point_values(const TrimmedSurface& surface, const std::vector<double>& values,
-                                         bool integral = false);
+std::vector<double> trimmed_point_values(const TrimmedSurface& surface,
+                                         const std::vector<double>& values, bool integral = false);
 /// One per-quad array of the mesh on the surface's triangles (each its quad's value).
-std::vector<double> trimmed_cell_values(const TrimmedSurface& surface, const std::vector<double>& values);
+std::vector<double> trimmed_cell_values(const TrimmedSurface& surface,
+                                        const std::vector<double>& values);
 
 /// The mesh's arrays carried over to the surface: a point array interpolated with the vertices'
 /// weights (an integral one takes the value of the source with the largest weight), a cell array

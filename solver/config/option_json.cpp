@@ -10,14 +10,16 @@ constexpr long long kLargestInteger = 100000000;
 
 }  // namespace
 
-double read_option_value(const Field& f, OptionType type, const Bounds& bounds, const std::vector<std::string>& choices) {
+double read_option_value(const Field& f, OptionType type, const Bounds& bounds,
+                         const std::vector<std::string>& choices) {
   switch (type) {
     case OptionType::kBoolean:
       return f.boolean() ? 1 : 0;
     case OptionType::kChoice: {
       const std::string text = f.text();
       const auto it = std::find(choices.begin(), choices.end(), text);
-      if (it == choices.end()) f.fail("expected one of " + join(choices, ", ") + ", got \"" + text + "\"");
+      if (it == choices.end())
+        f.fail("expected one of " + join(choices, ", ") + ", got \"" + text + "\"");
       return static_cast<double>(it - choices.begin());
     }
     case OptionType::kInteger: {
@@ -31,12 +33,14 @@ double read_option_value(const Field& f, OptionType type, const Bounds& bounds, 
       break;
   }
   const double d = f.number();
-  if (!bounds.contains(d)) f.fail("expected a number " + bounds.symbols() + ", got " + format_number(d));
+  if (!bounds.contains(d))
+    f.fail("expected a number " + bounds.symbols() + ", got " + format_number(d));
   return d;
 }
 
 nlohmann::json option_value_json(OptionType type, const std::optional<double>& value,
-                                 const std::vector<std::string>& choices, const std::string& unset) {
+                                 const std::vector<std::string>& choices,
+                                 const std::string& unset) {
   if (!value) return unset;
   switch (type) {
     case OptionType::kBoolean:

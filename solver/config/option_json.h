@@ -19,7 +19,8 @@ std::vector<std::string> option_keys(const OptionTable<S>& table) {
 }
 
 /// The value of one option from JSON, checked against its type and bounds.
-double read_option_value(const Field& f, OptionType type, const Bounds& bounds, const std::vector<std::string>& choices);
+double read_option_value(const Field& f, OptionType type, const Bounds& bounds,
+                         const std::vector<std::string>& choices);
 /// One option's value as JSON: a number, an integer, true/false, a choice's name, or the `unset`
 /// text of an optional value that is not set.
 nlohmann::json option_value_json(OptionType type, const std::optional<double>& value,
@@ -43,7 +44,8 @@ void read_options(const Field& f, const OptionTable<S>& table, S& s) {
 template <class S>
 nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
   nlohmann::json j = nlohmann::json::object();
-  for (const Option<S>& o : table) j[o.key] = option_value_json(o.type, o.get(s), o.choices, o.unset);
+  for (const Option<S>& o : table)
+    j[o.key] = option_value_json(o.type, o.get(s), o.choices, o.unset);
   return j;
 }
 

@@ -6,7 +6,8 @@
 namespace sdog {
 namespace {
 
-std::string value_text(OptionType type, const Bounds& bounds, const std::vector<std::string>& choices) {
+std::string value_text(OptionType type, const Bounds& bounds,
+                       const std::vector<std::string>& choices) {
   switch (type) {
     case OptionType::kBoolean:
       return "true or false";
@@ -20,8 +21,8 @@ std::string value_text(OptionType type, const Bounds& bounds, const std::vector<
   return "number " + bounds.symbols();
 }
 
-std::string default_text(OptionType type, const std::optional<double>& v, const std::vector<std::string>& choices,
-                         const std::string& unset) {
+std::string default_text(OptionType type, const std::optional<double>& v,
+                         const std::vector<std::string>& choices, const std::string& unset) {
   if (!v) return unset;
   switch (type) {
     case OptionType::kBoolean:
@@ -37,10 +38,12 @@ std::string default_text(OptionType type, const std::optional<double>& v, const 
 
 template <class S>
 std::string table(const std::string& title, const OptionTable<S>& options, const S& defaults) {
-  std::string out = "\n## " + title + "\n\n| key | value | default | meaning |\n|---|---|---|---|\n";
+  std::string out =
+      "\n## " + title + "\n\n| key | value | default | meaning |\n|---|---|---|---|\n";
   for (const Option<S>& o : options)
     out += "| `" + o.key + "` | " + value_text(o.type, o.bounds, o.choices) + " | `" +
-           default_text(o.type, o.get(defaults), o.choices, o.unset) + "` | " + markdown_cell(o.help) + " |\n";
+           default_text(o.type, o.get(defaults), o.choices, o.unset) + "` | " +
+           markdown_cell(o.help) + " |\n";
   return out;
 }
 

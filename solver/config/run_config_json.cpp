@@ -15,8 +15,10 @@ PositionSpec position_spec(const Field& f) {
   f.expect_object({"vertex", "near", "start", "end", "move"});
   PositionSpec p;
   p.path = f.where();
-  if (f.has("vertex") == f.has("near")) f.fail("give exactly one of \"vertex\" (an index) and \"near\" ([x, y] in sheet units)");
-  if (f.has("end") == f.has("move")) f.fail("give exactly one of \"end\" ([x, y, z]) and \"move\" ([dx, dy, dz])");
+  if (f.has("vertex") == f.has("near"))
+    f.fail("give exactly one of \"vertex\" (an index) and \"near\" ([x, y] in sheet units)");
+  if (f.has("end") == f.has("move"))
+    f.fail("give exactly one of \"end\" ([x, y, z]) and \"move\" ([dx, dy, dz])");
   if (f.has("vertex")) p.vertex = f["vertex"].integer(0);
   if (f.has("near")) p.near = f["near"].vector<2>();
   if (f.has("start")) p.start = f["start"].vector<3>();
@@ -30,8 +32,10 @@ AngleSpec angle_spec(const Field& f) {
   AngleSpec a;
   a.path = f.where();
   if (f.has("crease_point") + f.has("curve") + f.has("id") != 1)
-    f.fail("give exactly one of \"crease_point\" (an index), \"curve\" (a crease index) and \"id\" (a crease's SVG "
-           "element id)");
+    f.fail(
+        "give exactly one of \"crease_point\" (an index), \"curve\" (a crease index) and \"id\" (a "
+        "crease's SVG "
+        "element id)");
   if (!f.has("end")) f.fail("missing \"end\" (the final dihedral angle in degrees)");
   if (f.has("crease_point")) a.point = f["crease_point"].integer(0);
   if (f.has("curve")) a.curve = f["curve"].integer(0);
@@ -48,18 +52,24 @@ CreaseSetting crease_setting(const Field& f) {
   CreaseSetting c;
   c.path = f.where();
   if (f.has("curve") == f.has("id"))
-    f.fail("give exactly one of \"curve\" (a crease index, as sdog mesh lists them) and \"id\" (its SVG element id)");
-  if (!f.has("fold") && !f.has("angle")) f.fail("give \"fold\" (mountain, valley, flat or unassigned), \"angle\" or both");
+    f.fail(
+        "give exactly one of \"curve\" (a crease index, as sdog mesh lists them) and \"id\" (its "
+        "SVG element id)");
+  if (!f.has("fold") && !f.has("angle"))
+    f.fail("give \"fold\" (mountain, valley, flat or unassigned), \"angle\" or both");
   if (f.has("curve")) c.curve = f["curve"].integer(0);
   if (f.has("id")) c.id = f["id"].text();
   if (f.has("fold")) {
     c.fold = find_enum<Fold>(f["fold"].text());
-    if (!c.fold) f["fold"].fail("unknown assignment \"" + f["fold"].text() + "\" (mountain, valley, flat or unassigned)");
+    if (!c.fold)
+      f["fold"].fail("unknown assignment \"" + f["fold"].text() +
+                     "\" (mountain, valley, flat or unassigned)");
   }
   if (f.has("angle")) {
     c.angle = f["angle"].number();
     if (*c.angle < 0 || *c.angle > 180)
-      f["angle"].fail("the fold angle must be from 0 to 180 degrees (its direction is the assignment's)");
+      f["angle"].fail(
+          "the fold angle must be from 0 to 180 degrees (its direction is the assignment's)");
   }
   return c;
 }
@@ -69,7 +79,9 @@ ModeSwitch mode_switch(const Field& f) {
   if (!f.has("iteration") || !f.has("mode")) f.fail("give \"iteration\" (1-based) and \"mode\"");
   const int iteration = f["iteration"].integer(1);
   const std::optional<ModeKind> mode = find_enum<ModeKind>(f["mode"].text());
-  if (!mode) f["mode"].fail("unknown mode \"" + f["mode"].text() + "\" (known: " + known_names<ModeKind>() + ")");
+  if (!mode)
+    f["mode"].fail("unknown mode \"" + f["mode"].text() + "\" (known: " + known_names<ModeKind>() +
+                   ")");
   return {iteration, *mode};
 }
 
@@ -84,9 +96,8 @@ void read_list(const Field& root, const char* key, std::vector<T>& out, T (*read
 std::vector<std::string> top_level_keys() {
   std::vector<std::string> keys = option_keys(run_option_table());
   const RunConfig defaults;
-  for_each_option_section(defaults, [&](const char* key, const auto&, const auto&) {
-    keys.push_back(key);
-  });
+  for_each_option_section(defaults,
+                          [&](const char* key, const auto&, const auto&) { keys.push_back(key); });
   for (const char* key : {"positions", "angles", "creases", "switches"}) keys.push_back(key);
   return keys;
 }
@@ -162,7 +173,8 @@ json to_json(const RunConfig& c) {
     if (s.angle) e["angle"] = *s.angle;
     creases.push_back(e);
   }
-  for (const auto& s : c.switches) switches.push_back({{"iteration", s.iteration}, {"mode", enum_name(s.mode)}});
+  for (const auto& s : c.switches)
+    switches.push_back({{"iteration", s.iteration}, {"mode", enum_name(s.mode)}});
   j["positions"] = positions;
   j["angles"] = angles;
   j["creases"] = creases;

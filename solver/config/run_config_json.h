@@ -1,9 +1,9 @@
 #pragma once
-// The run configuration as JSON (`sdog run --config FILE.json`, run.json, workspaces). Every unknown
-// key and bad value is an InputError naming the file and the JSON path, e.g.
-// `run.json: $.positions[1].end: expected an array of 3 numbers`. The keys that hold one value
-// come from the option tables (base/option_table.h); docs/reference/configuration.md is rendered
-// from the same tables (reference.h).
+// The run configuration as JSON (`sdog run --config FILE.json`, run.json, workspaces). Every
+// unknown key and bad value is an InputError naming the file and the JSON path, e.g. `run.json:
+// $.positions[1].end: expected an array of 3 numbers`. The keys that hold one value come from the
+// option tables (base/option_table.h); docs/reference/configuration.md is rendered from the same
+// tables (reference.h).
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -57,7 +57,8 @@ CaseRuns start_case(const Case& c, bool record) {
   return runs;
 }
 
-void record_run(CaseResult& r, const RunSummary& s, const RunTotals& totals, SeriesRecorder& series) {
+void record_run(CaseResult& r, const RunSummary& s, const RunTotals& totals,
+                SeriesRecorder& series) {
   r.series = std::move(series.points);
   r.iterations = s.iterations;
   r.final_objective = s.last.diagnostics.objective;
@@ -67,13 +68,15 @@ void record_run(CaseResult& r, const RunSummary& s, const RunTotals& totals, Ser
   r.dog_max_run = std::max(r.dog_max_run, totals.worst_dog);
   r.round_ms.push_back(totals.median_window_ms());
   r.median_ms = median(r.round_ms);
-  r.round_total_s.push_back(std::accumulate(totals.iteration_ms.begin(), totals.iteration_ms.end(), 0.0) / 1000);
+  r.round_total_s.push_back(
+      std::accumulate(totals.iteration_ms.begin(), totals.iteration_ms.end(), 0.0) / 1000);
   r.total_s = median(r.round_total_s);
   r.window_work += totals.window_work;
   r.window_iterations += totals.window_iterations;
 }
 
-void run_once(CaseRuns& runs, const RunConfig& config, std::vector<RunObserver*> observers, bool record) {
+void run_once(CaseRuns& runs, const RunConfig& config, std::vector<RunObserver*> observers,
+              bool record) {
   CaseResult& r = runs.result;
   RunTotals totals;
   SeriesRecorder series;
@@ -90,7 +93,8 @@ void run_once(CaseRuns& runs, const RunConfig& config, std::vector<RunObserver*>
   }
   record_run(r, s, totals, series);
   if (!s.failed()) return;
-  if (!record) throw SolverError(r.pattern + " " + r.res + " " + enum_name(r.mode) + ": " + s.failure);
+  if (!record)
+    throw SolverError(r.pattern + " " + r.res + " " + enum_name(r.mode) + ": " + s.failure);
   r.status = CaseStatus::kFailed;
   r.note = s.failure;
   runs.stopped = true;
@@ -111,8 +115,10 @@ std::vector<CaseResult> run_rounds(const std::vector<Case>& cases, const RunConf
   for (int round = 0; round < std::max(1, options.repeat); ++round)
     for (size_t i = 0; i < cases.size(); ++i)
       if (!runs[i].stopped)
-        run_once(runs[i], config, options.observers ? options.observers(cases[i], round) : std::vector<RunObserver*>{},
-                 options.record_problems);
+        run_once(
+            runs[i], config,
+            options.observers ? options.observers(cases[i], round) : std::vector<RunObserver*>{},
+            options.record_problems);
   std::vector<CaseResult> results;
   for (auto& r : runs) results.push_back(std::move(r.result));
   relate_to_standard(results);
@@ -148,7 +154,9 @@ std::vector<Case> thesis_grid(const std::string& dir, ModeKind mode) {
   for (const auto& [name, resolutions] : grid) {
     const std::string path = dir + "/" + name + ".svg";
     if (!std::filesystem::exists(path))
-      throw InputError(path + ": thesis pattern not found (pass the folder of the thesis patterns with --patterns-dir)");
+      throw InputError(path +
+                       ": thesis pattern not found (pass the folder of the thesis patterns with "
+                       "--patterns-dir)");
     for (const char* res : resolutions) cases.push_back({path, res, mode});
   }
   return cases;

@@ -52,12 +52,12 @@ struct CaseResult {
   CaseStatus status = CaseStatus::kCompleted;
   std::string note;  ///< why a run failed or was skipped
   int vertices = 0, dof = 0;
-  int iterations = 0;          ///< completed iterations (of the last round)
-  double final_objective = 0;  ///< at the end of the last round
-  double dog_max = 0;          ///< at the end
-  double stitch_gap_max = 0;   ///< at the end
-  bool folded = false;         ///< at the end
-  double dog_max_run = 0;      ///< worst after any iteration of any round
+  int iterations = 0;            ///< completed iterations (of the last round)
+  double final_objective = 0;    ///< at the end of the last round
+  double dog_max = 0;            ///< at the end
+  double stitch_gap_max = 0;     ///< at the end
+  bool folded = false;           ///< at the end
+  double dog_max_run = 0;        ///< worst after any iteration of any round
   std::vector<double> round_ms;  ///< median_iteration_ms of each completed round, in order
   double median_ms = 0;          ///< median of round_ms
   /// Median over the rounds of the whole run's time: the sum of every iteration's time, first and
@@ -76,7 +76,9 @@ struct CaseResult {
   /// Time per iteration per degree of freedom (thesis Fig. 6.7).
   double ms_per_dof() const { return dof > 0 ? median_ms / dof : 0; }
   /// Work per iteration in the timing windows.
-  double per_window_iteration(double total) const { return window_iterations > 0 ? total / window_iterations : 0; }
+  double per_window_iteration(double total) const {
+    return window_iterations > 0 ? total / window_iterations : 0;
+  }
 };
 
 /// The observers of one run: the case and its round (0-based).
@@ -100,7 +102,8 @@ DogModel build_case_model(const Case& c);
 /// round k runs every case once, in order, before round k + 1 begins. A case that stopped (skipped
 /// or failed) runs no more. Results in the order of `cases`, related to the standard case among
 /// them (relate_to_standard). Other errors (an unreadable pattern) propagate.
-std::vector<CaseResult> run_rounds(const std::vector<Case>& cases, const RunConfig& config, const RoundsOptions& options);
+std::vector<CaseResult> run_rounds(const std::vector<Case>& cases, const RunConfig& config,
+                                   const RoundsOptions& options);
 
 /// Fills the ratios of every result from the completed standard result of its pattern and
 /// resolution.

@@ -66,10 +66,13 @@ PaceResult run_paced(const DogModel& model, RunConfig config, int k, int max_hol
     result.folded = r.step.folded;
     result.positions = r.diagnostics.terms[kPositions];
     result.angles = r.diagnostics.angles_met;
-    const bool converged = i >= k && r.t >= 1 && r.step.target_fraction >= 1 && r.step.converged.value_or(false);
+    const bool converged =
+        i >= k && r.t >= 1 && r.step.target_fraction >= 1 && r.step.converged.value_or(false);
     // The last iteration ends on the final tolerance: it counts as converged only if it meets it.
-    result.converged = finishing ? within_final_tolerance(r.diagnostics, config.standard.sqp.final_constraint_tolerance)
-                                 : converged;
+    result.converged =
+        finishing
+            ? within_final_tolerance(r.diagnostics, config.standard.sqp.final_constraint_tolerance)
+            : converged;
     if (left == 0) break;
     if (converged && !result.time_to_shape_s) {
       result.time_to_shape_s = ms_since(start) / 1000;

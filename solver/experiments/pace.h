@@ -30,7 +30,8 @@ struct PaceResult {
   double total_s = 0;
   /// The fold sites against their angle targets at the end (the fold scenario).
   AngleAgreement angles;
-  bool converged = false;  ///< the last iteration converged: after a converged one, it met the final tolerance
+  bool converged =
+      false;  ///< the last iteration converged: after a converged one, it met the final tolerance
   std::string failure;  ///< empty unless an iteration failed
 };
 

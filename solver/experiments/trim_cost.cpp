@@ -25,7 +25,8 @@ TrimCost measure_trim_cost(const DogMesh& mesh, int repeats) {
   MeshArrays carried;
   Eigen::MatrixX3d X = mesh.V;
   for (int r = 0; r < std::max(repeats, 1); ++r) {
-    X.col(2) = (0.01 * (r + 1)) * mesh.V.col(0).array().square();  // a different bent state each time
+    X.col(2) =
+        (0.01 * (r + 1)) * mesh.V.col(0).array().square();  // a different bent state each time
     t0 = Clock::now();
     place_trimmed_surface(surface, X);
     carried = trimmed_arrays(surface, arrays);

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "base/errors.h"
-#include "solver/terms/crease_geometry.h"
 #include "solver/modes/patch_round.h"
 #include "solver/patches/patch_sqp.h"
+#include "solver/terms/crease_geometry.h"
 
 namespace sdog {
 
@@ -36,8 +36,8 @@ AdmmMode::AdmmMode(DogProblem& problem, const Scenario& scenario, AdmmVariant va
         {&proximal_, 0.5 * options_.rho * options_.proximal_weight(mesh.patch_count()), false});
   }
   for (int p = 0; p < mesh.patch_count(); ++p)
-    patches_.push_back(std::make_unique<PatchSqp>(mesh, p, terms, problem_.dog, sqp,
-                                                  PatchCoupling{&frozen_, problem_.cross_patch_terms()}));
+    patches_.push_back(std::make_unique<PatchSqp>(
+        mesh, p, terms, problem_.dog, sqp, PatchCoupling{&frozen_, problem_.cross_patch_terms()}));
 }
 
 ModeKind AdmmMode::kind() const {

@@ -26,10 +26,10 @@
 #include <memory>
 #include <vector>
 
-#include "solver/problem/dog_problem.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
 #include "solver/patches/patch_stepper.h"
+#include "solver/problem/dog_problem.h"
 #include "solver/terms/stitch_constraints.h"
 
 namespace sdog {

@@ -3,9 +3,9 @@
 #include <tbb/parallel_invoke.h>
 
 #include "base/errors.h"
-#include "solver/terms/crease_geometry.h"
 #include "solver/multilevel/restriction.h"
 #include "solver/sqp/sqp_solver.h"
+#include "solver/terms/crease_geometry.h"
 
 namespace sdog {
 namespace {
@@ -19,11 +19,13 @@ const DogModel& checked(const DogModel& model, ModeKind mode) {
 
 void CoarseLevel::check_usable(const DogModel& model, ModeKind mode) {
   if (!model.has_coarse)
-    throw UsageError(std::string("mode ") + enum_name(mode) + " needs the coarse mesh (odd resolutions, not --fine-only)");
+    throw UsageError(std::string("mode ") + enum_name(mode) +
+                     " needs the coarse mesh (odd resolutions, not --fine-only)");
 }
 
-CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-                         const StandardOptions& standard, ModeKind mode, double fold_sharpness)
+CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario,
+                         double link_weight, const StandardOptions& standard, ModeKind mode,
+                         double fold_sharpness)
     : model_(model), link_weight_(link_weight), prolongation_(checked(model, mode)) {
   const FineCoarseMap& map = model.map;
   Scenario coarse_scenario = scenario;
@@ -41,13 +43,16 @@ CoarseLevel::CoarseLevel(const DogProblem& fine, const DogModel& model, const Sc
   const std::vector<FoldSite> coarse_sites = fold_sites(model.coarse);
   for (const AngleConstraint& a : scenario.angles) {
     const int c = crease_twin[a.point];
-    if (c >= 0 && find_fold_site(coarse_sites, c)) coarse_scenario.angles.push_back({c, a.start_degrees, a.end_degrees});
+    if (c >= 0 && find_fold_site(coarse_sites, c))
+      coarse_scenario.angles.push_back({c, a.start_degrees, a.end_degrees});
   }
-  coarse_scenario.curve_signs.resize(model.coarse.stitching.curves.size(), 0.0);  // curves correspond by index
+  coarse_scenario.curve_signs.resize(model.coarse.stitching.curves.size(),
+                                     0.0);  // curves correspond by index
   Weights weights = fine.weights;
   weights.link = link_weight;
   weights.edge_points = weights.positions;  // the carried position targets
-  problem_ = std::make_unique<DogProblem>(model.coarse, model.coarse_topology, weights, fold_sharpness);
+  problem_ =
+      std::make_unique<DogProblem>(model.coarse, model.coarse_topology, weights, fold_sharpness);
   // Blocks before the solver fixes its pattern.
   for (const auto& p : carried_) problem_->edge_points.add(prolongation_.row(p.vertex));
   for (int v = 0; v < model.fine.vertex_count(); ++v)
@@ -88,7 +93,8 @@ void CoarseLevel::set_time(double t) {
   t_ = t;
   mode_->set_time(t);
   for (size_t k = 0; k < carried_.size(); ++k)
-    problem_->edge_points.set_target(static_cast<int>(k), carried_[k].start + t * (carried_[k].end - carried_[k].start));
+    problem_->edge_points.set_target(static_cast<int>(k),
+                                     carried_[k].start + t * (carried_[k].end - carried_[k].start));
 }
 
 StepReport CoarseLevel::step(const Dofs& fine_x) {
@@ -104,7 +110,8 @@ StepReport CoarseLevel::step(const Dofs& fine_x) {
   ahead_.reset();
   if (link_weight_ > 0)
     for (size_t i = 0; i < links_.size(); ++i)
-      problem_->link.set_target(static_cast<int>(i), Eigen::Vector3d(vertex_of(fine_x, links_[i].first)));
+      problem_->link.set_target(static_cast<int>(i),
+                                Eigen::Vector3d(vertex_of(fine_x, links_[i].first)));
   return mode_->step(x_, false);
 }
 

@@ -7,11 +7,11 @@
 // any other fine vertex becomes a target on the weighted sum of coarse vertices the prolongation
 // gives that vertex (prolongation.h: the coarse edge midpoint, quad centre, ...) with the position
 // weight: the coarse mesh is asked to place the point where the fine vertex would be carried.
-// An angle constraint at a fine crease point that has a coarse twin (a crease point at the same flat
-// position) becomes the same dihedral angle constraint at the twin; the others act on the fine mesh
-// only. A run that starts from a given fine state
-// (scenario.initial) or takes over from another mode starts the coarse mesh from its restriction,
-// with the coarse folding mode off when the restriction is not folded (see start_from).
+// An angle constraint at a fine crease point that has a coarse twin (a crease point at the same
+// flat position) becomes the same dihedral angle constraint at the twin; the others act on the fine
+// mesh only. A run that starts from a given fine state (scenario.initial) or takes over from
+// another mode starts the coarse mesh from its restriction, with the coarse folding mode off when
+// the restriction is not folded (see start_from).
 //
 // Stepping ahead: without link targets (link weight 0, the default) a coarse step reads nothing of
 // the fine mesh, only the coarse state and the scenario's targets, so the step of iteration k + 1
@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "geometry/mesh/dog_model.h"
-#include "solver/problem/dog_problem.h"
-#include "solver/multilevel/prolongation.h"
-#include "solver/problem/scenario.h"
 #include "solver/modes/mode_kind.h"
 #include "solver/modes/standard_mode.h"
+#include "solver/multilevel/prolongation.h"
+#include "solver/problem/dog_problem.h"
+#include "solver/problem/scenario.h"
 
 namespace sdog {
 
@@ -39,8 +39,8 @@ class CoarseLevel {
   /// `link_weight` 0: the coarse mesh is not pulled towards the fine one. `mode` names the mode
   /// in usage errors; `fold_sharpness` that of the coarse fold bias (fold_bias.h). The model must
   /// outlive the level.
-  CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario, double link_weight,
-              const StandardOptions& standard, ModeKind mode,
+  CoarseLevel(const DogProblem& fine, const DogModel& model, const Scenario& scenario,
+              double link_weight, const StandardOptions& standard, ModeKind mode,
               double fold_sharpness = kFoldSharpness);
   ~CoarseLevel();
   /// Throws the UsageError the constructor would throw: the model has no coarse mesh.

@@ -1,16 +1,17 @@
 #include "solver/modes/coarse_mode.h"
 
-#include "solver/terms/crease_geometry.h"
-#include "solver/multilevel/curve_interpolation.h"
 #include "solver/modes/patch_round.h"
+#include "solver/multilevel/curve_interpolation.h"
 #include "solver/patches/patch_sqp.h"
+#include "solver/terms/crease_geometry.h"
 
 namespace sdog {
 
 CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
                        const CoarseOptions& options, const StandardOptions& standard)
     : fine_(fine), model_(model), scenario_(scenario), options_(options) {
-  coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario, options.fine_to_coarse ? options.link_weight : 0.0,
+  coarse_ = std::make_unique<CoarseLevel>(fine, model, scenario,
+                                          options.fine_to_coarse ? options.link_weight : 0.0,
                                           standard, ModeKind::kCoarse);
   projection_ = std::make_unique<FinalProjection>(fine, standard.sqp);
   // Fine link blocks (before the solvers fix their patterns): every coarse twin pair.
@@ -29,31 +30,38 @@ CoarseMode::CoarseMode(DogProblem& fine, const DogModel& model, const Scenario& 
   terms[kLink].weight = options_.link_weight;
   terms.push_back({&crease_targets_, 0.5 * fine_.weights.stitching, false});
   for (int p = 0; p < model.fine.patch_count(); ++p)
-    patches_.push_back(std::make_unique<PatchSqp>(model.fine, p, terms, fine_.dog, standard.sqp,
-                                                  PatchCoupling{&frozen_, fine_.cross_patch_terms()}));
+    patches_.push_back(
+        std::make_unique<PatchSqp>(model.fine, p, terms, fine_.dog, standard.sqp,
+                                   PatchCoupling{&frozen_, fine_.cross_patch_terms()}));
 }
 
 CoarseMode::~CoarseMode() = default;
 
-const Dofs& CoarseMode::coarse_state() const { return coarse_->state(); }
+const Dofs& CoarseMode::coarse_state() const {
+  return coarse_->state();
+}
 
 void CoarseMode::set_time(double t) {
   scenario_.apply(fine_, t);
   coarse_->set_time(t);
 }
 
-void CoarseMode::start_from(const Dofs& x) { coarse_->start_from(x); }
+void CoarseMode::start_from(const Dofs& x) {
+  coarse_->start_from(x);
+}
 
 void CoarseMode::set_fine_link_targets() {
   const auto& links = coarse_->links();
   for (size_t i = 0; i < links.size(); ++i)
-    fine_.link.set_target(static_cast<int>(i), Eigen::Vector3d(vertex_of(coarse_->state(), links[i].second)));
+    fine_.link.set_target(static_cast<int>(i),
+                          Eigen::Vector3d(vertex_of(coarse_->state(), links[i].second)));
 }
 
 void CoarseMode::set_crease_targets() {
   const Eigen::MatrixX3d X = to_positions(coarse_->state());
   for (size_t b = 0; b < crease_stencils_.size(); ++b)
-    crease_targets_.set_target(static_cast<int>(b), interpolate(model_.coarse, X, crease_stencils_[b]));
+    crease_targets_.set_target(static_cast<int>(b),
+                               interpolate(model_.coarse, X, crease_stencils_[b]));
 }
 
 StepReport CoarseMode::iterate(const IterationContext& ctx, Dofs& x) {

@@ -4,14 +4,15 @@
 
 namespace sdog {
 
-FinalProjection::FinalProjection(const DogProblem& problem, const SqpOptions& sqp) : problem_(problem), options_(sqp) {}
+FinalProjection::FinalProjection(const DogProblem& problem, const SqpOptions& sqp)
+    : problem_(problem), options_(sqp) {}
 
 FinalProjection::~FinalProjection() = default;
 
 bool FinalProjection::project(Dofs& x, StepReport& report) {
   if (!solver_)
-    solver_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(), problem_.objective_terms(), problem_.dog,
-                                          options_);
+    solver_ = std::make_unique<SqpSolver>(problem_.mesh().vertex_count(),
+                                          problem_.objective_terms(), problem_.dog, options_);
   return add_projection(solver_->project(x), report);
 }
 

@@ -12,8 +12,8 @@
 // near flat regions, where the constraints are nearly quadratic in the normal motion.
 #include <memory>
 
-#include "solver/problem/dog_problem.h"
 #include "solver/modes/mode.h"
+#include "solver/problem/dog_problem.h"
 #include "solver/sqp/sqp_options.h"
 
 namespace sdog {

@@ -17,7 +17,8 @@ const double kFinalStitchingScale = 10 * kStitchingScale;
 
 }  // namespace
 
-HardConstraints::HardConstraints(const DogProblem& problem, Stitching stitching) : dog_(&problem.dog) {
+HardConstraints::HardConstraints(const DogProblem& problem, Stitching stitching)
+    : dog_(&problem.dog) {
   if (stitching == Stitching::kExact && problem.stitching.block_count() > 0)
     stacked_ = std::make_unique<StackedTerm>(
         std::vector<StackedTerm::Part>{{&problem.dog, 1.0}, {&problem.stitching, kStitchingScale}});

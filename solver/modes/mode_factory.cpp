@@ -12,7 +12,8 @@ namespace sdog {
 namespace {
 
 const DogModel& required(const DogModel* model, ModeKind mode) {
-  if (!model) throw std::logic_error(std::string("make_mode: mode ") + enum_name(mode) + " needs the model");
+  if (!model)
+    throw std::logic_error(std::string("make_mode: mode ") + enum_name(mode) + " needs the model");
   return *model;
 }
 
@@ -23,8 +24,8 @@ void check_mode_usable(ModeKind mode, const DogModel& model) {
 }
 
 std::unique_ptr<Mode> switch_mode(ModeKind mode, DogProblem& problem, const Scenario& scenario,
-                                  const ModeOptions& options, const Weights& weights, const DogModel& model,
-                                  const Dofs& x, const Dofs* origin) {
+                                  const ModeOptions& options, const Weights& weights,
+                                  const DogModel& model, const Dofs& x, const Dofs* origin) {
   problem.weights = weights;
   auto made = make_mode(mode, problem, scenario, options, &model, origin);
   made->start_from(x);
@@ -32,30 +33,36 @@ std::unique_ptr<Mode> switch_mode(ModeKind mode, DogProblem& problem, const Scen
 }
 
 std::unique_ptr<Mode> make_mode(ModeKind mode, DogProblem& problem, const Scenario& scenario,
-                                const ModeOptions& options, const DogModel* model, const Dofs* origin) {
+                                const ModeOptions& options, const DogModel* model,
+                                const Dofs* origin) {
   const SqpOptions& sqp = options.standard.sqp;
   switch (mode) {
     case ModeKind::kStandard: {
       // The standard mode with exact stitching: the violated rows after a step lie all along the
       // creases, where local restoration steps cost more than the global ones they replace.
       StandardOptions standard = options.standard;
-      if (standard.sqp.local_fraction < 0 && standard.stitching == Stitching::kExact) standard.sqp.local_fraction = 0;
+      if (standard.sqp.local_fraction < 0 && standard.stitching == Stitching::kExact)
+        standard.sqp.local_fraction = 0;
       return std::make_unique<StandardMode>(problem, scenario, standard,
                                             origin ? std::optional<Dofs>(*origin) : std::nullopt);
     }
     case ModeKind::kSubsolvers:
       return std::make_unique<SubsolversMode>(problem, scenario, options.subsolvers, sqp);
     case ModeKind::kVsAdmm:
-      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kVariableSplitting, options.admm, sqp);
+      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kVariableSplitting,
+                                        options.admm, sqp);
     case ModeKind::kJAdmm:
-      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kJacobian, options.admm, sqp);
+      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kJacobian, options.admm,
+                                        sqp);
     case ModeKind::kProxJAdmm:
-      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kProximalJacobian, options.admm, sqp);
+      return std::make_unique<AdmmMode>(problem, scenario, AdmmVariant::kProximalJacobian,
+                                        options.admm, sqp);
     case ModeKind::kCoarse:
-      return std::make_unique<CoarseMode>(problem, required(model, mode), scenario, options.coarse, options.standard);
+      return std::make_unique<CoarseMode>(problem, required(model, mode), scenario, options.coarse,
+                                          options.standard);
     case ModeKind::kTwoLevel:
-      return std::make_unique<TwoLevelMode>(problem, required(model, mode), scenario, options.twolevel,
-                                            options.standard, options.subsolvers);
+      return std::make_unique<TwoLevelMode>(problem, required(model, mode), scenario,
+                                            options.twolevel, options.standard, options.subsolvers);
   }
   throw std::logic_error("make_mode: unknown mode kind");
 }

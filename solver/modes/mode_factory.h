@@ -26,7 +26,8 @@ std::unique_ptr<Mode> make_mode(ModeKind mode, DogProblem& problem, const Scenar
 /// made as by make_mode (with `origin`) and derives its own state from x (Mode::start_from). The
 /// mode that ran before must not iterate again: the new one owns the problem's blocks.
 std::unique_ptr<Mode> switch_mode(ModeKind mode, DogProblem& problem, const Scenario& scenario,
-                                  const ModeOptions& options, const Weights& weights, const DogModel& model,
-                                  const Dofs& x, const Dofs* origin = nullptr);
+                                  const ModeOptions& options, const Weights& weights,
+                                  const DogModel& model, const Dofs& x,
+                                  const Dofs* origin = nullptr);
 
 }  // namespace sdog

@@ -10,12 +10,9 @@ template <>
 struct EnumNames<ModeKind> {
   static constexpr const char* noun = "mode";
   static constexpr EnumName<ModeKind> rows[] = {
-      {ModeKind::kStandard, "standard"},
-      {ModeKind::kSubsolvers, "subsolvers"},
-      {ModeKind::kVsAdmm, "vsadmm"},
-      {ModeKind::kJAdmm, "jadmm"},
-      {ModeKind::kProxJAdmm, "proxjadmm"},
-      {ModeKind::kCoarse, "coarse"},
+      {ModeKind::kStandard, "standard"},   {ModeKind::kSubsolvers, "subsolvers"},
+      {ModeKind::kVsAdmm, "vsadmm"},       {ModeKind::kJAdmm, "jadmm"},
+      {ModeKind::kProxJAdmm, "proxjadmm"}, {ModeKind::kCoarse, "coarse"},
       {ModeKind::kTwoLevel, "twolevel"},
   };
 };

@@ -25,7 +25,7 @@ struct EnumNames<Stitching> {
 /// The standard mode (standard_mode.h) and the standard iterations of the other modes.
 struct StandardOptions {
   SqpOptions sqp;
-  bool folding = true;          ///< fold check and fold-bias escalation (standard_mode.h)
+  bool folding = true;         ///< fold check and fold-bias escalation (standard_mode.h)
   double max_fold_bias = 1e6;  ///< the escalation stops at this weight (the thesis: 1e14)
   /// Converging iterations (standard_mode.h); off: sqp.max_steps steps per iteration (the thesis).
   bool converge = true;
@@ -97,7 +97,7 @@ struct CoarseOptions {
   /// mesh follows the coarse one through the crease targets only (docs/design/rejected.md).
   double link_weight = 0;
   bool fine_to_coarse = true;  ///< the coarse link vertices are pulled towards their fine twins
-  bool prolongate = false;     ///< start each fine step from the coarse state carried to the fine mesh
+  bool prolongate = false;  ///< start each fine step from the coarse state carried to the fine mesh
   /// The next iteration's coarse step beside this one's fine round (coarse_level.h); the results
   /// do not depend on it. Only without link targets (link weight 0).
   bool concurrent_coarse = true;
@@ -117,7 +117,8 @@ struct TwoLevelOptions {
   /// The finish's fold retries raise the fold-bias weight at most to this multiple of its base
   /// weight; 1: no retries.
   double finish_fold_bias_cap = 10;
-  /// The next iteration's coarse step beside this one's fine round; the results do not depend on it.
+  /// The next iteration's coarse step beside this one's fine round; the results do not depend on
+  /// it.
   bool concurrent_coarse = true;
   /// A coarse step every this many iterations, its displacement spread evenly over them.
   int coarse_every = 1;

@@ -17,7 +17,9 @@ void SettlingPlan::new_goal() {
   settled_ = false;
 }
 
-bool SettlingPlan::wanted() const { return on_ && !settled_ && (goals_ > 1 || away_from_origin_); }
+bool SettlingPlan::wanted() const {
+  return on_ && !settled_ && (goals_ > 1 || away_from_origin_);
+}
 
 void SettlingPlan::restart() {
   if (!origin_given_) origin_.reset();

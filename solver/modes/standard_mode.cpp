@@ -24,8 +24,8 @@ struct StandardMode::StraightFold {
   int iterations = 0;
 };
 
-StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const StandardOptions& options,
-                           std::optional<Dofs> origin)
+StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario,
+                           const StandardOptions& options, std::optional<Dofs> origin)
     : problem_(problem),
       scenario_(scenario),
       options_(options),
@@ -38,7 +38,8 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
       substeps_(options.substep_step_length),
       held_(options.sqp.converged_decrease),
       settling_(options.settle, std::move(origin)),
-      steps_{options.max_target_step * sheet_size(problem.rest()), options.max_angle_step * M_PI / 180} {
+      steps_{options.max_target_step * sheet_size(problem.rest()),
+             options.max_angle_step * M_PI / 180} {
   scenario_.install(problem_);
   if (!scenario.keeps_folds) options_.folding = false;
   if (!options_.folding) problem_.weights.fold_bias = 0;  // before the solver reads the weights
@@ -48,14 +49,17 @@ StandardMode::StandardMode(DogProblem& problem, const Scenario& scenario, const 
 
 StandardMode::~StandardMode() = default;
 
-void StandardMode::set_time(double t) { scenario_.apply(problem_, t); }
+void StandardMode::set_time(double t) {
+  scenario_.apply(problem_, t);
+}
 
 StepReport StandardMode::iterate(const IterationContext& ctx, Dofs& x) {
   set_time(ctx.t);
   return step(x, ctx.last());
 }
 
-bool StandardMode::solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max) {
+bool StandardMode::solve(Dofs& x, bool last, int max_steps, StepReport& report,
+                         double& constraint_max) {
   const SqpReport r = max_steps > 0 ? sqp_->converge(x, max_steps) : sqp_->iterate(x, last);
   report.work += r.work;
   report.step_length = r.step_length;
@@ -138,7 +142,8 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   }
   // The last iteration from a converged folded state: what it falls back on (finish_folded).
   std::optional<std::pair<Dofs, Eigen::VectorXd>> converged_folded;
-  if (last && converged_ && options_.folding && folded(x)) converged_folded.emplace(x, sqp_->multipliers());
+  if (last && converged_ && options_.folding && folded(x))
+    converged_folded.emplace(x, sqp_->multipliers());
   ladder_.new_iteration();
   if (distance > 0) {
     report = follow(x, goal, distance);
@@ -157,11 +162,13 @@ StepReport StandardMode::converge(Dofs& x, bool last) {
   }
   if (converged_ && !last && settling_.wanted()) settle(x, report);
   if (last && !report.failed) finish(x, report);
-  if (converged_folded && (report.failed || !report.folded)) finish_folded(x, *converged_folded, report);
+  if (converged_folded && (report.failed || !report.folded))
+    finish_folded(x, *converged_folded, report);
   return report;
 }
 
-void StandardMode::finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged, StepReport& report) {
+void StandardMode::finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged,
+                                 StepReport& report) {
   // The held steps of a last iteration can move a converged folded sheet to where the projection
   // unfolds it; the converged state projected without them is kept when it stays folded.
   Dofs y = converged.first;
@@ -187,7 +194,8 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
     StandardOptions options = options_;
     options.settle = false;
     straight_ = std::make_unique<StraightFold>();
-    straight_->mode = std::make_unique<StandardMode>(problem_, scenario_, options);  // installs the scenario
+    straight_->mode =
+        std::make_unique<StandardMode>(problem_, scenario_, options);  // installs the scenario
     straight_->x = settling_.origin();
   }
   goal_->install(problem_);
@@ -213,7 +221,8 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
     const SettledFold run{report.folded, angle_agreement(problem_, x).all_against(), f};
     const SettledFold other{straight.folded, angle_agreement(problem_, straight_->x).all_against(),
                             weighted_objective(problem_, straight_->x)};
-    if (straight_fold_wins(run, other, options_.sqp.converged_decrease * std::max(std::abs(f), 1.0))) {
+    if (straight_fold_wins(run, other,
+                           options_.sqp.converged_decrease * std::max(std::abs(f), 1.0))) {
       x = straight_->x;
       sqp_->set_multipliers(straight_->mode->sqp().multipliers());
       report.stage = settling_stage::kReplaced;
@@ -227,7 +236,8 @@ void StandardMode::settle(Dofs& x, StepReport& report) {
 
 StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
   // Distances count sub-steps of the largest size (steps_).
-  if (SubstepSchedule::short_move(distance)) {  // targets that move little, as in the thesis protocol
+  if (SubstepSchedule::short_move(
+          distance)) {  // targets that move little, as in the thesis protocol
     goal.install(problem_);
     StepReport report = attempt(x, false, 0);
     if (!report.failed) reached_ = goal;
@@ -276,7 +286,8 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
     }
   }
   report.target_fraction = 1 - reached_->distance(goal, steps_) / distance;
-  if (report.target_fraction == 0 && rejected && rejected->failed) {  // not even the smallest sub-step
+  if (report.target_fraction == 0 && rejected &&
+      rejected->failed) {  // not even the smallest sub-step
     report.failed = true;
     report.failure = rejected->failure;
   }
@@ -287,7 +298,8 @@ StepReport StandardMode::follow(Dofs& x, const Targets& goal, double distance) {
 void StandardMode::finish(Dofs& x, StepReport& report) {
   const double tolerance = options_.sqp.final_constraint_tolerance;
   constraints_.use_final_scale(true);
-  constraint_max_ = sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
+  constraint_max_ =
+      sqp_->constraint_values(x).lpNorm<Eigen::Infinity>();  // x may be an earlier attempt's
   if (constraint_max_ > tolerance) {
     const Dofs x0 = x;
     const double constraint_max0 = constraint_max_;
@@ -342,8 +354,9 @@ void StandardMode::project(Dofs& x, StepReport& report) {
   constraint_max_ = finished.constraint_max;
 }
 
-void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
-                                      int max_steps, int violations, double constraint_max, StepReport& report) {
+void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0,
+                                      bool last, int max_steps, int violations,
+                                      double constraint_max, StepReport& report) {
   // The attempt with the fewest unfolded sites so far (the lowest weight among equals) whose
   // constraints are as well met as the first attempt's (or to the solver's tolerance): what the
   // iteration keeps when no escalation folds the sheet.
@@ -361,7 +374,8 @@ void StandardMode::escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::Vect
   while (!report.folded && raise_fold_bias(weight, report)) {
     x = x0;
     sqp_->set_multipliers(lambda0);
-    if (!solve(x, last, max_steps, report, constraint_max)) {  // a retry the solver cannot take ends the escalation
+    if (!solve(x, last, max_steps, report,
+               constraint_max)) {  // a retry the solver cannot take ends the escalation
       report.failed = false;
       report.failure.clear();
       break;

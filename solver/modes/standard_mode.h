@@ -2,9 +2,9 @@
 // The standard mode: the global SQP solver (sqp_solver.h) on the whole fine DOG, in folding mode
 // by default: after an iteration that leaves the sheet unfolded (check_folded), x is rolled back,
 // the fold-bias weight multiplied by 10 and the iteration solved again, up to max_fold_bias;
-// after a folded iteration the weight returns to its base value. When no weight folds the sheet, the
-// iteration keeps its attempt with the fewest unfolded sites (among those meeting the constraints as
-// well as the first attempt) and the base weight. Off for scenarios that unfold
+// after a folded iteration the weight returns to its base value. When no weight folds the sheet,
+// the iteration keeps its attempt with the fewest unfolded sites (among those meeting the
+// constraints as well as the first attempt) and the base weight. Off for scenarios that unfold
 // (Scenario::keeps_folds false).
 //
 // Exact stitching (the default): the stitching of the crease points is a hard constraint beside
@@ -107,7 +107,8 @@ class StandardMode : public Mode {
   /// After a last iteration that ended unfolded or failed from a converged folded state: that
   /// state (positions and multipliers) finished without the iteration's steps, kept when it ends
   /// folded.
-  void finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged, StepReport& report);
+  void finish_folded(Dofs& x, const std::pair<Dofs, Eigen::VectorXd>& converged,
+                     StepReport& report);
   /// |c|_inf of x with the iterations' constraint scale (finish() runs with the final one).
   double iteration_residual(const Dofs& x);
   /// x projected to the final constraint tolerance (at the stitching rows' final scale).
@@ -115,8 +116,8 @@ class StandardMode : public Mode {
   /// One SQP solve, its work added to `report`; false when it failed.
   bool solve(Dofs& x, bool last, int max_steps, StepReport& report, double& constraint_max);
   /// Retries of an iteration that left the sheet unfolded (x0, lambda0: where it started).
-  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last, int max_steps,
-                          int violations, double constraint_max, StepReport& report);
+  void escalate_fold_bias(Dofs& x, const Dofs& x0, const Eigen::VectorXd& lambda0, bool last,
+                          int max_steps, int violations, double constraint_max, StepReport& report);
   /// The next rung of the fold-bias ladder, a retry counted in `report`; false at the top.
   bool raise_fold_bias(double& weight, StepReport& report);
   DogProblem& problem_;

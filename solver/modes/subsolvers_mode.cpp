@@ -4,16 +4,16 @@
 #include <cmath>
 
 #include "base/errors.h"
-#include "solver/terms/crease_geometry.h"
-#include "solver/patches/patch_colouring.h"
 #include "solver/modes/patch_round.h"
 #include "solver/patches/ceres/ceres_patch.h"
+#include "solver/patches/patch_colouring.h"
 #include "solver/patches/patch_sqp.h"
+#include "solver/terms/crease_geometry.h"
 
 namespace sdog {
 
-SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, const SubsolverOptions& options,
-                               const SqpOptions& sqp)
+SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario,
+                               const SubsolverOptions& options, const SqpOptions& sqp)
     : problem_(problem), scenario_(scenario), options_(options), projection_(problem, sqp) {
   scenario_.install(problem_);
   const DogMesh& mesh = problem_.mesh();
@@ -31,7 +31,8 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   if (options_.fold_sharpness > 0 && options_.fold_sharpness != problem_.fold_bias.sharpness()) {
     fold_bias_ = std::make_unique<FoldBiasTerm>(mesh, problem_.free_sites, options_.fold_sharpness);
     terms[kFoldBias].term = fold_bias_.get();
-    std::replace(coupling.split.begin(), coupling.split.end(), static_cast<const Term*>(&problem_.fold_bias),
+    std::replace(coupling.split.begin(), coupling.split.end(),
+                 static_cast<const Term*>(&problem_.fold_bias),
                  static_cast<const Term*>(fold_bias_.get()));
   }
   for (int p = 0; p < mesh.patch_count(); ++p) {
@@ -42,16 +43,20 @@ SubsolversMode::SubsolversMode(DogProblem& problem, const Scenario& scenario, co
   }
   // Jacobi: one round of every patch (every patch has colour 0).
   const int n = mesh.patch_count();
-  const std::vector<int> colour = options_.sweep == PatchSweep::kColours ? colour_patches(mesh) : std::vector<int>(n, 0);
+  const std::vector<int> colour =
+      options_.sweep == PatchSweep::kColours ? colour_patches(mesh) : std::vector<int>(n, 0);
   sweeps_.assign(*std::max_element(colour.begin(), colour.end()) + 1, std::vector<char>(n, 0));
   for (int p = 0; p < n; ++p) sweeps_[colour[p]][p] = 1;
 }
 
-void SubsolversMode::set_time(double t) { scenario_.apply(problem_, t); }
+void SubsolversMode::set_time(double t) {
+  scenario_.apply(problem_, t);
+}
 
 void SubsolversMode::refresh_targets(const Dofs& x) {
   const Eigen::MatrixX3d X = to_positions(x);
-  for (int b = 0; b < targets_.block_count(); ++b) targets_.set_target(b, DogMesh::position(X, other_[b]));
+  for (int b = 0; b < targets_.block_count(); ++b)
+    targets_.set_target(b, DogMesh::position(X, other_[b]));
 }
 
 StepReport SubsolversMode::iterate(const IterationContext& ctx, Dofs& x) {

@@ -14,11 +14,11 @@
 // the DOG constraints to the final tolerance (final_projection.h), not a polishing patch round.
 #include <memory>
 
-#include "solver/problem/dog_problem.h"
 #include "solver/modes/final_projection.h"
 #include "solver/modes/mode.h"
 #include "solver/modes/mode_options.h"
 #include "solver/patches/patch_stepper.h"
+#include "solver/problem/dog_problem.h"
 #include "solver/terms/fold_bias.h"
 #include "solver/terms/linear_point_term.h"
 
@@ -41,7 +41,8 @@ class SubsolversMode : public Mode {
   DogProblem& problem_;
   Scenario scenario_;
   SubsolverOptions options_;
-  std::unique_ptr<FoldBiasTerm> fold_bias_;  // when options_.fold_sharpness differs from the problem's
+  std::unique_ptr<FoldBiasTerm>
+      fold_bias_;  // when options_.fold_sharpness differs from the problem's
   LinearPointTerm targets_{"stitch_targets"};  // one block per copy and stitching pair
   std::vector<EdgePoint> other_;               // per block: the copy whose position is the target
   Dofs frozen_;                                // the state the round started from

@@ -24,7 +24,8 @@ TwoLevelMode::TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenar
       options_(options),
       coarse_(fine, model, scenario, options.link_weight, standard, ModeKind::kTwoLevel,
               options.fold_sharpness),
-      fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {}
+      fine_(fine, scenario, with_fold_sharpness(subsolvers, options.fold_sharpness), standard.sqp) {
+}
 
 StepReport TwoLevelMode::iterate(const IterationContext& ctx, Dofs& x) {
   begin_finish_if_due(ctx.iterations_left);
@@ -61,7 +62,8 @@ StepReport TwoLevelMode::finish_iteration(Dofs& x, bool last) {
   // and after a few standard iterations they move the sheet far (docs/design/rejected.md).
   const Dofs x0 = last ? x : Dofs();
   StepReport report = finish_->step(x, false);
-  if (last && !report.failed && !add_projection(finish_->sqp().project(x), report)) x = x0;  // rolled back
+  if (last && !report.failed && !add_projection(finish_->sqp().project(x), report))
+    x = x0;  // rolled back
   return report;
 }
 
@@ -84,12 +86,13 @@ StepReport TwoLevelMode::two_level_iteration(const IterationContext& ctx, Dofs& 
   --shares_left_;
   // The next iteration's coarse step beside the round, unless there is none: the run's last
   // iteration, the next one belongs to the standard finish or takes no coarse step.
-  const bool next_is_two_level =
-      ctx.iterations_left == IterationContext::kOpenEnded || ctx.iterations_left - 1 >= options_.standard_finish;
+  const bool next_is_two_level = ctx.iterations_left == IterationContext::kOpenEnded ||
+                                 ctx.iterations_left - 1 >= options_.standard_finish;
   StepReport report;
   coarse_.run_beside([&] { report = fine_.round(x, last); },
-                     options_.concurrent_coarse && !last && next_is_two_level && shares_left_ == 0 ? ctx.next_t
-                                                                                                   : std::nullopt);
+                     options_.concurrent_coarse && !last && next_is_two_level && shares_left_ == 0
+                         ? ctx.next_t
+                         : std::nullopt);
   if (report.failed) {
     x = x0;
     coarse_.set_state(c0);

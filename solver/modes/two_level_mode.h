@@ -44,8 +44,9 @@ namespace sdog {
 class TwoLevelMode : public Mode {
  public:
   /// The fine problem and the model must outlive the mode.
-  TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario, const TwoLevelOptions& options,
-               const StandardOptions& standard, const SubsolverOptions& subsolvers);
+  TwoLevelMode(DogProblem& fine, const DogModel& model, const Scenario& scenario,
+               const TwoLevelOptions& options, const StandardOptions& standard,
+               const SubsolverOptions& subsolvers);
   ModeKind kind() const override { return ModeKind::kTwoLevel; }
   /// Within the last standard_finish iterations of a run (ctx.iterations_left) the standard
   /// finish computes the iteration.
@@ -70,8 +71,8 @@ class TwoLevelMode : public Mode {
   CoarseLevel coarse_;
   SubsolversMode fine_;
   std::unique_ptr<StandardMode> finish_;  // the standard finish, once it has begun
-  int shares_left_ = 0;                   // iterations still to take a share; 0: a coarse step is due
-  Dofs correction_share_;                 // fine displacement per iteration of the last coarse step
+  int shares_left_ = 0;    // iterations still to take a share; 0: a coarse step is due
+  Dofs correction_share_;  // fine displacement per iteration of the last coarse step
 };
 
 }  // namespace sdog

@@ -11,7 +11,8 @@ Eigen::Vector3d crease_point_mean(const DogMesh& mesh, const Eigen::MatrixX3d& X
   return sum / static_cast<double>(copies.size());
 }
 
-Eigen::Vector3d interpolate(const DogMesh& coarse, const Eigen::MatrixX3d& X, const CurveStencil& s) {
+Eigen::Vector3d interpolate(const DogMesh& coarse, const Eigen::MatrixX3d& X,
+                            const CurveStencil& s) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (int i = 0; i < s.count; ++i) p += s.weights[i] * crease_point_mean(coarse, X, s.points[i]);
   return p;
@@ -59,7 +60,8 @@ std::vector<std::vector<CurveStencil>> coarse_curve_stencils(const DogModel& mod
         st.points[0] = curve.points[cp.coarse];
         st.weights[0] = 1;
       } else {
-        const double u = param(cp.segment) + cp.fraction * (param(cp.segment + 1) - param(cp.segment));
+        const double u =
+            param(cp.segment) + cp.fraction * (param(cp.segment + 1) - param(cp.segment));
         int first = cp.segment - (m - 1) / 2;  // nodes around the segment
         if (!curve.closed) first = std::clamp(first, 0, n - m);
         std::array<double, 4> s{};

@@ -25,6 +25,7 @@ std::vector<std::vector<CurveStencil>> coarse_curve_stencils(const DogModel& mod
 Eigen::Vector3d crease_point_mean(const DogMesh& mesh, const Eigen::MatrixX3d& X, int point);
 
 /// The stencil's point at the coarse positions X.
-Eigen::Vector3d interpolate(const DogMesh& coarse, const Eigen::MatrixX3d& X, const CurveStencil& s);
+Eigen::Vector3d interpolate(const DogMesh& coarse, const Eigen::MatrixX3d& X,
+                            const CurveStencil& s);
 
 }  // namespace sdog

@@ -18,7 +18,8 @@ Prolongation::Prolongation(const DogModel& model) {
     } else if (map.fine_to_coarse_edge[v][0] >= 0 && map.fine_to_coarse_edge[v][1] >= 0) {
       rows[v] = {{map.fine_to_coarse_edge[v][0], 0.5}, {map.fine_to_coarse_edge[v][1], 0.5}};
     } else if (map.fine_to_coarse_quad[v] >= 0) {
-      for (int k = 0; k < 4; ++k) rows[v].push_back({model.coarse.F(map.fine_to_coarse_quad[v], k), 0.25});
+      for (int k = 0; k < 4; ++k)
+        rows[v].push_back({model.coarse.F(map.fine_to_coarse_quad[v], k), 0.25});
     }
     mapped[v] = !rows[v].empty();
   }
@@ -35,7 +36,9 @@ Prolongation::Prolongation(const DogModel& model) {
           nearest = u;
         }
       }
-      if (nearest < 0) throw std::logic_error("Prolongation: fine patch " + std::to_string(p) + " has no mapped vertex");
+      if (nearest < 0)
+        throw std::logic_error("Prolongation: fine patch " + std::to_string(p) +
+                               " has no mapped vertex");
       rows[v] = rows[nearest];
     }
   }

@@ -7,20 +7,21 @@
 #include <atomic>
 #include <numeric>
 
-#include "solver/sqp/blas_threads.h"
 #include "base/stopwatch.h"
+#include "solver/sqp/blas_threads.h"
 
 namespace sdog {
 
-std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
-                                      const std::vector<char>* active) {
+std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x,
+                                      bool last, const std::vector<char>* active) {
   const auto t0 = Clock::now();
   const size_t n = patches.size();
   std::vector<PatchReport> reports(n);
   std::vector<size_t> order(n);
   std::iota(order.begin(), order.end(), size_t(0));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return patches[a]->vertex_count() > patches[b]->vertex_count(); });
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return patches[a]->vertex_count() > patches[b]->vertex_count();
+  });
   auto step = [&](size_t i) {
     if (active && !(*active)[i]) {
       reports[i].patch = static_cast<int>(i);

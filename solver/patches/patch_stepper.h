@@ -30,7 +30,7 @@ class PatchStepper {
 /// the round (the two-level mode's coarse step). With `active`, only the patches marked there
 /// step (the others report a converged step that took no time and leave their vertices as they
 /// are).
-std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x, bool last,
-                                      const std::vector<char>* active = nullptr);
+std::vector<PatchReport> step_patches(std::vector<std::unique_ptr<PatchStepper>>& patches, Dofs& x,
+                                      bool last, const std::vector<char>* active = nullptr);
 
 }  // namespace sdog

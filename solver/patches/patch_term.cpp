@@ -16,7 +16,8 @@ namespace {
 constexpr int kMaxSplitVertices = 16, kMaxSplitRows = 8;
 }  // namespace
 
-PatchTerm::PatchTerm(const Term& term, int begin, int end, const Dofs* frozen) : term_(term), frozen_(frozen) {
+PatchTerm::PatchTerm(const Term& term, int begin, int end, const Dofs* frozen)
+    : term_(term), frozen_(frozen) {
   std::vector<int> local;
   for (int b = 0; b < term.block_count(); ++b) {
     local.clear();
@@ -34,7 +35,8 @@ PatchTerm::PatchTerm(const Term& term, int begin, int end, const Dofs* frozen) :
       continue;
     }
     if (!whole && (size > kMaxSplitVertices || term.residual_count(b) > kMaxSplitRows))
-      throw std::logic_error(std::string("PatchTerm: a split block of ") + term.name() + " is larger than supported");
+      throw std::logic_error(std::string("PatchTerm: a split block of ") + term.name() +
+                             " is larger than supported");
     split_count_ += !whole;
     add_block(local.data(), static_cast<int>(local.size()), term.residual_count(b));
     source_.push_back(b);
@@ -46,7 +48,8 @@ void PatchTerm::gather_full(int b, const Eigen::Vector3d* p, Eigen::Vector3d* fu
   const int s = source_[b];
   const int* vertices = term_.block_vertices(s);
   for (int j = 0; j < term_.block_size(s); ++j) full[j] = vertex_of(*frozen_, vertices[j]);
-  for (int k = inside_offsets_[b]; k < inside_offsets_[b + 1]; ++k) full[inside_slots_[k]] = p[k - inside_offsets_[b]];
+  for (int k = inside_offsets_[b]; k < inside_offsets_[b + 1]; ++k)
+    full[inside_slots_[k]] = p[k - inside_offsets_[b]];
 }
 
 void PatchTerm::evaluate(int b, const Eigen::Vector3d* p, double* r, double* J) const {
@@ -62,10 +65,12 @@ void PatchTerm::evaluate(int b, const Eigen::Vector3d* p, double* r, double* J) 
   for (int i = 0; i < rows; ++i)
     for (int k = 0; k < inside; ++k)
       for (int c = 0; c < 3; ++c)
-        J[(i * inside + k) * 3 + c] = full_J[(i * size + inside_slots_[inside_offsets_[b] + k]) * 3 + c];
+        J[(i * inside + k) * 3 + c] =
+            full_J[(i * size + inside_slots_[inside_offsets_[b] + k]) * 3 + c];
 }
 
-void PatchTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* y, double* H) const {
+void PatchTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* y,
+                                 double* H) const {
   if (!is_split(b)) return term_.add_second_order(source_[b], p, y, H);
   const int s = source_[b];
   const int size = term_.block_size(s);

@@ -41,8 +41,11 @@ class PatchTerm : public Term {
   int split_block_count() const { return split_count_; }
 
  private:
-  bool is_split(int b) const { return inside_offsets_[b + 1] - inside_offsets_[b] != term_.block_size(source_[b]); }
-  // The full vertex positions of split block b: inside ones from p, outside ones from the frozen state.
+  bool is_split(int b) const {
+    return inside_offsets_[b + 1] - inside_offsets_[b] != term_.block_size(source_[b]);
+  }
+  // The full vertex positions of split block b: inside ones from p, outside ones from the frozen
+  // state.
   void gather_full(int b, const Eigen::Vector3d* p, Eigen::Vector3d* full) const;
 
   const Term& term_;

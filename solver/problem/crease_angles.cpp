@@ -64,9 +64,10 @@ std::string creases_csv(const DogMesh& mesh, const Scenario& scenario, const Dof
     const auto& curve = mesh.stitching.curves[site.curve];
     const Eigen::Vector2d flat = mesh.stitching.points[site.point].flat;
     const auto it = target.find(site.point);
-    out << csv_line({std::to_string(site.point), std::to_string(site.curve), curve.id, enum_name(curve.fold),
-                     format_number(flat.x()), format_number(flat.y()),
-                     it != target.end() ? format_number(it->second) : std::string(), format_number(angles.at(k, x))});
+    out << csv_line({std::to_string(site.point), std::to_string(site.curve), curve.id,
+                     enum_name(curve.fold), format_number(flat.x()), format_number(flat.y()),
+                     it != target.end() ? format_number(it->second) : std::string(),
+                     format_number(angles.at(k, x))});
   }
   return out.str();
 }

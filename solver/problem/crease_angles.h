@@ -13,12 +13,13 @@ namespace sdog {
 /// How one crease folds against its angle targets (those of problem.angles).
 struct CreaseFold {
   int curve = 0;
-  int sites = 0;           ///< fold sites with an angle target
-  int bent = 0;            ///< of them bent by more than kBentDegrees
-  int against = 0;         ///< of the bent ones, bent against their target's sign
-  int against_near_tip = 0;  ///< of those, within kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h)
-  double target = 0;       ///< median target angle (degrees)
-  double angle = 0;        ///< median angle reached (degrees)
+  int sites = 0;    ///< fold sites with an angle target
+  int bent = 0;     ///< of them bent by more than kBentDegrees
+  int against = 0;  ///< of the bent ones, bent against their target's sign
+  int against_near_tip =
+      0;  ///< of those, within kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h)
+  double target = 0;        ///< median target angle (degrees)
+  double angle = 0;         ///< median angle reached (degrees)
   double median_error = 0;  ///< median |angle - target| (degrees)
 };
 /// Every crease with at least one angle target, in crease order.

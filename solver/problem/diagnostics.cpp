@@ -39,11 +39,14 @@ double angle_difference(double angle, double target) {
 
 bool near_fold_tip(const DogMesh& mesh, int point) {
   const Eigen::Vector2d& p = mesh.stitching.points[point].flat;
-  return std::any_of(mesh.fold_tips.begin(), mesh.fold_tips.end(),
-                     [&](const Eigen::Vector2d& tip) { return (p - tip).norm() <= kFoldTipRadius; });
+  return std::any_of(mesh.fold_tips.begin(), mesh.fold_tips.end(), [&](const Eigen::Vector2d& tip) {
+    return (p - tip).norm() <= kFoldTipRadius;
+  });
 }
 
-bool bent_against(double angle, double target) { return std::abs(angle) > kBentDegrees && angle * target < 0; }
+bool bent_against(double angle, double target) {
+  return std::abs(angle) > kBentDegrees && angle * target < 0;
+}
 
 AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x) {
   AngleAgreement a;
@@ -51,7 +54,8 @@ AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x) {
   for (int b = 0; b < problem.angles.block_count(); ++b) {
     const int point = problem.angles.point(b), k = problem.fold_angles.site_of(point);
     if (k < 0) continue;
-    const double target = problem.angles.target(b) * 180 / M_PI, angle = problem.fold_angles.at(k, x);
+    const double target = problem.angles.target(b) * 180 / M_PI,
+                 angle = problem.fold_angles.at(k, x);
     errors.push_back(std::abs(angle_difference(angle, target)));
     if (target == 0) continue;
     if (near_fold_tip(problem.mesh(), point)) {
@@ -91,7 +95,8 @@ Diagnostics diagnose(const DogProblem& problem, const Dofs& x) {
   });
   d.dog_l2 = std::sqrt(l2);
   for_each_block(problem.stitching, x, [&](int, const double* r, int) {
-    d.stitch_gap_max = std::max(d.stitch_gap_max, std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
+    d.stitch_gap_max =
+        std::max(d.stitch_gap_max, std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
   });
   d.angles_met = angle_agreement(problem, x);
   for (int b = 0; b < problem.isometry.block_count(); ++b) {
@@ -99,7 +104,8 @@ Diagnostics diagnose(const DogProblem& problem, const Dofs& x) {
     const double len = (vertex_of(x, v[0]) - vertex_of(x, v[1])).norm();
     const double strain = len / problem.isometry.rest_length(b) - 1;
     d.edge_strain_max = std::max(d.edge_strain_max, std::abs(strain));
-    if (problem.sheet_edges[b] && (std::abs(strain) > d.sheet_strain_max || d.sheet_strain_patch < 0)) {
+    if (problem.sheet_edges[b] &&
+        (std::abs(strain) > d.sheet_strain_max || d.sheet_strain_patch < 0)) {
       d.sheet_strain_max = std::abs(strain);
       d.sheet_strain_worst = strain;
       d.sheet_strain_patch = problem.mesh().vertex_patch[v[0]];
@@ -125,10 +131,12 @@ Fields fields(const DogProblem& problem, const Dofs& x) {
     int centre = 0;
     for (int j = 1; j < problem.bending.block_size(b); ++j)
       if (problem.bending.coefficient(b, j) > problem.bending.coefficient(b, centre)) centre = j;
-    out.bending[problem.bending.block_vertices(b)[centre]] = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    out.bending[problem.bending.block_vertices(b)[centre]] =
+        r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
   });
   for_each_block(problem.positions, x, [&](int b, const double* r, int) {
-    out.position_residual[problem.positions.block_vertices(b)[0]] = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    out.position_residual[problem.positions.block_vertices(b)[0]] =
+        std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
   });
   out.edge_strain.assign(mesh.quad_count(), 0.0);
   const Dofs& rest = problem.rest();
@@ -144,7 +152,8 @@ Fields fields(const DogProblem& problem, const Dofs& x) {
   const Eigen::MatrixX3d X = to_positions(x);
   for (const auto& pair : st.pairs) {
     const auto& copies = st.points[pair.point].copies;
-    const double gap = (DogMesh::position(X, copies[pair.a]) - DogMesh::position(X, copies[pair.b])).norm();
+    const double gap =
+        (DogMesh::position(X, copies[pair.a]) - DogMesh::position(X, copies[pair.b])).norm();
     out.stitch_gap[pair.point] = std::max(out.stitch_gap[pair.point], gap);
   }
   return out;

@@ -23,14 +23,17 @@ double angle_difference(double angle, double target);
 /// The fold angles against the angle targets (problem.angles): of the fold sites with a nonzero
 /// target, how many bend by more than kBentDegrees and how many of those bend the way their target
 /// says; and the median |angle - target| over every site with a target (degrees). Sites within
-/// kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h), where folds fade, are counted apart.
+/// kFoldTipRadius of a fold tip (geometry/pattern/fold_tips.h), where folds fade, are counted
+/// apart.
 struct AngleAgreement {
   int targeted_sites = 0, bent_sites = 0, bent_as_targeted = 0;
   int tip_sites = 0;    ///< sites with a nonzero target near a fold tip, not in the counts above
   int tip_against = 0;  ///< of them, bent by more than kBentDegrees against their target
   double median_error = 0;
   /// bent_as_targeted / bent_sites (1 when no site bends).
-  double direction_agreement() const { return bent_sites > 0 ? double(bent_as_targeted) / bent_sites : 1.0; }
+  double direction_agreement() const {
+    return bent_sites > 0 ? double(bent_as_targeted) / bent_sites : 1.0;
+  }
   /// Sites bent against their target (away from fold tips).
   int against() const { return bent_sites - bent_as_targeted; }
   /// Sites bent against their target, next to fold tips too.
@@ -44,12 +47,12 @@ bool bent_against(double angle, double target);
 AngleAgreement angle_agreement(const DogProblem& problem, const Dofs& x);
 
 struct Diagnostics {
-  double objective = 0;                     ///< weighted, with the problem's current weights
-  std::array<double, kTermCount> terms{};   ///< unweighted sum of squared residuals per term
-  double dog_max = 0;                       ///< |c|_inf of the DOG constraints
-  double dog_l2 = 0;                        ///< |c|_2
-  double stitch_gap_max = 0;                ///< largest distance between two copies of a crease point
-  double edge_strain_max = 0;               ///< largest |length / rest length - 1| over quad edges
+  double objective = 0;                    ///< weighted, with the problem's current weights
+  std::array<double, kTermCount> terms{};  ///< unweighted sum of squared residuals per term
+  double dog_max = 0;                      ///< |c|_inf of the DOG constraints
+  double dog_l2 = 0;                       ///< |c|_2
+  double stitch_gap_max = 0;   ///< largest distance between two copies of a crease point
+  double edge_strain_max = 0;  ///< largest |length / rest length - 1| over quad edges
   /// The same over the edges of the paper (DogProblem::sheet_edges), signed (< 0: shorter), and
   /// the patch of that edge (-1: none).
   double sheet_strain_max = 0;
@@ -57,7 +60,6 @@ struct Diagnostics {
   int sheet_strain_patch = -1;
   AngleAgreement angles_met;
 };
-
 
 Diagnostics diagnose(const DogProblem& problem, const Dofs& x);
 
@@ -69,8 +71,8 @@ struct Fields {
   std::vector<double> bending;            ///< per vertex: |r|^2 of its bending block
   std::vector<double> position_residual;  ///< per vertex: distance to its target (0 if free)
   std::vector<double> edge_strain;        ///< per quad: largest |length / rest - 1| of its edges
-  /// per crease point: max over its stitching pairs (a, b) of |p_a - p_b|, p = t x_v1 + (1 - t) x_v2
-  /// the position of a copy (its largest value is Diagnostics::stitch_gap_max)
+  /// per crease point: max over its stitching pairs (a, b) of |p_a - p_b|, p = t x_v1 + (1 - t)
+  /// x_v2 the position of a copy (its largest value is Diagnostics::stitch_gap_max)
   std::vector<double> stitch_gap;
 };
 Fields fields(const DogProblem& problem, const Dofs& x);

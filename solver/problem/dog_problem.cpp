@@ -5,12 +5,13 @@
 namespace sdog {
 
 const char* term_name(int index) {
-  static const char* names[kTermCount] = {"bending", "isometry", "positions", "edge_points",
-                                          "stitching", "angles", "fold_bias", "link"};
+  static const char* names[kTermCount] = {"bending",   "isometry", "positions", "edge_points",
+                                          "stitching", "angles",   "fold_bias", "link"};
   return names[index];
 }
 
-DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& w, double fold_sharpness)
+DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const Weights& w,
+                       double fold_sharpness)
     : weights(w),
       isometry(topology, to_dofs(mesh.V)),
       sites(fold_sites(mesh)),
@@ -23,11 +24,12 @@ DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const 
       rest_(to_dofs(mesh.V)),
       fold_sharpness_(fold_sharpness) {
   bending = make_bending_term(topology, rest_);
-  // A vertex lies on the paper when its cell corner lies in its patch: every corner of a cell wholly
-  // in the patch, and the corners a cut cell's piece keeps. An edge between two such vertices is
-  // paper unless a crease crosses it.
+  // A vertex lies on the paper when its cell corner lies in its patch: every corner of a cell
+  // wholly in the patch, and the corners a cut cell's piece keeps. An edge between two such
+  // vertices is paper unless a crease crosses it.
   std::vector<char> on_paper(mesh.vertex_count(), 0), cut(mesh.F.rows(), 0);
-  const Eigen::Vector2d corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // of F(q, 0..3) in cell coordinates
+  const Eigen::Vector2d corners[4] = {
+      {0, 0}, {1, 0}, {1, 1}, {0, 1}};  // of F(q, 0..3) in cell coordinates
   for (const auto& piece : mesh.quad_pieces) {
     cut[piece.quad] = 1;
     for (int k = 0; k < 4; ++k)
@@ -56,14 +58,22 @@ DogProblem::DogProblem(const DogMesh& mesh, const QuadTopology& topology, const 
 
 double DogProblem::effective_weight(int index) const {
   switch (index) {
-    case kBending: return weights.bending;
-    case kIsometry: return weights.isometry / std::max(1, isometry.edge_count());
-    case kPositions: return weights.positions;
-    case kEdgePoints: return weights.edge_points;
-    case kStitching: return weights.stitching;
-    case kAngles: return weights.angles;
-    case kFoldBias: return weights.fold_bias;
-    case kLink: return weights.link;
+    case kBending:
+      return weights.bending;
+    case kIsometry:
+      return weights.isometry / std::max(1, isometry.edge_count());
+    case kPositions:
+      return weights.positions;
+    case kEdgePoints:
+      return weights.edge_points;
+    case kStitching:
+      return weights.stitching;
+    case kAngles:
+      return weights.angles;
+    case kFoldBias:
+      return weights.fold_bias;
+    case kLink:
+      return weights.link;
   }
   return 0;
 }
@@ -78,10 +88,11 @@ void DogProblem::update_free_sites() {
 }
 
 std::vector<WeightedTerm> DogProblem::objective_terms() const {
-  const Term* terms[kTermCount] = {&bending, &isometry, &positions, &edge_points,
-                                   &stitching, &angles, &fold_bias, &link};
+  const Term* terms[kTermCount] = {&bending,   &isometry, &positions, &edge_points,
+                                   &stitching, &angles,   &fold_bias, &link};
   std::vector<WeightedTerm> out;
-  for (int k = 0; k < kTermCount; ++k) out.push_back({terms[k], effective_weight(k), k == kIsometry});
+  for (int k = 0; k < kTermCount; ++k)
+    out.push_back({terms[k], effective_weight(k), k == kIsometry});
   return out;
 }
 

@@ -8,15 +8,15 @@
 
 #include "geometry/mesh/dog_mesh.h"
 #include "geometry/mesh/quad_topology.h"
+#include "solver/problem/weights.h"
 #include "solver/terms/bending.h"
 #include "solver/terms/crease_geometry.h"
-#include "solver/terms/dog_constraints.h"
 #include "solver/terms/dihedral_angles.h"
+#include "solver/terms/dog_constraints.h"
 #include "solver/terms/fold_angles.h"
 #include "solver/terms/fold_bias.h"
 #include "solver/terms/isometry.h"
 #include "solver/terms/linear_point_term.h"
-#include "solver/problem/weights.h"
 #include "solver/terms/weighted_term.h"
 
 namespace sdog {
@@ -60,7 +60,8 @@ class DogProblem {
   Weights weights;
   LinearPointTerm bending{"bending"};
   IsometryTerm isometry;
-  LinearPointTerm positions{"positions"}, edge_points{"edge_points"}, stitching{"stitching"}, link{"link"};
+  LinearPointTerm positions{"positions"}, edge_points{"edge_points"}, stitching{"stitching"},
+      link{"link"};
   DihedralAngleTerm angles;
   std::vector<FoldSite> sites;  ///< every fold site of the mesh
   /// The fold sites without an angle block: the only ones the fold bias pushes and the fold test

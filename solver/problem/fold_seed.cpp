@@ -6,7 +6,8 @@
 namespace sdog {
 namespace {
 
-double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                        const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double len2 = ab.squaredNorm();
   const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
@@ -25,7 +26,9 @@ std::vector<bool> inside_own_patch(const DogMesh& mesh) {
         crossed[e.v1].push_back(e.v2);
         crossed[e.v2].push_back(e.v1);
       }
-  auto is_crossed = [&](int a, int b) { return std::find(crossed[a].begin(), crossed[a].end(), b) != crossed[a].end(); };
+  auto is_crossed = [&](int a, int b) {
+    return std::find(crossed[a].begin(), crossed[a].end(), b) != crossed[a].end();
+  };
   std::vector<std::vector<int>> neighbours(n);
   for (int q = 0; q < mesh.quad_count(); ++q)
     for (int k = 0; k < 4; ++k) {
@@ -42,8 +45,9 @@ std::vector<bool> inside_own_patch(const DogMesh& mesh) {
     for (const auto& curve : mesh.stitching.curves) {
       const int m = static_cast<int>(curve.points.size());
       for (int k = 0; k + 1 < m + (curve.closed ? 1 : 0); ++k)
-        dist[v] = std::min(dist[v], segment_distance(p, mesh.stitching.points[curve.points[k]].flat,
-                                                     mesh.stitching.points[curve.points[(k + 1) % m]].flat));
+        dist[v] = std::min(dist[v],
+                           segment_distance(p, mesh.stitching.points[curve.points[k]].flat,
+                                            mesh.stitching.points[curve.points[(k + 1) % m]].flat));
     }
   }
   std::vector<bool> inside(n, false);

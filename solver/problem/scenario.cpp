@@ -46,7 +46,8 @@ void Scenario::install(DogProblem& problem) const {
   problem.angles.clear();
   for (const auto& ac : angles) {
     const FoldSite* site = find_fold_site(problem.sites, ac.point);
-    if (!site) throw std::logic_error("crease point " + std::to_string(ac.point) + " is no fold site");
+    if (!site)
+      throw std::logic_error("crease point " + std::to_string(ac.point) + " is no fold site");
     problem.angles.add(dihedral_site(problem.mesh(), *site), 0);
   }
   problem.update_free_sites();
@@ -55,10 +56,13 @@ void Scenario::install(DogProblem& problem) const {
 
 void Scenario::apply(DogProblem& problem, double t) const {
   for (size_t k = 0; k < positions.size(); ++k)
-    problem.positions.set_target(static_cast<int>(k), positions[k].start + t * (positions[k].end - positions[k].start));
+    problem.positions.set_target(static_cast<int>(k),
+                                 positions[k].start + t * (positions[k].end - positions[k].start));
   for (size_t k = 0; k < angles.size(); ++k) {
     const auto& ac = angles[k];
-    problem.angles.set_target(static_cast<int>(k), (ac.start_degrees + t * (ac.end_degrees - ac.start_degrees)) * kDegree);
+    problem.angles.set_target(
+        static_cast<int>(k),
+        (ac.start_degrees + t * (ac.end_degrees - ac.start_degrees)) * kDegree);
   }
 }
 
@@ -81,11 +85,13 @@ Scenario corners_scenario(const DogMesh& mesh, int iterations, int hold) {
   if (c < 0) c = nearest_vertex(mesh, {mesh.xs.back(), mesh.ys.back()});
   const Eigen::Vector3d pa = mesh.V.row(a).transpose(), pc = mesh.V.row(c).transpose();
   s.positions.push_back({a, pa, pa});
-  s.positions.push_back({c, pc, Eigen::Vector3d(0.6 * pc.x(), 0.5 * (pc.y() + pa.y()), 0.4 * (pc.y() + pa.y()))});
+  s.positions.push_back(
+      {c, pc, Eigen::Vector3d(0.6 * pc.x(), 0.5 * (pc.y() + pa.y()), 0.4 * (pc.y() + pa.y()))});
   return s;
 }
 
-Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int hold, double percent) {
+Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int hold,
+                       double percent) {
   Scenario s;
   s.name = "fold";
   s.iterations = iterations;
@@ -96,7 +102,8 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int 
     s.curve_signs[c] = target > 0 ? 1.0 : target < 0 ? -1.0 : 0.0;
   }
   for (const auto& site : fold_sites(mesh))
-    s.angles.push_back({site.point, 0.0, percent / 100 * crease_fold_target(mesh, site.curve, degrees)});
+    s.angles.push_back(
+        {site.point, 0.0, percent / 100 * crease_fold_target(mesh, site.curve, degrees)});
   return s;
 }
 

@@ -7,7 +7,8 @@ namespace sdog {
 
 Targets Targets::of(const DogProblem& problem) {
   Targets t;
-  for (int b = 0; b < problem.positions.block_count(); ++b) t.positions.push_back(problem.positions.target(b));
+  for (int b = 0; b < problem.positions.block_count(); ++b)
+    t.positions.push_back(problem.positions.target(b));
   for (int b = 0; b < problem.angles.block_count(); ++b) {
     t.angles.push_back(problem.angles.target(b));
     t.angle_scales.push_back(std::pow(std::sin(problem.angles.alpha(b)), 2));
@@ -17,7 +18,8 @@ Targets Targets::of(const DogProblem& problem) {
 
 Targets Targets::met_by(const DogProblem& problem, const Dofs& x) {
   Targets t = of(problem);
-  std::vector<Eigen::Vector3d> p(std::max(problem.positions.max_block_size(), problem.angles.max_block_size()));
+  std::vector<Eigen::Vector3d> p(
+      std::max(problem.positions.max_block_size(), problem.angles.max_block_size()));
   for (int b = 0; b < problem.positions.block_count(); ++b) {
     gather_block(problem.positions, b, x, p.data());
     Eigen::Vector3d r;
@@ -32,8 +34,10 @@ Targets Targets::met_by(const DogProblem& problem, const Dofs& x) {
 }
 
 void Targets::install(DogProblem& problem) const {
-  for (size_t b = 0; b < positions.size(); ++b) problem.positions.set_target(static_cast<int>(b), positions[b]);
-  for (size_t b = 0; b < angles.size(); ++b) problem.angles.set_target(static_cast<int>(b), angles[b]);
+  for (size_t b = 0; b < positions.size(); ++b)
+    problem.positions.set_target(static_cast<int>(b), positions[b]);
+  for (size_t b = 0; b < angles.size(); ++b)
+    problem.angles.set_target(static_cast<int>(b), angles[b]);
 }
 
 bool Targets::matches(const Targets& other) const {
@@ -43,7 +47,8 @@ bool Targets::matches(const Targets& other) const {
 Targets Targets::towards(const Targets& other, double s) const {
   if (s >= 1) return other;  // exactly: a reached target is not "moved" by a rounding error
   Targets t = *this;
-  for (size_t b = 0; b < positions.size(); ++b) t.positions[b] += s * (other.positions[b] - positions[b]);
+  for (size_t b = 0; b < positions.size(); ++b)
+    t.positions[b] += s * (other.positions[b] - positions[b]);
   for (size_t b = 0; b < angles.size(); ++b) t.angles[b] += s * (other.angles[b] - angles[b]);
   return t;
 }

@@ -4,21 +4,22 @@
 
 namespace sdog {
 
-std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& curve, const std::optional<std::string>& id,
-                               const std::string& path) {
+std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& curve,
+                               const std::optional<std::string>& id, const std::string& path) {
   const auto& curves = mesh.stitching.curves;
   if (curve) {
     if (*curve < 0 || *curve >= static_cast<int>(curves.size()))
       throw InputError(path + ".curve: the pattern has " + std::to_string(curves.size()) +
-                       " creases (after cleaning; sdog mesh lists them), there is no crease " + std::to_string(*curve));
+                       " creases (after cleaning; sdog mesh lists them), there is no crease " +
+                       std::to_string(*curve));
     return {*curve};
   }
   std::vector<int> found;
   for (int k = 0; k < static_cast<int>(curves.size()); ++k)
     if (curves[k].id == *id) found.push_back(k);
   if (found.empty())
-    throw InputError(path + ".id: no crease of the pattern was drawn by an element with id \"" + *id +
-                     "\" (sdog mesh lists the creases with their elements)");
+    throw InputError(path + ".id: no crease of the pattern was drawn by an element with id \"" +
+                     *id + "\" (sdog mesh lists the creases with their elements)");
   return found;
 }
 

@@ -13,8 +13,8 @@ namespace sdog {
 
 /// The cleaned creases named by `curve` (one index) or `id` (every crease its element drew).
 /// Throws InputError naming `path` when there is no such crease.
-std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& curve, const std::optional<std::string>& id,
-                               const std::string& path);
+std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& curve,
+                               const std::optional<std::string>& id, const std::string& path);
 
 /// Sets each setting's assignment and angle on its creases, in the cleaned pattern and in the fine
 /// and coarse stitching curves. An assignment other than mountain or valley drops the angle; an

@@ -1,8 +1,8 @@
 #include "solver/run/flatten_scenario.h"
 
 #include "base/errors.h"
-#include "geometry/mesh/quad_topology.h"
 #include "base/text_format.h"
+#include "geometry/mesh/quad_topology.h"
 #include "solver/modes/standard_mode.h"
 #include "solver/run/run.h"
 

@@ -16,7 +16,8 @@ namespace sdog {
 
 /// Throws UsageError when the mesh has no fold sites or `degrees` is 0, SolverError when folding
 /// the start state fails.
-Scenario flatten_scenario(const DogMesh& mesh, const Weights& weights, const StandardOptions& options, double degrees,
-                          int iterations = 250, int hold = 50);
+Scenario flatten_scenario(const DogMesh& mesh, const Weights& weights,
+                          const StandardOptions& options, double degrees, int iterations = 250,
+                          int hold = 50);
 
 }  // namespace sdog

@@ -9,11 +9,12 @@
 namespace sdog {
 
 bool within_final_tolerance(const Diagnostics& d, double final_constraint_tolerance) {
-  return d.dog_max <= 2 * final_constraint_tolerance && d.stitch_gap_max <= 2 * final_constraint_tolerance;
+  return d.dog_max <= 2 * final_constraint_tolerance &&
+         d.stitch_gap_max <= 2 * final_constraint_tolerance;
 }
 
-IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
-                              int iterations_left) {
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                              int iteration, int iterations_left) {
   IterationReport report;
   report.iteration = iteration;
   report.mode = mode.name();
@@ -28,10 +29,11 @@ IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& s
   report.iteration_ms = ms_since(t0);
   report.diagnostics = diagnose(problem, x);
   const Diagnostics& d = report.diagnostics;
-  if (!report.step.failed && (!std::isfinite(d.objective) || !(d.dog_max <= kDivergedDogResidual))) {
+  if (!report.step.failed &&
+      (!std::isfinite(d.objective) || !(d.dog_max <= kDivergedDogResidual))) {
     report.step.failed = true;
-    report.step.failure = "the state diverged (DOG residual " + format_number(d.dog_max) + ", objective " +
-                          format_number(d.objective) + ")";
+    report.step.failure = "the state diverged (DOG residual " + format_number(d.dog_max) +
+                          ", objective " + format_number(d.objective) + ")";
   }
   if (report.step.failed) {
     x = x_before;

@@ -68,12 +68,12 @@ bool within_final_tolerance(const Diagnostics& d, double final_constraint_tolera
 /// this one (0: the last, which ends on the final constraint tolerance), or
 /// IterationContext::kOpenEnded. An iteration that fails or diverges (kDivergedDogResidual) is
 /// reported failed with its diagnostics and leaves x as it found it.
-IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x, int iteration,
-                              int iterations_left);
+IterationReport run_iteration(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
+                              int iteration, int iterations_left);
 
-/// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a mode
-/// switch), or nullptr to keep the current one. The returned mode must stay alive until the run
-/// ends or the next switch.
+/// Called before iteration k (1-based) with the state x: a mode to compute the run from k on (a
+/// mode switch), or nullptr to keep the current one. The returned mode must stay alive until the
+/// run ends or the next switch.
 using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
 
 /// Runs iterations 1 .. scenario.iterations + scenario.hold from x (updated). `problem` is the fine
@@ -81,7 +81,8 @@ using ModeSchedule = std::function<Mode*(int iteration, const Dofs& x)>;
 /// first failed or diverged iteration (x keeps the last good state) or when `cancel` becomes true.
 /// `schedule` may switch modes during the run.
 RunSummary run_scenario(Mode& mode, DogProblem& problem, const Scenario& scenario, Dofs& x,
-                        const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr,
+                        const std::vector<RunObserver*>& observers,
+                        const std::atomic<bool>* cancel = nullptr,
                         const ModeSchedule& schedule = {});
 
 }  // namespace sdog

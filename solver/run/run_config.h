@@ -47,9 +47,10 @@ struct EnumNames<Preset> {
 
 /// A position constraint before it is resolved against a mesh.
 struct PositionSpec {
-  std::string path;                      ///< source and JSON path, for messages
-  std::optional<int> vertex;             ///< fine vertex index ...
-  std::optional<Eigen::Vector2d> near;   ///< ... or the vertex nearest this flat-state point (sheet units)
+  std::string path;           ///< source and JSON path, for messages
+  std::optional<int> vertex;  ///< fine vertex index ...
+  std::optional<Eigen::Vector2d>
+      near;  ///< ... or the vertex nearest this flat-state point (sheet units)
   std::optional<Eigen::Vector3d> start;  ///< mesh units; default: the vertex's flat position
   std::optional<Eigen::Vector3d> end;    ///< absolute target, mesh units ...
   std::optional<Eigen::Vector3d> move;   ///< ... or displacement from start
@@ -66,9 +67,9 @@ struct AngleSpec {
   double end_degrees = 0;
 };
 
-/// A crease's assignment and fold angle, set by the configuration over the drawing's: for the crease
-/// with index `curve` among the cleaned creases (as `sdog mesh` lists them), or for every cleaned
-/// crease drawn by the SVG element `id`.
+/// A crease's assignment and fold angle, set by the configuration over the drawing's: for the
+/// crease with index `curve` among the cleaned creases (as `sdog mesh` lists them), or for every
+/// cleaned crease drawn by the SVG element `id`.
 struct CreaseSetting {
   std::string path;  ///< source and JSON path, for messages
   std::optional<int> curve;
@@ -94,12 +95,14 @@ constexpr int kThesisProjectionSteps = 100;
 
 /// The run's configuration: the options of every mode (ModeOptions) and what the run asks for.
 struct RunConfig : ModeOptions {
-  Preset preset = Preset::kDefault;  ///< the preset the solver options started from
+  Preset preset = Preset::kDefault;                ///< the preset the solver options started from
   ScenarioKind scenario = ScenarioKind::kCorners;  ///< kNone: only the listed constraints
   int iterations = 250;                            ///< iterations over which targets move
   int hold = 50;                                   ///< iterations with the final targets
-  double fold_angle = 90;  ///< degrees: the fold scenario's final dihedral angle, the flatten scenario's start
-  double fold_percent = 100;  ///< how far the fold scenario folds: this share of every crease's angle
+  double fold_angle =
+      90;  ///< degrees: the fold scenario's final dihedral angle, the flatten scenario's start
+  double fold_percent =
+      100;  ///< how far the fold scenario folds: this share of every crease's angle
   Weights weights;
   std::vector<PositionSpec> positions;
   std::vector<AngleSpec> angles;
@@ -110,7 +113,8 @@ struct RunConfig : ModeOptions {
 /// Sets the options and weights a preset decides (the others keep their values).
 void apply_preset(Preset preset, RunConfig& config);
 
-/// The keys of the configuration's top level that hold one value: scenario, iterations, hold, angle.
+/// The keys of the configuration's top level that hold one value: scenario, iterations, hold,
+/// angle.
 const OptionTable<RunConfig>& run_option_table();
 
 /// Checks the values: an Error of `kind` ("source: $.path: why"); kUsage when they all come from

@@ -12,7 +12,9 @@ std::string number(double v) {
   return buf;
 }
 
-std::string count(int v) { return std::to_string(v); }
+std::string count(int v) {
+  return std::to_string(v);
+}
 
 template <class Row>
 struct Column {
@@ -51,7 +53,9 @@ const std::vector<Column<IterationReport>>& run_columns() {
       {"restoration_steps", [](const R& r) { return count(r.step.work.restoration_steps); }},
       {"mode", [](const R& r) { return r.mode; }},
       {"converged",
-       [](const R& r) { return r.step.converged ? std::string(*r.step.converged ? "1" : "0") : std::string(); }},
+       [](const R& r) {
+         return r.step.converged ? std::string(*r.step.converged ? "1" : "0") : std::string();
+       }},
       {"target_fraction", [](const R& r) { return number(r.step.target_fraction); }},
       {"settling", [](const R& r) { return r.step.stage; }},
       {"elapsed_ms", [](const R& r) { return number(r.elapsed_ms); }},
@@ -117,13 +121,25 @@ std::string header(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::vector<std::string> run_csv_columns() { return names(run_columns()); }
-std::string run_csv_header() { return header(run_csv_columns()); }
-std::string run_csv_row(const IterationReport& r) { return line(run_columns(), r); }
-std::vector<std::string> run_csv_time_columns() { return {"iteration_ms", "factor_ms"}; }
+std::vector<std::string> run_csv_columns() {
+  return names(run_columns());
+}
+std::string run_csv_header() {
+  return header(run_csv_columns());
+}
+std::string run_csv_row(const IterationReport& r) {
+  return line(run_columns(), r);
+}
+std::vector<std::string> run_csv_time_columns() {
+  return {"iteration_ms", "factor_ms"};
+}
 
-std::vector<std::string> patches_csv_columns() { return names(patch_columns()); }
-std::string patches_csv_header() { return header(patches_csv_columns()); }
+std::vector<std::string> patches_csv_columns() {
+  return names(patch_columns());
+}
+std::string patches_csv_header() {
+  return header(patches_csv_columns());
+}
 
 std::string patches_csv_rows(const IterationReport& r) {
   std::string rows;

@@ -20,10 +20,10 @@ std::vector<std::string> run_csv_time_columns();
 /// The per-patch log of the multi-patch modes (patches.csv): one row per patch and iteration,
 ///   iteration, mode, patch, thread, start_ms, ms, linear_ms, steps, factorizations, objective,
 ///   dog_max, converged
-/// (solver/patches/patch_report.h). `thread` is the TBB worker that ran the solve and `start_ms` when it
-/// started, from the start of the patch round: together a timeline of thread use. Iterations of a
-/// single-mesh mode have no rows. With the colour sweep an iteration has several rounds: times and
-/// counts are summed over them, start and thread are those of the first.
+/// (solver/patches/patch_report.h). `thread` is the TBB worker that ran the solve and `start_ms`
+/// when it started, from the start of the patch round: together a timeline of thread use.
+/// Iterations of a single-mesh mode have no rows. With the colour sweep an iteration has several
+/// rounds: times and counts are summed over them, start and thread are those of the first.
 std::vector<std::string> patches_csv_columns();
 std::string patches_csv_header();
 std::string patches_csv_rows(const IterationReport& r);
@@ -43,7 +43,9 @@ class RunCsv : public RunObserver {
 class PatchesCsv : public RunObserver {
  public:
   PatchesCsv() : text_(patches_csv_header()) {}
-  void on_iteration(const IterationReport& r, const Dofs&) override { text_ += patches_csv_rows(r); }
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    text_ += patches_csv_rows(r);
+  }
   bool empty() const { return text_.size() == patches_csv_header().size(); }
   const std::string& text() const { return text_; }
 

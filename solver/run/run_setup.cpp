@@ -27,8 +27,9 @@ Scenario named_scenario(const RunConfig& c, const DogMesh& mesh) {
 int resolve_vertex(const PositionSpec& p, const DogMesh& mesh) {
   if (p.vertex) {
     if (*p.vertex >= mesh.vertex_count())
-      throw InputError(p.path + ".vertex: the fine mesh has " + std::to_string(mesh.vertex_count()) +
-                       " vertices, there is no vertex " + std::to_string(*p.vertex));
+      throw InputError(p.path + ".vertex: the fine mesh has " +
+                       std::to_string(mesh.vertex_count()) + " vertices, there is no vertex " +
+                       std::to_string(*p.vertex));
     return *p.vertex;
   }
   const Eigen::Vector2d target = mesh.to_mesh(*p.near);
@@ -65,8 +66,11 @@ void add_angles(const RunConfig& c, const DogMesh& mesh, Scenario& s) {
       for (const auto& site : sites) found = found || site.point == *a.point;
       if (!found)
         throw InputError(a.path + ".crease_point: crease point " + std::to_string(*a.point) +
-                         " is not a fold site (an interior crease point on an edge between two patches; the mesh "
-                         "has " + std::to_string(sites.size()) + " of them, see `sdog mesh --out` creases.vtp)");
+                         " is not a fold site (an interior crease point on an edge between two "
+                         "patches; the mesh "
+                         "has " +
+                         std::to_string(sites.size()) +
+                         " of them, see `sdog mesh --out` creases.vtp)");
       s.angles.push_back({*a.point, a.start_degrees, a.end_degrees});
       for (const auto& site : sites)
         if (site.point == *a.point) set_sign(site.curve, a.end_degrees);
@@ -86,7 +90,8 @@ ModeSchedule switch_schedule(DogProblem& problem, const Scenario& scenario, cons
                              const DogModel& model, std::unique_ptr<Mode>& current) {
   return [&, next = size_t{0}](int k, const Dofs& x) mutable -> Mode* {
     if (next >= config.switches.size() || config.switches[next].iteration != k) return nullptr;
-    current = switch_mode(config.switches[next++].mode, problem, scenario, config, config.weights, model, x);
+    current = switch_mode(config.switches[next++].mode, problem, scenario, config, config.weights,
+                          model, x);
     return current.get();
   };
 }
@@ -105,9 +110,10 @@ Scenario make_scenario(const RunConfig& c, const DogMesh& mesh) {
 void check_scenario_targets(const Scenario& s, const RunConfig& c, const std::string& where) {
   if (!s.positions.empty() || !s.angles.empty()) return;
   if (c.scenario == ScenarioKind::kFold)
-    throw UsageError("the fold scenario found no fold sites in " + where +
-                     " (crease points strictly inside a grid edge between two patches; creases through grid "
-                     "vertices only have none: try another resolution)");
+    throw UsageError(
+        "the fold scenario found no fold sites in " + where +
+        " (crease points strictly inside a grid edge between two patches; creases through grid "
+        "vertices only have none: try another resolution)");
   throw UsageError(std::string("the run has no targets: scenario '") + enum_name(c.scenario) +
                    "' and no position or angle constraints in the configuration");
 }
@@ -127,9 +133,12 @@ RunSetup::RunSetup(const DogModel& model, ModeKind mode, const RunConfig& config
 
 RunSetup::~RunSetup() = default;
 
-std::string RunSetup::where() const { return model_.pattern.source + " at " + model_.fine_res.str(); }
+std::string RunSetup::where() const {
+  return model_.pattern.source + " at " + model_.fine_res.str();
+}
 
-RunSummary RunSetup::run(const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel) {
+RunSummary RunSetup::run(const std::vector<RunObserver*>& observers,
+                         const std::atomic<bool>* cancel) {
   return run_scenario(*mode_, *problem_, scenario_, x_, observers, cancel,
                       switch_schedule(*problem_, scenario_, config_, model_, mode_));
 }

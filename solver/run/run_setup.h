@@ -24,7 +24,8 @@ Scenario make_scenario(const RunConfig& config, const DogMesh& mesh);
 
 /// Throws UsageError when the scenario has no targets (the fold scenario on a pattern without fold
 /// sites at this resolution, `none` without constraints); `where` names the pattern and resolution.
-void check_scenario_targets(const Scenario& scenario, const RunConfig& config, const std::string& where);
+void check_scenario_targets(const Scenario& scenario, const RunConfig& config,
+                            const std::string& where);
 
 /// A run of `mode` over the configuration's scenario on the model's fine mesh, from the
 /// scenario's start state, with the configuration's mode switches.
@@ -54,7 +55,8 @@ class RunSetup {
   std::string where() const;
 
   /// Runs every iteration of the scenario (or until it fails or `cancel` is raised).
-  RunSummary run(const std::vector<RunObserver*>& observers, const std::atomic<bool>* cancel = nullptr);
+  RunSummary run(const std::vector<RunObserver*>& observers,
+                 const std::atomic<bool>* cancel = nullptr);
 
  private:
   const DogModel& model_;

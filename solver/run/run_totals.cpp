@@ -6,7 +6,9 @@
 
 namespace sdog {
 
-bool in_timing_window(int iteration) { return iteration >= 10 && iteration <= 240; }
+bool in_timing_window(int iteration) {
+  return iteration >= 10 && iteration <= 240;
+}
 
 double median_iteration_ms(const std::vector<double>& iteration_ms) {
   std::vector<double> window;

@@ -20,13 +20,13 @@ class RunTotals : public RunObserver {
   explicit RunTotals(double dog_tolerance = 0) : dog_tolerance_(dog_tolerance) {}
   void on_iteration(const IterationReport& r, const Dofs& x) override;
 
-  Work work;             ///< of every iteration
-  Work window_work;      ///< of the iterations in the timing window
+  Work work;         ///< of every iteration
+  Work window_work;  ///< of the iterations in the timing window
   int window_iterations = 0;
   std::vector<double> iteration_ms;
-  double worst_dog = 0;   ///< largest DOG residual after any iteration
+  double worst_dog = 0;  ///< largest DOG residual after any iteration
   int worst_iteration = 0;
-  int dog_misses = 0;     ///< iterations that ended above the DOG tolerance
+  int dog_misses = 0;  ///< iterations that ended above the DOG tolerance
   /// median_iteration_ms of the run.
   double median_window_ms() const { return median_iteration_ms(iteration_ms); }
 

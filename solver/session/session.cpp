@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "base/errors.h"
-#include "solver/problem/fold_seed.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/problem/fold_seed.h"
 #include "solver/run/crease_settings.h"
 #include "solver/run/run_setup.h"
 
@@ -27,7 +27,8 @@ void Session::apply_creases() {
     model_.clean.creases[k].fold = source_.clean.creases[k].fold;
     model_.clean.creases[k].angle = source_.clean.creases[k].angle;
   }
-  for (const auto& [to, from] : {std::pair{&model_.fine, &source_.fine}, std::pair{&model_.coarse, &source_.coarse}})
+  for (const auto& [to, from] :
+       {std::pair{&model_.fine, &source_.fine}, std::pair{&model_.coarse, &source_.coarse}})
     for (size_t k = 0; k < to->stitching.curves.size(); ++k) {
       to->stitching.curves[k].fold = from->stitching.curves[k].fold;
       to->stitching.curves[k].angle = from->stitching.curves[k].angle;
@@ -45,17 +46,21 @@ void Session::rebuild() {
   base.erase(std::remove_if(base.begin(), base.end(),
                             [&](const auto& p) {
                               return std::any_of(user_.handles.begin(), user_.handles.end(),
-                                                 [&](const UserConstraints::Handle& h) { return h.vertex == p.vertex; });
+                                                 [&](const UserConstraints::Handle& h) {
+                                                   return h.vertex == p.vertex;
+                                                 });
                             }),
              base.end());
   for (const auto& h : user_.handles) scenario_.positions.push_back({h.vertex, h.target, h.target});
   for (const auto& a : user_.angles)
     scenario_.angles.push_back({a.crease_point, a.degrees, a.degrees});
-  mode_ = switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_, &origin_);
+  mode_ =
+      switch_mode(mode_kind_, *problem_, scenario_, config_, config_.weights, model_, x_, &origin_);
 }
 
 IterationReport Session::step() {
-  const IterationReport report = run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, IterationContext::kOpenEnded);
+  const IterationReport report =
+      run_iteration(*mode_, *problem_, scenario_, x_, iteration_ + 1, IterationContext::kOpenEnded);
   if (!report.step.failed) ++iteration_;
   return report;
 }
@@ -95,7 +100,9 @@ void Session::edit(const UserConstraints& next, const std::string& name, bool me
   rebuild();
 }
 
-int Session::add_handle(int vertex) { return add_handles({vertex}); }
+int Session::add_handle(int vertex) {
+  return add_handles({vertex});
+}
 
 int Session::add_handles(const std::vector<int>& vertices) {
   if (vertices.empty()) throw InputError("no vertices to make handles of");
@@ -103,7 +110,8 @@ int Session::add_handles(const std::vector<int>& vertices) {
   const int first = static_cast<int>(user_.handles.size());
   UserConstraints next = user_;
   for (int v : vertices) next.handles.push_back({v, Eigen::Vector3d(vertex_of(x_, v))});
-  edit(next, vertices.size() == 1 ? "make handle" : "make " + std::to_string(vertices.size()) + " handles");
+  edit(next, vertices.size() == 1 ? "make handle"
+                                  : "make " + std::to_string(vertices.size()) + " handles");
   return first;
 }
 
@@ -136,8 +144,8 @@ void Session::remove_handle(int handle) {
 int Session::add_angle(int crease_point, double degrees) {
   const auto& points = model_.fine.stitching.points;
   if (crease_point < 0 || crease_point >= static_cast<int>(points.size()))
-    throw InputError("crease point " + std::to_string(crease_point) + " does not exist (there are " +
-                     std::to_string(points.size()) + ")");
+    throw InputError("crease point " + std::to_string(crease_point) +
+                     " does not exist (there are " + std::to_string(points.size()) + ")");
   if (points[crease_point].copies.size() != 2)
     throw InputError("crease point " + std::to_string(crease_point) + " lies between " +
                      std::to_string(points[crease_point].copies.size()) +
@@ -145,7 +153,8 @@ int Session::add_angle(int crease_point, double degrees) {
   if (!find_fold_site(problem_->sites, crease_point))
     throw InputError("crease point " + std::to_string(crease_point) +
                      " is no fold site (it lies on a grid vertex or at the end of its crease)");
-  if (!(std::abs(degrees) <= 180)) throw InputError("a dihedral angle must be in [-180, 180] degrees");
+  if (!(std::abs(degrees) <= 180))
+    throw InputError("a dihedral angle must be in [-180, 180] degrees");
   // A flat sheet is a symmetric point of the angle constraint (no out-of-plane gradient): tilt it
   // towards the requested fold first, as the fold scenario's start state does.
   if ((x_ - problem_->rest()).lpNorm<Eigen::Infinity>() < 1e-12) {
@@ -174,18 +183,22 @@ void Session::set_constraints(const UserConstraints& constraints) {
   edit(constraints, "set the constraints");
 }
 
-void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle) {
+void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fold,
+                          std::optional<double> angle) {
   const auto& existing = model_.fine.stitching.curves;
   if (curves.empty()) throw InputError("no crease to set: pick one first");
   for (int k : curves)
     if (k < 0 || k >= static_cast<int>(existing.size()))
       throw InputError("crease " + std::to_string(k) + " does not exist (the pattern has " +
                        std::to_string(existing.size()) + " creases after cleaning)");
-  if (angle && !(*angle >= 0 && *angle <= 180)) throw InputError("a fold angle must be in [0, 180] degrees");
+  if (angle && !(*angle >= 0 && *angle <= 180))
+    throw InputError("a fold angle must be in [0, 180] degrees");
   if (!fold && !angle) return;
-  const std::string what = fold ? enum_name(*fold) : std::to_string(static_cast<int>(std::lround(*angle))) + " degrees";
+  const std::string what =
+      fold ? enum_name(*fold) : std::to_string(static_cast<int>(std::lround(*angle))) + " degrees";
   undo_.push_back({user_, config_.creases,
-                   (curves.size() == 1 ? "set crease " + std::to_string(curves[0]) : "set " + std::to_string(curves.size()) + " creases") +
+                   (curves.size() == 1 ? "set crease " + std::to_string(curves[0])
+                                       : "set " + std::to_string(curves.size()) + " creases") +
                        " " + what});
   redo_.clear();
   for (int k : curves) {
@@ -234,8 +247,12 @@ void Session::set_fold_percent(double percent) {
   rebuild();
 }
 
-bool Session::undo() { return travel(undo_, redo_); }
-bool Session::redo() { return travel(redo_, undo_); }
+bool Session::undo() {
+  return travel(undo_, redo_);
+}
+bool Session::redo() {
+  return travel(redo_, undo_);
+}
 
 bool Session::travel(std::vector<EditState>& from, std::vector<EditState>& to) {
   if (from.empty()) return false;
@@ -244,7 +261,8 @@ bool Session::travel(std::vector<EditState>& from, std::vector<EditState>& to) {
   const bool creases_change = config_.creases != from.back().creases;
   config_.creases = from.back().creases;
   from.pop_back();
-  if (creases_change) apply_creases();  // the problem and scenario are rebuilt only when they change
+  if (creases_change)
+    apply_creases();  // the problem and scenario are rebuilt only when they change
   rebuild();
   return true;
 }

@@ -64,7 +64,8 @@ class Session {
   /// The base scenario's targets no longer move: its time has reached 1, or it has none that move
   /// (none, flatten).
   bool scenario_done() const {
-    return time() >= 1 || config_.scenario == ScenarioKind::kNone || config_.scenario == ScenarioKind::kFlatten;
+    return time() >= 1 || config_.scenario == ScenarioKind::kNone ||
+           config_.scenario == ScenarioKind::kFlatten;
   }
   /// Iterations taken since the start or the last reset.
   int iteration() const { return iteration_; }
@@ -108,15 +109,16 @@ class Session {
   /// config().creases. The base scenario and the problem are rebuilt; the positions stay (the
   /// fold scenario goes on from the current shape). Throws InputError for a crease that does not
   /// exist or an angle out of range.
-  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle);
+  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold,
+                   std::optional<double> angle);
   /// Starts the fold scenario (config().scenario becomes fold) from the flat sheet tilted towards
   /// the assignments; the constraints and the undo history stay. Throws UsageError when the
   /// pattern has no fold sites at this resolution.
   void fold();
-  /// The fold amount (0 to 100% of every crease's angle, config().fold_percent): the fold scenario's
-  /// targets move there from the current shape, which folds or unfolds the sheet as the session
-  /// steps; starts the fold scenario (fold()) when another one runs. Not an undoable edit (a view of
-  /// the fold, like Origami Simulator's fold percent). Throws InputError out of range.
+  /// The fold amount (0 to 100% of every crease's angle, config().fold_percent): the fold
+  /// scenario's targets move there from the current shape, which folds or unfolds the sheet as the
+  /// session steps; starts the fold scenario (fold()) when another one runs. Not an undoable edit
+  /// (a view of the fold, like Origami Simulator's fold percent). Throws InputError out of range.
   void set_fold_percent(double percent);
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }

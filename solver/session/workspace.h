@@ -4,12 +4,12 @@
 // `sdog run --config` reads it), the user's constraints, the camera and the current positions.
 //
 //   {"format": "sdog-workspace", "version": 1,
-//    "pattern": "four_corner_arcs.svg",          (relative paths are relative to the workspace file)
-//    "resolution": "21x21", "mode": "standard", "iteration": 40,
-//    "config": {...run configuration...},
-//    "handles": [{"vertex": 12, "target": [x, y, z]}], "angles": [{"crease_point": 3, "degrees": 60}],
-//    "camera": {...} or null,                     (the view's own format; kept as it is)
-//    "positions": [[x, y, z], ...]}               (fine vertices; empty: the start state)
+//    "pattern": "four_corner_arcs.svg",          (relative paths are relative to the workspace
+//    file) "resolution": "21x21", "mode": "standard", "iteration": 40, "config": {...run
+//    configuration...}, "handles": [{"vertex": 12, "target": [x, y, z]}], "angles":
+//    [{"crease_point": 3, "degrees": 60}], "camera": {...} or null,                     (the view's
+//    own format; kept as it is) "positions": [[x, y, z], ...]}               (fine vertices; empty:
+//    the start state)
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -30,8 +30,8 @@ struct Workspace {
 };
 
 /// The workspace of a session (pattern path and resolution given by the caller).
-Workspace workspace_of(const Session& session, const std::string& pattern, const std::string& resolution,
-                       const nlohmann::json& camera);
+Workspace workspace_of(const Session& session, const std::string& pattern,
+                       const std::string& resolution, const nlohmann::json& camera);
 
 nlohmann::json to_json(const Workspace& w);
 /// Throws InputError naming `source` and the JSON path of what is wrong.

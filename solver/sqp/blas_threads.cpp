@@ -20,7 +20,8 @@ int default_blas_threads() {
 using SetInt = void (*)(int);
 
 void serial_openmp_regions() {
-  static const auto levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+  static const auto levels =
+      reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
   // With no active levels allowed every parallel region runs on one thread (also regions with an
   // explicit num_threads clause, which OMP_NUM_THREADS cannot limit).
   if (levels) levels(0);
@@ -33,7 +34,8 @@ std::string blas_description() {
 }
 
 bool set_blas_threads(int n) {
-  static const auto threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  static const auto threads =
+      reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   serial_openmp_regions();
   if (!threads) return false;
   threads(n);

@@ -26,7 +26,8 @@ SymmetricBlockMatrix::SymmetricBlockMatrix(int vertex_count, const std::vector<c
   std::vector<int> outer(n + 1, 0);
   for (int b = 0; b < vertex_count; ++b)
     for (int c = 0; c < 3; ++c)
-      outer[3 * b + c + 1] = outer[3 * b + c] + (3 - c) + 3 * (static_cast<int>(rows_of_[b].size()) - 1);
+      outer[3 * b + c + 1] =
+          outer[3 * b + c] + (3 - c) + 3 * (static_cast<int>(rows_of_[b].size()) - 1);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(outer[n]);
   for (int b = 0; b < vertex_count; ++b)
@@ -67,12 +68,14 @@ void SymmetricBlockMatrix::add_dense(const int* vertices, int k, const double* H
       const int position = 3 * rank(a, b);  // as in slot(), looked up once for the whole block
       for (int c = 0; c < 3; ++c) {
         double* column = values + outer[3 * b + c] + position - c;
-        for (int r = (a == b ? c : 0); r < 3; ++r) column[r] += scale * H[(3 * i + r) * cols + 3 * j + c];
+        for (int r = (a == b ? c : 0); r < 3; ++r)
+          column[r] += scale * H[(3 * i + r) * cols + 3 * j + c];
       }
     }
 }
 
-void SymmetricBlockMatrix::add_gram(const int* vertices, int k, const double* J, int m, double scale) {
+void SymmetricBlockMatrix::add_gram(const int* vertices, int k, const double* J, int m,
+                                    double scale) {
   // Small dense J^T J (at most 3k <= 48 columns).
   const int cols = 3 * k;
   if (k > 16) throw std::logic_error("block with more than 16 vertices");

@@ -22,7 +22,8 @@ struct CholmodFactor::Impl {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& K) : impl_(std::make_unique<Impl>()) {
+CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& K)
+    : impl_(std::make_unique<Impl>()) {
   cholmod_common& c = impl_->llt.cholmod();
   c.print = 0;  // libraries do not print
   c.nmethods = 1;
@@ -42,6 +43,8 @@ bool CholmodFactor::factorize(const Eigen::SparseMatrix<double>& K, double shift
   return impl_->llt.info() == Eigen::Success;
 }
 
-Eigen::VectorXd CholmodFactor::solve(const Eigen::VectorXd& rhs) const { return impl_->llt.solve(rhs); }
+Eigen::VectorXd CholmodFactor::solve(const Eigen::VectorXd& rhs) const {
+  return impl_->llt.solve(rhs);
+}
 
 }  // namespace sdog

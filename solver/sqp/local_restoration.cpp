@@ -12,7 +12,8 @@ LocalRestoration::LocalRestoration(int vertex_count, const Term& constraints, in
     first_row_.push_back(row);
     for (int i = 0; i < constraints.residual_count(b); ++i) row_block_.push_back(b);
     row += constraints.residual_count(b);
-    for (int j = 0; j < constraints.block_size(b); ++j) vertex_blocks_[constraints.block_vertices(b)[j]].push_back(b);
+    for (int j = 0; j < constraints.block_size(b); ++j)
+      vertex_blocks_[constraints.block_vertices(b)[j]].push_back(b);
   }
 }
 
@@ -44,7 +45,8 @@ std::vector<int> LocalRestoration::neighbourhood(const Eigen::VectorXd& c, doubl
 
 bool LocalRestoration::step(const std::vector<int>& vertices, const Eigen::VectorXd& c,
                             const Eigen::SparseMatrix<double, Eigen::RowMajor>& J,
-                            const Eigen::SparseMatrix<double>& H, double rho, double delta, Eigen::VectorXd& d) const {
+                            const Eigen::SparseMatrix<double>& H, double rho, double delta,
+                            Eigen::VectorXd& d) const {
   if (vertices.empty()) return false;
   // Local dof numbering, increasing with the global one (keeps H's lower triangle lower).
   std::vector<int> local(J.cols(), -1);

@@ -28,8 +28,9 @@ class LocalRestoration {
   /// current point; H is the lower triangle of the objective Hessian (3n x 3n). Returns false when
   /// the neighbourhood is empty or the local factorisation fails.
   bool step(const std::vector<int>& vertices, const Eigen::VectorXd& c,
-            const Eigen::SparseMatrix<double, Eigen::RowMajor>& J, const Eigen::SparseMatrix<double>& H, double rho,
-            double delta, Eigen::VectorXd& d) const;
+            const Eigen::SparseMatrix<double, Eigen::RowMajor>& J,
+            const Eigen::SparseMatrix<double>& H, double rho, double delta,
+            Eigen::VectorXd& d) const;
 
  private:
   const Term& constraints_;

@@ -111,7 +111,8 @@ void SqpSolver::linearize(const Dofs& x, Linearization& lin, bool hessian, bool 
       for (int i = 0; i < m; ++i) {
         lin.f += wt.weight * r[i] * r[i];
         for (int j = 0; j < k; ++j)
-          for (int c = 0; c < 3; ++c) lin.g[3 * v[j] + c] += 2 * wt.weight * J[i * cols + 3 * j + c] * r[i];
+          for (int c = 0; c < 3; ++c)
+            lin.g[3 * v[j] + c] += 2 * wt.weight * J[i * cols + 3 * j + c] * r[i];
       }
       if (!hessian || t.is_linear()) continue;
       m_.H.add_gram(v, k, J.data(), m, 2 * wt.weight);
@@ -134,7 +135,8 @@ bool SqpSolver::relinearize(const Dofs& x, Linearization& lin, SqpReport& report
   return std::isfinite(lin.f) && lin.g.allFinite() && lin.c.allFinite();
 }
 
-void SqpSolver::fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian, bool curvature) {
+void SqpSolver::fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian,
+                                 bool curvature) {
   c.resize(rows_.count);
   J = rows_.pattern;
   double* values = J.valuePtr();
@@ -165,7 +167,8 @@ void SqpSolver::fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J
   }
 }
 
-SqpSolver::Linearization SqpSolver::linearization(const Dofs& x, double rho, Eigen::SparseMatrix<double>* K) {
+SqpSolver::Linearization SqpSolver::linearization(const Dofs& x, double rho,
+                                                  Eigen::SparseMatrix<double>* K) {
   Linearization lin;
   linearize(x, lin, K != nullptr, options_.lagrangian_hessian);
   if (K) {
@@ -175,8 +178,8 @@ SqpSolver::Linearization SqpSolver::linearization(const Dofs& x, double rho, Eig
   return lin;
 }
 
-bool SqpSolver::refactorize(const Dofs& x, Linearization& lin, double epsilon, bool curvature, double rho_cap,
-                            SqpReport& report) {
+bool SqpSolver::refactorize(const Dofs& x, Linearization& lin, double epsilon, bool curvature,
+                            double rho_cap, SqpReport& report) {
   const auto t_asm = Clock::now();
   linearize(x, lin, true, curvature);
   report.work.assembly_ms += ms_since(t_asm);

@@ -21,9 +21,11 @@ constexpr double kFirstPolishCapDivisor = 100;
 // restoration_epsilon by this; one that takes less than half its steps divides it by this (up to
 // the option's value).
 constexpr double kRestorationEpsilonFactor = 0.1;
-const char* const kNotFinite = "the objective or the DOG constraints are not finite (NaN or infinity)";
+const char* const kNotFinite =
+    "the objective or the DOG constraints are not finite (NaN or infinity)";
 
-std::vector<const Term*> all_terms(const std::vector<WeightedTerm>& objective, const Term& constraints) {
+std::vector<const Term*> all_terms(const std::vector<WeightedTerm>& objective,
+                                   const Term& constraints) {
   std::vector<const Term*> terms;
   for (const auto& t : objective) terms.push_back(t.term);
   terms.push_back(&constraints);
@@ -56,7 +58,8 @@ SqpSolver::SqpSolver(int vertex_count, std::vector<WeightedTerm> objective, cons
     const int k = constraints_.block_size(b);
     const int* v = constraints_.block_vertices(b);
     for (int j = 0; j < k; ++j)
-      rows_.column_rank[b].push_back(static_cast<int>(std::count_if(v, v + k, [&](int u) { return u < v[j]; })));
+      rows_.column_rank[b].push_back(
+          static_cast<int>(std::count_if(v, v + k, [&](int u) { return u < v[j]; })));
     for (int i = 0; i < constraints_.residual_count(b); ++i)
       for (int j = 0; j < k; ++j)
         for (int e = 0; e < 3; ++e) entries.emplace_back(rows_.first[b] + i, 3 * v[j] + e, 1.0);
@@ -70,9 +73,14 @@ SqpSolver::SqpSolver(int vertex_count, std::vector<WeightedTerm> objective, cons
 SqpSolver::~SqpSolver() = default;
 
 SqpSolver::Pass SqpSolver::ordinary_pass() const {
-  return {std::max(options_.constraint_tolerance, restoration_tolerance_), options_.max_steps,
-          options_.max_restoration_steps, false,
-          options_.lagrangian_hessian,   options_.restoration_epsilon, options_.rho_max, true,
+  return {std::max(options_.constraint_tolerance, restoration_tolerance_),
+          options_.max_steps,
+          options_.max_restoration_steps,
+          false,
+          options_.lagrangian_hessian,
+          options_.restoration_epsilon,
+          options_.rho_max,
+          true,
           options_.trusted_backtracks};
 }
 
@@ -90,8 +98,23 @@ SqpSolver::Pass SqpSolver::polish_pass(double rho_cap) const {
 
 SqpReport SqpSolver::iterate(Dofs& x, bool last) {
   SqpReport report = run_pass(x, ordinary_pass());
-  if (last && !report.failed && report.constraint_max > options_.final_constraint_tolerance) polish(x, report);
+  if (last && !report.failed && report.constraint_max > options_.final_constraint_tolerance)
+    polish(x, report);
   return report;
+}
+
+void SqpSolver::adapt_restoration(Pass& pass, const SqpReport& r) const {
+  // A restoration that stops short of its tolerance (where creases cross, the objective's
+  // Hessian outweighs rho J^T J in the directions the constraints need, and the steps crawl)
+  // goes on in a metric closer to Gauss-Newton on |c|^2 alone in the next pass; one that needs
+  // few steps goes back towards restoration_epsilon (a larger rho costs failed factorizations).
+  if (r.constraint_max > pass.tolerance)
+    pass.restoration_epsilon =
+        std::max(kRestorationEpsilonFactor * pass.restoration_epsilon,
+                 std::min(options_.polish_epsilon, options_.restoration_epsilon));
+  else if (2 * r.work.restoration_steps < pass.max_restoration_steps)
+    pass.restoration_epsilon = std::min(pass.restoration_epsilon / kRestorationEpsilonFactor,
+                                        options_.restoration_epsilon);
 }
 
 SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
@@ -115,7 +138,7 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
     const Eigen::VectorXd lambda_pass = lambda_;
     const SqpReport r = run_pass(x, pass);
     report.work += r.work;
-    if (r.failed) {  // run_pass took x and the multipliers back to x_pass
+    if (r.failed) {                    // run_pass took x and the multipliers back to x_pass
       if (!std::isfinite(f_before)) {  // targets or state not finite: no step can help
         report.failed = true;
         report.failure = r.failure;
@@ -127,22 +150,13 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
       pass.restoration_epsilon = options_.restoration_epsilon;
       continue;
     }
-    // A restoration that stops short of its tolerance (where creases cross, the objective's
-    // Hessian outweighs rho J^T J in the directions the constraints need, and the steps crawl)
-    // goes on in a metric closer to Gauss-Newton on |c|^2 alone in the next pass; one that needs
-    // few steps goes back towards restoration_epsilon (a larger rho costs failed factorisations).
-    if (r.constraint_max > pass.tolerance)
-      pass.restoration_epsilon = std::max(kRestorationEpsilonFactor * pass.restoration_epsilon,
-                                          std::min(options_.polish_epsilon, options_.restoration_epsilon));
-    else if (2 * r.work.restoration_steps < pass.max_restoration_steps)
-      pass.restoration_epsilon =
-          std::min(pass.restoration_epsilon / kRestorationEpsilonFactor, options_.restoration_epsilon);
+    adapt_restoration(pass, r);
     // From a feasible state, a pass that ends feasible but higher went too far along the
     // linearised constraints (its restoration took back more than its step gained): it is taken
     // back, and the next one is shorter.
     const double f = objective(x), resolution = options_.converged_decrease * std::max(1.0, f);
-    const bool rejected = feasible_start && r.work.steps > 0 && r.constraint_max <= options_.constraint_tolerance &&
-                          f > f_before;
+    const bool rejected = feasible_start && r.work.steps > 0 &&
+                          r.constraint_max <= options_.constraint_tolerance && f > f_before;
     if (rejected) {
       x = x_pass;
       lambda_ = lambda_pass;
@@ -165,7 +179,8 @@ SqpReport SqpSolver::converge(Dofs& x, int max_steps) {
     without_progress = f_now < f_best - resolution ? 0 : without_progress + 1;
     f_best = std::min(f_best, f_now);
     f_before = f_now;
-    const bool stationary = r.work.steps == 0 || (!rejected && std::abs(r.full_step_decrease) <= resolution) ||
+    const bool stationary = r.work.steps == 0 ||
+                            (!rejected && std::abs(r.full_step_decrease) <= resolution) ||
                             still_passes >= 2 || without_progress >= kPassesWithoutProgress;
     report.converged = stationary && report.constraint_max <= options_.constraint_tolerance;
     // A pass without a step (stationary) would repeat itself.
@@ -212,7 +227,8 @@ SqpSolver::LastIterationBudget::LastIterationBudget(SqpSolver& solver)
     : solver_(solver),
       owner_(solver.factorization_stop_ == std::numeric_limits<long>::max() &&
              solver.options_.polish_factorizations > 0) {
-  if (owner_) solver_.factorization_stop_ = solver_.factorizations_ + solver_.options_.polish_factorizations;
+  if (owner_)
+    solver_.factorization_stop_ = solver_.factorizations_ + solver_.options_.polish_factorizations;
 }
 
 SqpSolver::LastIterationBudget::~LastIterationBudget() {
@@ -236,7 +252,9 @@ SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
   if (!relinearize(x, lin, report)) return fail(kNotFinite);
   double error = kkt_error(lin) * (pass.first_step_always ? kFirstErrorWeight : 1);
   auto more_steps = [&]() {
-    if (report.work.steps >= pass.max_steps || !(error > options_.kkt_tolerance) || !within_budget()) return false;
+    if (report.work.steps >= pass.max_steps || !(error > options_.kkt_tolerance) ||
+        !within_budget())
+      return false;
     return !pass.stop_when_feasible || lin.c.lpNorm<Eigen::Infinity>() > pass.tolerance;
   };
   while (more_steps()) {
@@ -252,8 +270,8 @@ SqpReport SqpSolver::run_pass(Dofs& x, const Pass& pass) {
   }
   Eigen::VectorXd c = lin.c;
   if (!c.allFinite()) return fail(kNotFinite);
-  const Restoration restoration{pass.tolerance, pass.max_restoration_steps, local_fraction(), pass.restoration_epsilon,
-                                pass.rho_cap};
+  const Restoration restoration{pass.tolerance, pass.max_restoration_steps, local_fraction(),
+                                pass.restoration_epsilon, pass.rho_cap};
   if (!restore(x, c, restoration, report)) return fail(report.failure);
   report.constraint_max = c.lpNorm<Eigen::Infinity>();
   return report;

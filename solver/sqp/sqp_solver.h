@@ -28,11 +28,11 @@
 //    polishing), at most max_restoration_steps: Gauss-Newton on rho/2 |c|^2 in the
 //    metric of H, (H + rho J^T J) d = -rho J^T c, backtracking until |c| decreases. In order of
 //    cost: a chord step with the last factorisation and its Jacobian (a second-order correction;
-//    repeated while it cuts |c|_2^2 by 20%, at most 5 times), a local step on the neighbourhood of the violated rows
-//    when they are few (local_fraction; local_restoration.h), a fresh global factorisation. The
-//    standard mode with exact stitching takes no local steps (local_fraction automatic): its
-//    violated rows after a step lie all along the creases, where local steps cost more than the
-//    global ones they replace.
+//    repeated while it cuts |c|_2^2 by 20%, at most 5 times), a local step on the neighbourhood of
+//    the violated rows when they are few (local_fraction; local_restoration.h), a fresh global
+//    factorisation. The standard mode with exact stitching takes no local steps (local_fraction
+//    automatic): its violated rows after a step lie all along the creases, where local steps cost
+//    more than the global ones they replace.
 // 3. In the last iteration of a run only: a polishing iteration (up to polish_steps steps with the
 //    constraints' curvature in H, then restoration to final_constraint_tolerance), kept only when
 //    it ends more feasible than step 2 left the state; tried with rho capped at rho_max / 100, then
@@ -151,14 +151,15 @@ class SqpSolver {
     Eigen::VectorXd g, c;
     RowMatrix J;
   };
-  Linearization linearization(const Dofs& x, double rho = 0, Eigen::SparseMatrix<double>* K = nullptr);
+  Linearization linearization(const Dofs& x, double rho = 0,
+                              Eigen::SparseMatrix<double>* K = nullptr);
 
  private:
   /// How the optimality steps and the restoration of one pass are made: an ordinary iteration or
   /// the last iteration's polish.
   struct Pass {
-    double tolerance;            ///< |c|_inf the restoration aims for
-    int max_steps;               ///< optimality steps
+    double tolerance;  ///< |c|_inf the restoration aims for
+    int max_steps;     ///< optimality steps
     int max_restoration_steps;
     bool stop_when_feasible;     ///< optimality steps end once |c|_inf <= tolerance
     bool curvature;              ///< the constraints' curvature -sum lambda_i Hess c_i in H
@@ -183,6 +184,9 @@ class SqpSolver {
 
   // sqp_solver.cpp: the iteration and its polish.
   SqpReport run_pass(Dofs& x, const Pass& pass);
+  /// After a pass of converge(): the restoration's epsilon of the next pass, from how the pass's
+  /// restoration went.
+  void adapt_restoration(Pass& pass, const SqpReport& r) const;
   /// False once the last iteration (polish and projection) has used its factorisations.
   bool within_budget() const { return factorizations_ < factorization_stop_; }
   /// The last iteration's factorisation budget (polish_factorizations, 0: none) from construction
@@ -203,19 +207,20 @@ class SqpSolver {
   StepOutcome optimality_step(Dofs& x, Linearization& lin, const Pass& pass, SqpReport& report);
   /// options_.local_fraction with the automatic value resolved.
   double local_fraction() const {
-    return options_.local_fraction < 0 ? SqpOptions::kDefaultLocalFraction : options_.local_fraction;
+    return options_.local_fraction < 0 ? SqpOptions::kDefaultLocalFraction
+                                       : options_.local_fraction;
   }
   /// A backtracking search along d with the Armijo condition on Phi_mu (see above).
   struct LineSearch {
     bool accepted = false;
-    double alpha = 1;     ///< the step length taken
-    double phi0 = 0;      ///< Phi_mu at x
-    double slope = 0;     ///< its directional derivative along d
-    Dofs x;               ///< the point accepted
+    double alpha = 1;  ///< the step length taken
+    double phi0 = 0;   ///< Phi_mu at x
+    double slope = 0;  ///< its directional derivative along d
+    Dofs x;            ///< the point accepted
   };
   LineSearch line_search(const Dofs& x, const Linearization& lin, const Eigen::VectorXd& d,
-                         const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu, int max_halvings,
-                         double max_step, SqpReport& report) const;
+                         const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu,
+                         int max_halvings, double max_step, SqpReport& report) const;
   // sqp_restoration.cpp. False (with report.failure set) on NaN.
   bool restore(Dofs& x, Eigen::VectorXd& c, const Restoration& settings, SqpReport& report);
   // sqp_linearization.cpp.
@@ -225,10 +230,11 @@ class SqpSolver {
   void linearize(const Dofs& x, Linearization& lin, bool hessian, bool curvature);
   /// Constraint values and Jacobian (in the fixed pattern); with `hessian` also J^T J into G and,
   /// with `curvature`, the constraints' curvature into H.
-  void fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian, bool curvature);
+  void fill_constraints(const Dofs& x, Eigen::VectorXd& c, RowMatrix& J, bool hessian,
+                        bool curvature);
   /// Linearises at x with the Hessian and factorises K; false if that fails.
-  bool refactorize(const Dofs& x, Linearization& lin, double epsilon, bool curvature, double rho_cap,
-                   SqpReport& report);
+  bool refactorize(const Dofs& x, Linearization& lin, double epsilon, bool curvature,
+                   double rho_cap, SqpReport& report);
   void refresh_constant_hessian();
   double augmented_lagrangian(const Dofs& x, double mu) const;
   double kkt_error(const Linearization& lin) const;
@@ -262,9 +268,9 @@ class SqpSolver {
   double delta_ = 0;
   RowMatrix factored_J_;
   LocalRestoration local_;
-  long factorizations_ = 0;  ///< made so far
+  long factorizations_ = 0;    ///< made so far
   int injected_failures_ = 0;  ///< inject_factorization_failures()
-  long factorization_stop_;  ///< no factorisation from this count on (LastIterationBudget)
+  long factorization_stop_;    ///< no factorisation from this count on (LastIterationBudget)
 };
 
 }  // namespace sdog

@@ -19,10 +19,11 @@ constexpr double kBacktrack = 0.5;
 SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, const Pass& pass,
                                                   SqpReport& report) {
   if (!refactorize(x, lin, options_.epsilon, pass.curvature, pass.rho_cap, report)) {
-    report.failure = !m_.H.lower().coeffs().allFinite() || !m_.G.lower().coeffs().allFinite()
-                         ? "the Hessian is not finite (NaN or infinity)"
-                         : "the Cholesky factorisation failed (not positive definite even with rho " + format_number(rho_) +
-                               " and shift " + format_number(delta_) + ")";
+    report.failure =
+        !m_.H.lower().coeffs().allFinite() || !m_.G.lower().coeffs().allFinite()
+            ? "the Hessian is not finite (NaN or infinity)"
+            : "the Cholesky factorisation failed (not positive definite even with rho " +
+                  format_number(rho_) + " and shift " + format_number(delta_) + ")";
     return StepOutcome::kFailed;
   }
   const Eigen::VectorXd Jtc = lin.J.transpose() * lin.c;
@@ -37,13 +38,17 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
   // trusted_backtracks halvings, again with the smaller merit_penalty (sqp_solver.h).
   const double mu = std::min(options_.merit_penalty, rho_);
   LineSearch search = line_search(x, lin, d, grad_phi, Jtc, rho_,
-                                  mu < rho_ ? pass.trusted_backtracks : options_.max_backtracks, pass.max_step, report);
+                                  mu < rho_ ? pass.trusted_backtracks : options_.max_backtracks,
+                                  pass.max_step, report);
   if (!search.accepted && mu < rho_)
-    search = line_search(x, lin, d, grad_phi, Jtc, mu, options_.max_backtracks, pass.max_step, report);
+    search =
+        line_search(x, lin, d, grad_phi, Jtc, mu, options_.max_backtracks, pass.max_step, report);
   if (!search.accepted) {
-    if (-search.slope <= kStationarySlope * (1 + std::abs(search.phi0))) return StepOutcome::kStationary;
-    report.failure = "the line search found no decrease of the merit function (directional derivative " +
-                     format_number(search.slope) + ")";
+    if (-search.slope <= kStationarySlope * (1 + std::abs(search.phi0)))
+      return StepOutcome::kStationary;
+    report.failure =
+        "the line search found no decrease of the merit function (directional derivative " +
+        format_number(search.slope) + ")";
     return StepOutcome::kFailed;
   }
   report.full_step_decrease = -lin.g.dot(d);
@@ -54,9 +59,12 @@ SqpSolver::StepOutcome SqpSolver::optimality_step(Dofs& x, Linearization& lin, c
   return StepOutcome::kTaken;
 }
 
-SqpSolver::LineSearch SqpSolver::line_search(const Dofs& x, const Linearization& lin, const Eigen::VectorXd& d,
-                                             const Eigen::VectorXd& grad_phi, const Eigen::VectorXd& Jtc, double mu,
-                                             int max_halvings, double max_step, SqpReport& report) const {
+SqpSolver::LineSearch SqpSolver::line_search(const Dofs& x, const Linearization& lin,
+                                             const Eigen::VectorXd& d,
+                                             const Eigen::VectorXd& grad_phi,
+                                             const Eigen::VectorXd& Jtc, double mu,
+                                             int max_halvings, double max_step,
+                                             SqpReport& report) const {
   LineSearch s;
   s.alpha = max_step;
   s.phi0 = lin.f - lambda_.dot(lin.c) + 0.5 * mu * lin.c.squaredNorm();

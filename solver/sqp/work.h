@@ -3,14 +3,15 @@
 namespace sdog {
 
 struct Work {
-  int steps = 0;              ///< optimality (SQP) steps; Ceres iterations for the Ceres patch backend
+  int steps = 0;  ///< optimality (SQP) steps; Ceres iterations for the Ceres patch backend
   int restoration_steps = 0;  ///< steps that only restored the constraints (chord, local, global)
   int local_steps = 0;        ///< of which local (local_restoration.h)
   int factorizations = 0;     ///< global numeric factorisations
   int fold_retries = 0;       ///< iterations solved again with a raised fold bias (standard_mode.h)
-  int recovered_failures = 0; ///< failed passes taken back and retried shorter (SqpSolver::converge)
-  double factor_ms = 0;       ///< numeric factorisations and triangular solves
-  double assembly_ms = 0;     ///< linearisations (Hessians and Jacobians)
+  int recovered_failures =
+      0;                   ///< failed passes taken back and retried shorter (SqpSolver::converge)
+  double factor_ms = 0;    ///< numeric factorisations and triangular solves
+  double assembly_ms = 0;  ///< linearisations (Hessians and Jacobians)
 
   Work& operator+=(const Work& o) {
     steps += o.steps;

@@ -15,7 +15,8 @@ struct CosineDerivatives {
   Eigen::Matrix3d duu, duv, dvv;  ///< filled only when asked for
 };
 
-CosineDerivatives cosine_derivatives(const Eigen::Vector3d& u, const Eigen::Vector3d& v, bool second);
+CosineDerivatives cosine_derivatives(const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                                     bool second);
 
 /// The value alone (cosine_derivatives' value is this one): constraint values are evaluated many
 /// times per iteration (line searches, restoration), without derivatives.

@@ -14,7 +14,8 @@ Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const
   return edge_point_position(point.copies.front(), x);
 }
 
-Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p, const Eigen::Vector3d& f) {
+Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p,
+                               const Eigen::Vector3d& f) {
   const Eigen::Vector3d t1 = p - b, t2 = f - p;
   return (t1 * t2.norm() + t2 * t1.norm()).normalized();
 }
@@ -38,7 +39,8 @@ std::vector<FoldSite> fold_sites(const DogMesh& mesh) {
       const int point = curve.points[k];
       const auto& cp = st.points[point];
       const int prev = along(k, -1), next = along(k, 1);
-      if (prev < 0 || next < 0 || cp.copies.size() != 2 || cp.copies[0].v1 == cp.copies[0].v2) continue;
+      if (prev < 0 || next < 0 || cp.copies.size() != 2 || cp.copies[0].v1 == cp.copies[0].v2)
+        continue;
       const Eigen::Vector2d p = cp.flat, b = st.points[prev].flat, f = st.points[next].flat;
       const double cross = (p - b).x() * (f - p).y() - (p - b).y() * (f - p).x();
       const double scale = (p - b).norm() * (f - p).norm();
@@ -63,7 +65,8 @@ std::vector<FoldSite> fold_sites(const DogMesh& mesh) {
 Eigen::Vector3d fold_site_tangent(const DogMesh& mesh, const FoldSite& site, const Dofs& x) {
   const auto& points = mesh.stitching.points;
   return circle_tangent(crease_point_position(points[site.chord_prev], x),
-                        crease_point_position(points[site.point], x), crease_point_position(points[site.chord_next], x));
+                        crease_point_position(points[site.point], x),
+                        crease_point_position(points[site.chord_next], x));
 }
 
 namespace {
@@ -96,8 +99,9 @@ bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy) {
     int corners = 0;
     for (int k = 0; k < 4; ++k) corners += mesh.F(q, k) == e.v1 || mesh.F(q, k) == e.v2;
     if (corners != 2) continue;
-    auto piece = std::lower_bound(mesh.quad_pieces.begin(), mesh.quad_pieces.end(), q,
-                                  [](const DogMesh::QuadPiece& a, int quad) { return a.quad < quad; });
+    auto piece =
+        std::lower_bound(mesh.quad_pieces.begin(), mesh.quad_pieces.end(), q,
+                         [](const DogMesh::QuadPiece& a, int quad) { return a.quad < quad; });
     for (; piece != mesh.quad_pieces.end() && piece->quad == q; ++piece) {
       bool at_point = false;
       double towards_v1 = 0;
@@ -144,7 +148,8 @@ FoldCheck check_folded(const DogMesh& mesh, const std::vector<FoldSite>& sites, 
     if (std::abs((p - b).normalized().dot(e1.normalized())) > 0.9995 ||
         std::abs((f - p).normalized().dot(e1.normalized())) > 0.9995)
       continue;
-    const double angle = std::acos(std::clamp((b - p).normalized().dot((p - f).normalized()), -1.0, 1.0));
+    const double angle =
+        std::acos(std::clamp((b - p).normalized().dot((p - f).normalized()), -1.0, 1.0));
     if (std::sin(angle) / (f - b).norm() < 1e-5) continue;
     const Eigen::Vector3d B = (p - b).cross(f - p);
     ++check.checked;

@@ -15,14 +15,15 @@ Eigen::Vector3d edge_point_position(const EdgePoint& e, const Dofs& x);
 Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const Dofs& x);
 
 /// Unit tangent at p of the circle through b, p, f: normalize((p - b)|f - p| + (f - p)|p - b|).
-Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p, const Eigen::Vector3d& f);
+Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p,
+                               const Eigen::Vector3d& f);
 
 /// An interior crease point where the crease crosses the inside of a grid edge and exactly two
 /// patches meet: the places where folding is tested and biased.
 struct FoldSite {
   int curve, index;  ///< position along the curve
   int point;         ///< crease point
-  int prev, next;  ///< neighbouring crease points
+  int prev, next;    ///< neighbouring crease points
   /// The nearest crease points along the crease, each way, at least a twentieth of a grid cell
   /// away in the flat state (prev and next when there are none): the crease's direction.
   int chord_prev, chord_next;
@@ -43,8 +44,9 @@ bool own_end_is_v1(const DogMesh& mesh, const FoldSite& site, int copy);
 
 struct FoldCheck {
   bool folded = true;
-  int checked = 0;     ///< sites tested
-  int violations = 0;  ///< sites where both edge copies lie on the same side of the osculating plane
+  int checked = 0;  ///< sites tested
+  int violations =
+      0;  ///< sites where both edge copies lie on the same side of the osculating plane
 };
 
 /// The thesis's folding test: at every fold site with 0.05 <= t <= 0.95, not flat at rest, the

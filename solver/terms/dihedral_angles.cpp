@@ -103,7 +103,8 @@ void DihedralAngleTerm::evaluate(int b, const Eigen::Vector3d* p, double* r, dou
   // d(w.T) = da . (b x T) + db . (T x a) + g . dv, g = (I - T T^T) w / |v|,
   // v = t1 |t2| + t2 |t1|: dv/dt1 = |t2| I + t2 t1^T / |t1|, dv/dt2 = |t1| I + t1 t2^T / |t2|.
   const double s = k.orientation;
-  const Eigen::Vector3d gA = through_unit(a, lA, bb.cross(T)), gB = through_unit(bb, lB, T.cross(a));
+  const Eigen::Vector3d gA = through_unit(a, lA, bb.cross(T)),
+                        gB = through_unit(bb, lB, T.cross(a));
   const Eigen::Vector3d g = (w - w.dot(T) * T) / nv;
   const Eigen::Vector3d g1 = n2 * g + t1 * (t2.dot(g) / n1), g2 = n1 * g + t2 * (t1.dot(g) / n2);
   const Eigen::Vector3d gP = g1 - g2;  // t1 = P - Pb, t2 = Pf - P

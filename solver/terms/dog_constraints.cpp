@@ -32,8 +32,8 @@ struct CosinePair {
 
 int cosine_pairs(int k, CosinePair* out) {
   if (k == 4) {
-    const CosinePair pairs[6] = {{0, 1, 0, 1}, {1, 2, 0, -1}, {1, 2, 1, 1},
-                                 {2, 3, 1, -1}, {2, 3, 2, 1}, {3, 0, 2, -1}};
+    const CosinePair pairs[6] = {{0, 1, 0, 1},  {1, 2, 0, -1}, {1, 2, 1, 1},
+                                 {2, 3, 1, -1}, {2, 3, 2, 1},  {3, 0, 2, -1}};
     std::copy(pairs, pairs + 6, out);
     return 6;
   }
@@ -70,7 +70,8 @@ void DogConstraints::evaluate(int b, const Eigen::Vector3d* p, double* r, double
   }
 }
 
-void DogConstraints::add_second_order(int b, const Eigen::Vector3d* p, const double* y, double* H) const {
+void DogConstraints::add_second_order(int b, const Eigen::Vector3d* p, const double* y,
+                                      double* H) const {
   const int k = block_size(b) - 1, cols = 3 * (k + 1);
   Eigen::Vector3d e[4];
   for (int j = 0; j < k; ++j) e[j] = p[0] - p[j + 1];
@@ -86,11 +87,12 @@ void DogConstraints::add_second_order(int b, const Eigen::Vector3d* p, const dou
     const double du_sign[3] = {1, -1, 0}, dv_sign[3] = {1, 0, -1};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        const Eigen::Matrix3d block = du_sign[i] * du_sign[j] * d.duu + du_sign[i] * dv_sign[j] * d.duv +
-                                      dv_sign[i] * du_sign[j] * d.duv.transpose() +
-                                      dv_sign[i] * dv_sign[j] * d.dvv;
+        const Eigen::Matrix3d block =
+            du_sign[i] * du_sign[j] * d.duu + du_sign[i] * dv_sign[j] * d.duv +
+            dv_sign[i] * du_sign[j] * d.duv.transpose() + dv_sign[i] * dv_sign[j] * d.dvv;
         for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) H[(3 * slot[i] + r) * cols + 3 * slot[j] + c] += s * block(r, c);
+          for (int c = 0; c < 3; ++c)
+            H[(3 * slot[i] + r) * cols + 3 * slot[j] + c] += s * block(r, c);
       }
   }
 }

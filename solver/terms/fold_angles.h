@@ -1,7 +1,7 @@
 #pragma once
 // The fold angle a state reaches at each fold site, signed as the FOLD format does (and as the
-// drawing's assignments, geometry/input/fold_conventions.h): positive for a valley (both sides of the
-// crease rise towards +z, the side the drawing is seen from), negative for a mountain.
+// drawing's assignments, geometry/input/fold_conventions.h): positive for a valley (both sides of
+// the crease rise towards +z, the side the drawing is seen from), negative for a mountain.
 //
 // At a fold site with crease tangent T (fold_site_tangent), each of the two edge copies gives the
 // direction u into its patch's own side (the edge from its end beyond the crease to its end on the
@@ -23,7 +23,9 @@ class FoldAngles {
   double at(size_t k, const Dofs& x) const;
   const std::vector<FoldSite>& sites() const { return sites_; }
   /// The index in sites() of the fold site at crease point `point`, or -1.
-  int site_of(int point) const { return point >= 0 && point < static_cast<int>(site_of_.size()) ? site_of_[point] : -1; }
+  int site_of(int point) const {
+    return point >= 0 && point < static_cast<int>(site_of_.size()) ? site_of_[point] : -1;
+  }
 
  private:
   const DogMesh& mesh_;

@@ -6,7 +6,8 @@
 
 namespace sdog {
 
-FoldBiasTerm::FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites, double sharpness)
+FoldBiasTerm::FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites,
+                           double sharpness)
     : sharpness_(sharpness) {
   const CreaseStitching& st = mesh.stitching;
   for (const auto& s : sites) {

@@ -16,7 +16,8 @@ constexpr double kFoldSharpness = 1000;
 
 class FoldBiasTerm : public Term {
  public:
-  FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites, double sharpness = kFoldSharpness);
+  FoldBiasTerm(const DogMesh& mesh, const std::vector<FoldSite>& sites,
+               double sharpness = kFoldSharpness);
   double sharpness() const { return sharpness_; }
   const char* name() const override { return "fold_bias"; }
 

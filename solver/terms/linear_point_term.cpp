@@ -9,13 +9,18 @@ int LinearPointTerm::add(const std::vector<std::pair<int, double>>& weighted_ver
                          const Eigen::Vector3d& target) {
   std::vector<std::pair<int, double>> merged;
   for (const auto& [v, a] : weighted_vertices) {
-    auto it = std::find_if(merged.begin(), merged.end(), [v = v](const auto& m) { return m.first == v; });
-    if (it == merged.end()) merged.push_back({v, a});
-    else it->second += a;
+    auto it =
+        std::find_if(merged.begin(), merged.end(), [v = v](const auto& m) { return m.first == v; });
+    if (it == merged.end())
+      merged.push_back({v, a});
+    else
+      it->second += a;
   }
-  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const auto& m) { return m.second == 0; }),
-               merged.end());
-  if (merged.size() > kMaxVertices) throw std::logic_error("linear point block with too many vertices");
+  merged.erase(
+      std::remove_if(merged.begin(), merged.end(), [](const auto& m) { return m.second == 0; }),
+      merged.end());
+  if (merged.size() > kMaxVertices)
+    throw std::logic_error("linear point block with too many vertices");
   std::vector<int> vertices;
   for (const auto& [v, a] : merged) {
     vertices.push_back(v);

@@ -9,12 +9,14 @@ StackedTerm::StackedTerm(std::vector<Part> parts) : parts_(std::move(parts)) {
   for (const Part& part : parts_) {
     first_.push_back(block_count());
     const Term& t = *part.term;
-    for (int b = 0; b < t.block_count(); ++b) add_block(t.block_vertices(b), t.block_size(b), t.residual_count(b));
+    for (int b = 0; b < t.block_count(); ++b)
+      add_block(t.block_vertices(b), t.block_size(b), t.residual_count(b));
   }
 }
 
 std::pair<const StackedTerm::Part*, int> StackedTerm::locate(int b) const {
-  const size_t k = static_cast<size_t>(std::upper_bound(first_.begin(), first_.end(), b) - first_.begin()) - 1;
+  const size_t k =
+      static_cast<size_t>(std::upper_bound(first_.begin(), first_.end(), b) - first_.begin()) - 1;
   return {&parts_[k], b - first_[k]};
 }
 
@@ -29,14 +31,17 @@ void StackedTerm::evaluate(int b, const Eigen::Vector3d* p, double* r, double* J
 }
 
 bool StackedTerm::is_linear() const {
-  return std::all_of(parts_.begin(), parts_.end(), [](const Part& p) { return p.term->is_linear(); });
+  return std::all_of(parts_.begin(), parts_.end(),
+                     [](const Part& p) { return p.term->is_linear(); });
 }
 
 bool StackedTerm::has_second_order() const {
-  return std::any_of(parts_.begin(), parts_.end(), [](const Part& p) { return p.term->has_second_order(); });
+  return std::any_of(parts_.begin(), parts_.end(),
+                     [](const Part& p) { return p.term->has_second_order(); });
 }
 
-void StackedTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* y, double* H) const {
+void StackedTerm::add_second_order(int b, const Eigen::Vector3d* p, const double* y,
+                                   double* H) const {
   const auto [part, local] = locate(b);
   if (part->scale == 1) {
     part->term->add_second_order(local, p, y, H);

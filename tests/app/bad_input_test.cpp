@@ -125,12 +125,15 @@ TEST(BadInputFiles, AnUnwritableOutputDirectoryIsAnOutputError) {
 // a missing folder named in one line before any work starts.
 TEST(BadInputFiles, MissingThesisPatternsFolder) {
   const std::string out = test::temp_dir("grid_missing");
-  for (const std::string& command : {std::string("bench --thesis-grid"), "compare --thesis-grid --modes standard --out " + out})
+  for (const std::string& command :
+       {std::string("bench --thesis-grid"), "compare --thesis-grid --modes standard --out " + out})
     for (const char* option : {"--patterns-dir", "--patterns"}) {
       const auto r = test::run_sdog(command + " " + option + " /nonexistent/thesis");
       EXPECT_EQ(r.code, 1) << command << " " << option << ": " << r.err;
       EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
-      EXPECT_NE(r.err.find("/nonexistent/thesis/1_curve.svg: thesis pattern not found"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("/nonexistent/thesis/1_curve.svg: thesis pattern not found"),
+                std::string::npos)
+          << r.err;
     }
 }
 
@@ -149,7 +152,8 @@ TEST(BadInputFiles, AnUnknownCommandIsNamed) {
   const auto r = test::run_sdog("frobnicate " + test::dataset("one_curve.svg"));
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("unknown command 'frobnicate'; the commands are mesh, render, run, bench, compare"),
+  EXPECT_NE(r.err.find(
+                "unknown command 'frobnicate'; the commands are mesh, render, run, bench, compare"),
             std::string::npos)
       << r.err;
   const auto none = test::run_sdog("");
@@ -160,12 +164,14 @@ TEST(BadInputFiles, AnUnknownCommandIsNamed) {
 // A value out of range given on the command line is a usage error (2); the same value from a
 // configuration file is an input error (1).
 TEST(BadInputFiles, AnOptionValueThatCannotWorkIsAUsageError) {
-  const auto r = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 --rho -1 -q");
+  const auto r =
+      test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 --rho -1 -q");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("command line: $.admm.rho must be positive"), std::string::npos) << r.err;
   const std::string dir = test::temp_dir("rho_in_file");
   const std::string config = test::write_file(dir, "c.json", R"({"admm": {"rho": -1}})");
-  const auto f = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 -q --config " + config);
+  const auto f = test::run_sdog("run " + test::dataset("one_curve.svg") +
+                                " --res 11x11 -q --config " + config);
   EXPECT_EQ(f.code, 1) << f.err;
   EXPECT_NE(f.err.find("c.json"), std::string::npos) << f.err;
   EXPECT_NE(f.err.find("rho"), std::string::npos) << f.err;

@@ -20,11 +20,12 @@ using test::read_csv;
 
 const std::string kPattern = test::dataset("one_curve.svg");
 const std::string kSmallCompare =
-    "compare --pattern '" + kPattern + "' --res 15x11 --modes standard,subsolvers --iters 6 --hold 2 --plot-size 640x400";
+    "compare --pattern '" + kPattern +
+    "' --res 15x11 --modes standard,subsolvers --iters 6 --hold 2 --plot-size 640x400";
 
-#define SDOG_REQUIRE_DISPLAY()                                                        \
-  do {                                                                                \
-    const char* display = std::getenv("DISPLAY");                                     \
+#define SDOG_REQUIRE_DISPLAY()                                                               \
+  do {                                                                                       \
+    const char* display = std::getenv("DISPLAY");                                            \
     if (!display || !*display) GTEST_SKIP() << "no X display: run the tests under xvfb-run"; \
   } while (0)
 
@@ -35,12 +36,27 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   ASSERT_EQ(r.code, 0) << r.err;
 
   const Csv csv = read_csv(dir + "/compare.csv");
-  const std::vector<std::string> columns = {
-      "pattern", "res",           "mode",        "vertices", "dof",    "iterations", "final_objective",
-      "objective_ratio", "median_ms", "speedup", "total_s", "total_speedup", "speedup_paired", "dog_max",  "dog_max_run",
-      "stitch_gap_max", "folded", "status"};
+  const std::vector<std::string> columns = {"pattern",
+                                            "res",
+                                            "mode",
+                                            "vertices",
+                                            "dof",
+                                            "iterations",
+                                            "final_objective",
+                                            "objective_ratio",
+                                            "median_ms",
+                                            "speedup",
+                                            "total_s",
+                                            "total_speedup",
+                                            "speedup_paired",
+                                            "dog_max",
+                                            "dog_max_run",
+                                            "stitch_gap_max",
+                                            "folded",
+                                            "status"};
   ASSERT_GE(csv.header.size(), columns.size());
-  for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(csv.header[i], columns[i]) << "column " << i;
+  for (size_t i = 0; i < columns.size(); ++i)
+    EXPECT_EQ(csv.header[i], columns[i]) << "column " << i;
   ASSERT_EQ(csv.rows.size(), 2u);
   auto field = [&](int row, const std::string& name) { return csv.rows[row].at(csv.column(name)); };
   auto number = [&](int row, const std::string& name) { return std::stod(field(row, name)); };
@@ -71,8 +87,9 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
 
   // series.csv: every iteration of both modes, long format; its last objective is the table's.
   const Csv series = read_csv(dir + "/series.csv");
-  EXPECT_EQ(series.header, (std::vector<std::string>{"pattern", "res", "mode", "iteration", "objective", "ms",
-                                                     "dog_max", "stitch_gap_max"}));
+  EXPECT_EQ(series.header,
+            (std::vector<std::string>{"pattern", "res", "mode", "iteration", "objective", "ms",
+                                      "dog_max", "stitch_gap_max"}));
   ASSERT_EQ(series.rows.size(), 16u);
   for (int k = 0; k < 16; ++k) {
     EXPECT_EQ(series.rows[k][2], k < 8 ? "standard" : "subsolvers");
@@ -89,11 +106,13 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
   }
   EXPECT_DOUBLE_EQ(number(0, "total_speedup"), 1.0);
   const double total_speedup = number(0, "total_s") / number(1, "total_s");
-  EXPECT_NEAR(number(1, "total_speedup"), total_speedup, 2e-3 * total_speedup);  // total_s has 4 digits
+  EXPECT_NEAR(number(1, "total_speedup"), total_speedup,
+              2e-3 * total_speedup);  // total_s has 4 digits
 
   // compare.json: command line, configuration, versions and the same table.
   const auto j = nlohmann::json::parse(test::slurp(dir + "/compare.json"));
-  EXPECT_NE(j.at("command_line").get<std::string>().find("--modes standard,subsolvers"), std::string::npos);
+  EXPECT_NE(j.at("command_line").get<std::string>().find("--modes standard,subsolvers"),
+            std::string::npos);
   EXPECT_EQ(j.at("config").at("iterations"), 6);
   EXPECT_EQ(j.at("config").at("hold"), 2);
   EXPECT_TRUE(j.at("software").contains("vtk"));
@@ -123,9 +142,10 @@ TEST(CompareCommand, WritesTheTableSeriesJsonAndPlots) {
 // the command line's --iters wins, and switches are refused (every mode runs on its own).
 TEST(CompareCommand, ConfigFileSetsEveryRunAndTheCommandLineWins) {
   const std::string dir = test::temp_dir("compare_config");
-  const std::string config =
-      test::write_file(dir, "c.json", R"({"iterations": 3, "hold": 1, "twolevel": {"fold_sharpness": 100}})");
-  const std::string base = "compare --pattern '" + kPattern + "' --res 15x11 --modes standard --plot-size 640x400 --config " + config;
+  const std::string config = test::write_file(
+      dir, "c.json", R"({"iterations": 3, "hold": 1, "twolevel": {"fold_sharpness": 100}})");
+  const std::string base = "compare --pattern '" + kPattern +
+                           "' --res 15x11 --modes standard --plot-size 640x400 --config " + config;
   const auto r = test::run_sdog(base + " --out " + dir + "/a");
   ASSERT_EQ(r.code, 0) << r.err;
   const Csv a = read_csv(dir + "/a/compare.csv");
@@ -141,8 +161,9 @@ TEST(CompareCommand, ConfigFileSetsEveryRunAndTheCommandLineWins) {
 
   const std::string switches =
       test::write_file(dir, "s.json", R"({"switches": [{"iteration": 2, "mode": "subsolvers"}]})");
-  const auto c = test::run_sdog("compare --pattern '" + kPattern + "' --res 15x11 --modes standard --config " +
-                                switches + " --out " + dir + "/c");
+  const auto c =
+      test::run_sdog("compare --pattern '" + kPattern + "' --res 15x11 --modes standard --config " +
+                     switches + " --out " + dir + "/c");
   EXPECT_EQ(c.code, 2) << c.err;
   EXPECT_EQ(test::count_lines(c.err), 1) << c.err;
   EXPECT_NE(c.err.find("$.switches"), std::string::npos) << c.err;
@@ -151,8 +172,8 @@ TEST(CompareCommand, ConfigFileSetsEveryRunAndTheCommandLineWins) {
 
 TEST(CompareCommand, UnknownModeIsAUsageErrorNamingIt) {
   const std::string dir = test::temp_dir("compare_mode");
-  const auto r = test::run_sdog("compare --pattern '" + kPattern + "' --res 15x11 --modes standard,warp --out " + dir +
-                                "/out");
+  const auto r = test::run_sdog("compare --pattern '" + kPattern +
+                                "' --res 15x11 --modes standard,warp --out " + dir + "/out");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("warp"), std::string::npos) << r.err;
@@ -160,7 +181,8 @@ TEST(CompareCommand, UnknownModeIsAUsageErrorNamingIt) {
 }
 
 TEST(CompareCommand, UnknownScenarioIsAUsageError) {
-  const auto r = test::run_sdog(kSmallCompare + " --scenario twist --out " + test::temp_dir("compare_scenario"));
+  const auto r = test::run_sdog(kSmallCompare + " --scenario twist --out " +
+                                test::temp_dir("compare_scenario"));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("twist"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("corners"), std::string::npos) << r.err;

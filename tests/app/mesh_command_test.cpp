@@ -52,7 +52,8 @@ TEST(MeshCommand, WarnsAboutLongGridCells) {
   EXPECT_EQ(json.err, "");
   const auto text = test::run_sdog("mesh " + pattern + " --res 41x7");
   EXPECT_NE(text.out.find("warning:    " + warning), std::string::npos) << text.out;
-  const auto run = test::run_sdog("run " + pattern + " --res 41x7 --iters 1 --hold 0 --frames-every 0 -q --out " +
+  const auto run = test::run_sdog("run " + pattern +
+                                  " --res 41x7 --iters 1 --hold 0 --frames-every 0 -q --out " +
                                   test::temp_dir("long_cells"));
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.err.rfind("warning: " + warning, 0), 0u) << run.err;

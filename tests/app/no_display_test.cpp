@@ -31,9 +31,10 @@ bool has_png(const std::string& dir) {
 
 TEST(NoDisplay, CompareWritesItsTablesAndSaysOnceThatThePlotsAreSkipped) {
   const std::string dir = test::temp_dir("headless_compare") + "/out";
-  const auto r = test::run_sdog("compare --pattern '" + kPattern +
-                                    "' --res 15x11 --modes standard,subsolvers --iters 4 --hold 1 --out " + dir,
-                                kNoDisplay);
+  const auto r = test::run_sdog(
+      "compare --pattern '" + kPattern +
+          "' --res 15x11 --modes standard,subsolvers --iters 4 --hold 1 --out " + dir,
+      kNoDisplay);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(occurrences(r.out + r.err, "plots are skipped"), 1) << r.out << r.err;
   const std::string notice = r.err.substr(r.err.find("sdog compare: no X display"));
@@ -42,7 +43,8 @@ TEST(NoDisplay, CompareWritesItsTablesAndSaysOnceThatThePlotsAreSkipped) {
 
   const test::Csv csv = test::read_csv(dir + "/compare.csv");
   ASSERT_EQ(csv.rows.size(), 2u);
-  const auto json = nlohmann::json::parse(test::slurp(dir + "/compare.json"));  // throws if not JSON
+  const auto json =
+      nlohmann::json::parse(test::slurp(dir + "/compare.json"));  // throws if not JSON
   const auto& table = json.at("table");
   ASSERT_EQ(table.size(), 2u);
   const char* modes[] = {"standard", "subsolvers"};
@@ -59,24 +61,31 @@ TEST(NoDisplay, CompareWritesItsTablesAndSaysOnceThatThePlotsAreSkipped) {
 
 TEST(NoDisplay, MeshRunAndBenchNeedNone) {
   const std::string dir = test::temp_dir("headless_files");
-  const auto mesh = test::run_sdog("mesh '" + kPattern + "' --res 15x11 --out " + dir + "/mesh", kNoDisplay);
+  const auto mesh =
+      test::run_sdog("mesh '" + kPattern + "' --res 15x11 --out " + dir + "/mesh", kNoDisplay);
   ASSERT_EQ(mesh.code, 0) << mesh.err;
   EXPECT_TRUE(fs::exists(dir + "/mesh/fine.vtu"));
   const auto run = test::run_sdog(
-      "run '" + kPattern + "' --res 15x11 --iters 4 --hold 1 -q --frames-every 2 --out " + dir + "/run", kNoDisplay);
+      "run '" + kPattern + "' --res 15x11 --iters 4 --hold 1 -q --frames-every 2 --out " + dir +
+          "/run",
+      kNoDisplay);
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_TRUE(fs::exists(dir + "/run/run.json"));
   EXPECT_TRUE(fs::exists(dir + "/run/frame_0005.vtu"));
-  const auto bench = test::run_sdog(
-      "bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv " + dir + "/bench.csv", kNoDisplay);
+  const auto bench =
+      test::run_sdog("bench --pattern '" + kPattern + "' --res 15x11 --iters 12 --repeat 1 --csv " +
+                         dir + "/bench.csv",
+                     kNoDisplay);
   ASSERT_EQ(bench.code, 0) << bench.err;
   EXPECT_TRUE(fs::exists(dir + "/bench.csv"));
-  for (const auto* r : {&mesh, &run, &bench}) EXPECT_EQ(r->err.find("display"), std::string::npos) << r->err;
+  for (const auto* r : {&mesh, &run, &bench})
+    EXPECT_EQ(r->err.find("display"), std::string::npos) << r->err;
 }
 
 TEST(NoDisplay, RenderRefusesWithOneLineAndWritesNothing) {
   const std::string dir = test::temp_dir("headless_render");
-  const auto r = test::run_sdog("render '" + kPattern + "' --res 15x11 --out " + dir + "/x.png", kNoDisplay);
+  const auto r =
+      test::run_sdog("render '" + kPattern + "' --res 15x11 --out " + dir + "/x.png", kNoDisplay);
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("xvfb-run"), std::string::npos) << r.err;

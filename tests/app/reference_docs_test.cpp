@@ -22,7 +22,9 @@ namespace {
 
 const char* const kMarker = "<!-- generated tables below: make reference-docs -->\n";
 
-std::string page(const std::string& name) { return test::slurp(std::string(SDOG_DOCS_DIR) + "/reference/" + name); }
+std::string page(const std::string& name) {
+  return test::slurp(std::string(SDOG_DOCS_DIR) + "/reference/" + name);
+}
 
 // The part of a reference page after the marker line.
 std::string generated_part(const std::string& name) {
@@ -44,12 +46,13 @@ TEST(ReferenceDocs, TheConfigurationTablesMatchTheOptionTables) {
 
 TEST(ReferenceDocs, TheGeneratedTablesListEveryOptionAndKey) {
   const std::string cli = cli::command_line_reference();
-  for (const char* option : {"`--res`", "`--mode`", "`--switch`", "`--thesis-grid`", "`--plot-size`",
-                             "`--screenshot`", "`--measure-fps`", "`--keep-failed`"})
+  for (const char* option :
+       {"`--res`", "`--mode`", "`--switch`", "`--thesis-grid`", "`--plot-size`", "`--screenshot`",
+        "`--measure-fps`", "`--keep-failed`"})
     EXPECT_NE(cli.find(option), std::string::npos) << option;
   const std::string config = configuration_reference();
-  for (const char* key : {"`kkt_tolerance`", "`rho_max`", "`polish_epsilon`", "`coarse_every`", "`p`",
-                          "`backend`", "`fold_bias`", "`angle`"})
+  for (const char* key : {"`kkt_tolerance`", "`rho_max`", "`polish_epsilon`", "`coarse_every`",
+                          "`p`", "`backend`", "`fold_bias`", "`angle`"})
     EXPECT_NE(config.find(key), std::string::npos) << key;
   EXPECT_NE(config.find("| `rho_max` | number > 0 | `1e+12` |"), std::string::npos);
 }
@@ -64,10 +67,12 @@ TEST(ReferenceDocs, EveryDatasetIsDescribedAndPreviewed) {
     if (ext != ".svg" && ext != ".fold") continue;
     ++datasets;
     const std::string file = e.path().filename().string(), name = e.path().stem().string();
-    EXPECT_NE(readme.find("| `" + file + "` |"), std::string::npos) << file << " is not in the table";
+    EXPECT_NE(readme.find("| `" + file + "` |"), std::string::npos)
+        << file << " is not in the table";
     EXPECT_NE(readme.find("![" + name + "](../docs/datasets/" + name + ".png)"), std::string::npos)
         << file << " has no preview: run `make previews`";
-    EXPECT_TRUE(fs::exists(fs::path(SDOG_DOCS_DIR) / "datasets" / (name + ".png"))) << name << ".png";
+    EXPECT_TRUE(fs::exists(fs::path(SDOG_DOCS_DIR) / "datasets" / (name + ".png")))
+        << name << ".png";
   }
   EXPECT_GE(datasets, 17);
 }
@@ -92,15 +97,18 @@ std::set<std::string> json_keys(const nlohmann::json& j) {
 // The tables of `sdog mesh --json` and run.json list exactly the keys the programs write.
 TEST(ReferenceDocs, TheJsonTablesListExactlyTheKeysWritten) {
   const std::string text = page("output-files.md");
-  const auto mesh = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 11x11 --json");
+  const auto mesh =
+      test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 11x11 --json");
   ASSERT_EQ(mesh.code, 0) << mesh.err;
   EXPECT_EQ(table_keys(text, "## `sdog mesh --json`"), json_keys(nlohmann::json::parse(mesh.out)));
   const std::string dir = test::temp_dir("run_json_keys");
-  const auto run = test::run_sdog("run " + test::dataset("one_curve.svg") + " --res 11x11 --scenario fold --iters 2 --hold 0 -q --out " +
-                                  dir + "/run");
+  const auto run =
+      test::run_sdog("run " + test::dataset("one_curve.svg") +
+                     " --res 11x11 --scenario fold --iters 2 --hold 0 -q --out " + dir + "/run");
   ASSERT_EQ(run.code, 0) << run.err;
   // A fold run has every key but `failure` (failed runs only).
-  std::set<std::string> written = json_keys(nlohmann::json::parse(test::slurp(dir + "/run/run.json")));
+  std::set<std::string> written =
+      json_keys(nlohmann::json::parse(test::slurp(dir + "/run/run.json")));
   EXPECT_EQ(written.count("creases"), 1u);
   written.insert("failure");
   EXPECT_EQ(table_keys(text, "### `run.json`"), written);
@@ -124,7 +132,8 @@ TEST(ReferenceDocs, TheChangelogIsInDatedReleasesOfTheReportedVersion) {
       continue;
     }
     std::smatch m;
-    ASSERT_TRUE(std::regex_match(line, m, std::regex(R"(## (\d+\.\d+\.\d+) \(\d{4}-\d{2}-\d{2}\))")))
+    ASSERT_TRUE(
+        std::regex_match(line, m, std::regex(R"(## (\d+\.\d+\.\d+) \(\d{4}-\d{2}-\d{2}\))")))
         << "CHANGELOG.md:" << number << ": " << line;
     releases.push_back(m[1].str());
   }
@@ -135,11 +144,13 @@ TEST(ReferenceDocs, TheChangelogIsInDatedReleasesOfTheReportedVersion) {
 
 TEST(ReferenceDocs, TheOutputFilesPageNamesEveryColumn) {
   const std::string text = page("output-files.md");
-  std::vector<std::vector<std::string>> tables = {run_csv_columns(), patches_csv_columns(), bench_columns(),
-                                                  compare_columns(), series_columns()};
+  std::vector<std::vector<std::string>> tables = {run_csv_columns(), patches_csv_columns(),
+                                                  bench_columns(), compare_columns(),
+                                                  series_columns()};
   for (const auto& columns : tables)
     for (const std::string& c : columns)
-      EXPECT_NE(text.find("| `" + c + "` |"), std::string::npos) << "column " << c << " is not described";
+      EXPECT_NE(text.find("| `" + c + "` |"), std::string::npos)
+          << "column " << c << " is not described";
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // frames.pvd and its .vtu frames read back with VTK's XML readers), configuration errors with
 // their JSON path, thread-count independence, and the benchmark table.
 #include <gtest/gtest.h>
-#include <vtkDataArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -13,10 +13,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <set>
-#include <thread>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <thread>
 
 #include "tests/app/csv.h"
 #include "tests/app/run_sdog.h"
@@ -40,10 +40,28 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
 
   // run.csv: the issue's columns, in its order, one row per iteration, finite numbers.
   const Csv csv = read_csv(dir + "/run.csv");
-  const std::vector<std::string> required = {
-      "iteration", "t", "objective", "bending", "isometry", "positions", "edge_points", "stitching", "angles",
-      "fold_bias", "objective_final_targets", "dog_max", "dog_l2", "stitch_gap_max", "edge_strain_max",
-      "sheet_strain_max", "sqp_steps", "step_length", "fold_retries", "folded", "iteration_ms", "factor_ms"};
+  const std::vector<std::string> required = {"iteration",
+                                             "t",
+                                             "objective",
+                                             "bending",
+                                             "isometry",
+                                             "positions",
+                                             "edge_points",
+                                             "stitching",
+                                             "angles",
+                                             "fold_bias",
+                                             "objective_final_targets",
+                                             "dog_max",
+                                             "dog_l2",
+                                             "stitch_gap_max",
+                                             "edge_strain_max",
+                                             "sheet_strain_max",
+                                             "sqp_steps",
+                                             "step_length",
+                                             "fold_retries",
+                                             "folded",
+                                             "iteration_ms",
+                                             "factor_ms"};
   int previous = -1;
   for (const auto& name : required) {
     const int c = csv.column(name);
@@ -59,13 +77,14 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
       if (csv.header[c] == "mode")
         EXPECT_EQ(csv.rows[i][c], "standard");
       else if (csv.header[c] == "settling")
-        EXPECT_TRUE(csv.rows[i][c] == "" || csv.rows[i][c] == "running" || csv.rows[i][c] == "kept" ||
-                    csv.rows[i][c] == "replaced")
+        EXPECT_TRUE(csv.rows[i][c] == "" || csv.rows[i][c] == "running" ||
+                    csv.rows[i][c] == "kept" || csv.rows[i][c] == "replaced")
             << csv.rows[i][c];
       else if (csv.header[c] == "direction_agreement" || csv.header[c] == "angle_error")
         EXPECT_EQ(csv.rows[i][c], "") << csv.header[c] << ": the corners scenario targets no angle";
       else
-        EXPECT_TRUE(std::isfinite(std::stod(csv.rows[i][c]))) << csv.header[c] << " " << csv.rows[i][c];
+        EXPECT_TRUE(std::isfinite(std::stod(csv.rows[i][c])))
+            << csv.header[c] << " " << csv.rows[i][c];
     EXPECT_LT(std::stod(csv.rows[i][csv.column("dog_max")]), 1e-4);
   }
   EXPECT_DOUBLE_EQ(std::stod(csv.rows.back()[csv.column("t")]), 1.0);
@@ -105,7 +124,8 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
     vtkUnstructuredGrid* grid = reader->GetOutput();
     ASSERT_GT(grid->GetNumberOfPoints(), 0) << file;
     ASSERT_GT(grid->GetNumberOfCells(), 0) << file;
-    for (const char* name : {"dog_residual", "bending", "patch", "vertex_type", "vertex_class", "position_residual"})
+    for (const char* name :
+         {"dog_residual", "bending", "patch", "vertex_type", "vertex_class", "position_residual"})
       EXPECT_NE(grid->GetPointData()->GetArray(name), nullptr) << file << ": point array " << name;
     vtkDataArray* strain = grid->GetCellData()->GetArray("edge_strain");
     ASSERT_NE(strain, nullptr) << file;
@@ -122,8 +142,9 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
 // patches.csv of a patch mode: one row per patch and iteration, a timeline of the TBB workers.
 std::string blas_of_run(const std::string& prefix, const std::string& name) {
   const std::string dir = test::temp_dir(name) + "/out";
-  const auto r = test::run_sdog("run '" + kPattern + "' --res 11x11 --iters 1 --hold 0 -q --frames-every 0 --out " + dir,
-                                prefix);
+  const auto r = test::run_sdog(
+      "run '" + kPattern + "' --res 11x11 --iters 1 --hold 0 -q --frames-every 0 --out " + dir,
+      prefix);
   EXPECT_EQ(r.code, 0) << r.err;
   const auto json = nlohmann::json::parse(test::slurp(dir + "/run.json"));
   return json["software"]["blas"].get<std::string>();
@@ -131,25 +152,32 @@ std::string blas_of_run(const std::string& prefix, const std::string& name) {
 
 TEST(RunCommand, RunsOpenBlasAvx2KernelsWhereTheCpuHasThemUnlessToldOtherwise) {
   __builtin_cpu_init();
-  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 and FMA";
-  EXPECT_NE(blas_of_run("env -u OPENBLAS_CORETYPE", "blas_default").find("Haswell"), std::string::npos);
-  EXPECT_NE(blas_of_run("env OPENBLAS_CORETYPE=Prescott", "blas_prescott").find("Prescott"), std::string::npos);
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+    GTEST_SKIP() << "no AVX2 and FMA";
+  EXPECT_NE(blas_of_run("env -u OPENBLAS_CORETYPE", "blas_default").find("Haswell"),
+            std::string::npos);
+  EXPECT_NE(blas_of_run("env OPENBLAS_CORETYPE=Prescott", "blas_prescott").find("Prescott"),
+            std::string::npos);
 }
 
 TEST(RunCommand, PatchModesWriteThePerPatchTimeline) {
-  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one core: no parallel patch solves to see";
+  if (std::thread::hardware_concurrency() < 2)
+    GTEST_SKIP() << "one core: no parallel patch solves to see";
   const std::string dir = test::temp_dir("run_patches") + "/out";
-  const auto r = test::run_sdog("run '" + test::dataset("four_corner_arcs.svg") +
-                                "' --res 21x21 --iters 20 --hold 5 -q --frames-every 0 --mode subsolvers "
-                                "--threads 2 --out " + dir);
+  const auto r =
+      test::run_sdog("run '" + test::dataset("four_corner_arcs.svg") +
+                     "' --res 21x21 --iters 20 --hold 5 -q --frames-every 0 --mode subsolvers "
+                     "--threads 2 --out " +
+                     dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("patches.csv"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
   const int patches = j.at("mesh").at("patches").get<int>();
   ASSERT_GE(patches, 2);
   const Csv csv = read_csv(dir + "/patches.csv");
-  const std::vector<std::string> columns = {"iteration", "mode", "patch", "thread", "start_ms", "ms", "linear_ms",
-                                            "steps", "factorizations", "objective", "dog_max", "converged"};
+  const std::vector<std::string> columns = {
+      "iteration", "mode",  "patch",          "thread",    "start_ms", "ms",
+      "linear_ms", "steps", "factorizations", "objective", "dog_max",  "converged"};
   ASSERT_EQ(csv.header, columns);
   ASSERT_EQ(csv.rows.size(), static_cast<size_t>(25 * patches));
   std::set<int> threads;
@@ -186,8 +214,10 @@ TEST(RunCommand, PatchModesWriteThePerPatchTimeline) {
 
 TEST(RunCommand, SameCsvWhateverTheThreadCount) {
   const std::string base = test::temp_dir("run_threads");
-  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 1 --out " + base + "/a").code, 0);
-  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 2 --out " + base + "/b").code, 0);
+  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 1 --out " + base + "/a").code,
+            0);
+  ASSERT_EQ(test::run_sdog(kSmallRun + " --frames-every 0 --threads 2 --out " + base + "/b").code,
+            0);
   const Csv a = read_csv(base + "/a/run.csv"), b = read_csv(base + "/b/run.csv");
   ASSERT_EQ(a.header, b.header);
   ASSERT_EQ(a.rows.size(), b.rows.size());
@@ -217,42 +247,58 @@ TEST_P(BadConfig, OneLineNamingTheJsonPathAndNoOutput) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("c.json"), std::string::npos) << r.err;
-  for (const auto& m : c.mentions) EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in " << r.err;
+  for (const auto& m : c.mentions)
+    EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in " << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfig,
-    ::testing::Values(ConfigCase{"not_json", "{ iterations: 3", {"JSON"}},
-                      ConfigCase{"unknown_key", R"({"solver": {"kkt_tolerence": 1e-3}})", {"$.solver.kkt_tolerence", "unknown key"}},
-                      ConfigCase{"bad_type", R"({"iterations": "many"})", {"$.iterations"}},
-                      ConfigCase{"negative_weight", R"({"weights": {"bending": -1}})", {"bending"}},
-                      ConfigCase{"bad_vertex", R"({"positions": [{"vertex": 99999, "move": [0, 0, 1]}]})",
-                                 {"$.positions[0]", "99999"}},
-                      ConfigCase{"bad_target", R"({"positions": [{"vertex": 3, "end": [1, 2]}]})",
-                                 {"$.positions[0].end"}},
-                      ConfigCase{"bad_crease_point", R"({"angles": [{"crease_point": 100000, "end": 30}]})",
-                                 {"$.angles[0]", "100000"}},
-                      ConfigCase{"bad_scenario", R"({"scenario": "twist"})", {"$.scenario", "twist"}},
-                      ConfigCase{"switch_outside_run", R"({"switches": [{"iteration": 26, "mode": "subsolvers"}]})",
-                                 {"$.switches[0]", "iteration 26"}},
-                      ConfigCase{"switches_unordered",
-                                 R"({"switches": [{"iteration": 9, "mode": "subsolvers"}, {"iteration": 4, "mode": "standard"}]})",
-                                 {"$.switches[1]", "ascending"}},
-                      ConfigCase{"negative_standard_finish", R"({"twolevel": {"standard_finish": -1}})",
-                                 {"$.twolevel.standard_finish"}},
-                      ConfigCase{"fractional_standard_finish", R"({"twolevel": {"standard_finish": 2.5}})",
-                                 {"$.twolevel.standard_finish"}},
-                      ConfigCase{"finish_fold_bias_cap_below_1", R"({"twolevel": {"finish_fold_bias_cap": 0.5}})",
-                                 {"$.twolevel.finish_fold_bias_cap", ">= 1"}},
-                      ConfigCase{"zero_fold_sharpness", R"({"twolevel": {"fold_sharpness": 0}})",
-                                 {"$.twolevel.fold_sharpness"}},
-                      ConfigCase{"coarse_every_zero", R"({"twolevel": {"coarse_every": 0}})",
-                                 {"$.twolevel.coarse_every"}},
-                      ConfigCase{"concurrent_coarse_not_boolean", R"({"twolevel": {"concurrent_coarse": 1}})",
-                                 {"$.twolevel.concurrent_coarse"}},
-                      ConfigCase{"coarse_concurrent_coarse_not_boolean", R"({"coarse": {"concurrent_coarse": "yes"}})",
-                                 {"$.coarse.concurrent_coarse"}}));
+    ::testing::Values(
+        ConfigCase{"not_json", "{ iterations: 3", {"JSON"}},
+        ConfigCase{"unknown_key",
+                   R"({"solver": {"kkt_tolerence": 1e-3}})",
+                   {"$.solver.kkt_tolerence", "unknown key"}},
+        ConfigCase{"bad_type", R"({"iterations": "many"})", {"$.iterations"}},
+        ConfigCase{"negative_weight", R"({"weights": {"bending": -1}})", {"bending"}},
+        ConfigCase{"bad_vertex",
+                   R"({"positions": [{"vertex": 99999, "move": [0, 0, 1]}]})",
+                   {"$.positions[0]", "99999"}},
+        ConfigCase{"bad_target",
+                   R"({"positions": [{"vertex": 3, "end": [1, 2]}]})",
+                   {"$.positions[0].end"}},
+        ConfigCase{"bad_crease_point",
+                   R"({"angles": [{"crease_point": 100000, "end": 30}]})",
+                   {"$.angles[0]", "100000"}},
+        ConfigCase{"bad_scenario", R"({"scenario": "twist"})", {"$.scenario", "twist"}},
+        ConfigCase{"switch_outside_run",
+                   R"({"switches": [{"iteration": 26, "mode": "subsolvers"}]})",
+                   {"$.switches[0]", "iteration 26"}},
+        ConfigCase{
+            "switches_unordered",
+            R"({"switches": [{"iteration": 9, "mode": "subsolvers"}, {"iteration": 4, "mode": "standard"}]})",
+            {"$.switches[1]", "ascending"}},
+        ConfigCase{"negative_standard_finish",
+                   R"({"twolevel": {"standard_finish": -1}})",
+                   {"$.twolevel.standard_finish"}},
+        ConfigCase{"fractional_standard_finish",
+                   R"({"twolevel": {"standard_finish": 2.5}})",
+                   {"$.twolevel.standard_finish"}},
+        ConfigCase{"finish_fold_bias_cap_below_1",
+                   R"({"twolevel": {"finish_fold_bias_cap": 0.5}})",
+                   {"$.twolevel.finish_fold_bias_cap", ">= 1"}},
+        ConfigCase{"zero_fold_sharpness",
+                   R"({"twolevel": {"fold_sharpness": 0}})",
+                   {"$.twolevel.fold_sharpness"}},
+        ConfigCase{"coarse_every_zero",
+                   R"({"twolevel": {"coarse_every": 0}})",
+                   {"$.twolevel.coarse_every"}},
+        ConfigCase{"concurrent_coarse_not_boolean",
+                   R"({"twolevel": {"concurrent_coarse": 1}})",
+                   {"$.twolevel.concurrent_coarse"}},
+        ConfigCase{"coarse_concurrent_coarse_not_boolean",
+                   R"({"coarse": {"concurrent_coarse": "yes"}})",
+                   {"$.coarse.concurrent_coarse"}}));
 
 TEST(RunCommand, ConfigConstraintsDriveTheRun) {
   const std::string dir = test::temp_dir("config_good");
@@ -262,8 +308,8 @@ TEST(RunCommand, ConfigConstraintsDriveTheRun) {
     "positions": [{"vertex": 0, "move": [0, 0, 0]}, {"near": [1e9, 1e9], "move": [0, 0, 2]}],
     "solver": {"kkt_tolerance": 1e-4}
   })");
-  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " + config +
-                                " --out " + dir + "/out");
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " +
+                                config + " --out " + dir + "/out");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(test::slurp(dir + "/out/run.json"));
   EXPECT_EQ(j.at("scenario").at("position_constraints"), 2);
@@ -282,13 +328,14 @@ TEST(RunCommand, WarnsWhenTheSheetStretches) {
     "scenario": "none", "iterations": 5, "hold": 5,
     "positions": [{"vertex": 0, "move": [0, 0, 0]}, {"near": [1e9, 1e9], "move": [6, 6, 0]}]
   })");
-  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " + config +
-                                " --out " + dir + "/out");
+  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 -q --frames-every 0 --config " +
+                                config + " --out " + dir + "/out");
   ASSERT_EQ(r.code, 0) << r.err;
   const Csv csv = read_csv(dir + "/out/run.csv");
   const double strain = std::stod(csv.rows.back()[csv.column("sheet_strain_max")]);
   EXPECT_GT(strain, 0.05);
-  EXPECT_NE(r.err.find("warning: the sheet stretches: an edge of patch 0 is "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: the sheet stretches: an edge of patch 0 is "), std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("% longer than drawn"), std::string::npos) << r.err;
 
   const auto drag = test::run_sdog(kSmallRun + " --frames-every 0 --out " + dir + "/drag");
@@ -300,8 +347,9 @@ TEST(RunCommand, WarnsWhenTheSheetStretches) {
 // creases before it starts, and reports the fold sites next to it apart from the others.
 TEST(RunCommand, AFoldTipIsNamedAndItsSitesCountedApart) {
   const std::string dir = test::temp_dir("fold_tip");
-  const auto r = test::run_sdog("run '" + test::dataset("v_pleat.fold") +
-                                "' --res 21x21 --scenario fold --iters 1 --hold 20 -q --frames-every 0 --out " + dir);
+  const auto r = test::run_sdog(
+      "run '" + test::dataset("v_pleat.fold") +
+      "' --res 21x21 --scenario fold --iters 1 --hold 20 -q --frames-every 0 --out " + dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("creases 0 (" + test::dataset("v_pleat.fold") + ": edge 6) and 1 (" +
                        test::dataset("v_pleat.fold") + ": edge 22) end together"),
@@ -318,15 +366,20 @@ TEST(RunCommand, AFoldTipIsNamedAndItsSitesCountedApart) {
 // --switch: the run changes mode where asked; run.csv says which mode computed each iteration.
 TEST(RunCommand, SwitchesModesDuringTheRun) {
   const std::string dir = test::temp_dir("run_switch");
-  const auto r = test::run_sdog("run '" + kPattern + "' --res 21x15 --iters 12 --hold 3 -q --frames-every 0 "
-                                "--switch 5:subsolvers --switch 11:standard --out " + dir);
+  const auto r = test::run_sdog("run '" + kPattern +
+                                "' --res 21x15 --iters 12 --hold 3 -q --frames-every 0 "
+                                "--switch 5:subsolvers --switch 11:standard --out " +
+                                dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("standard, subsolvers from iteration 5, standard from iteration 11"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("standard, subsolvers from iteration 5, standard from iteration 11"),
+            std::string::npos)
+      << r.out;
   const Csv csv = read_csv(dir + "/run.csv");
   ASSERT_EQ(csv.rows.size(), 15u);
   for (size_t i = 0; i < csv.rows.size(); ++i) {
     const int k = static_cast<int>(i) + 1;
-    EXPECT_EQ(csv.rows[i][csv.column("mode")], k >= 5 && k < 11 ? "subsolvers" : "standard") << "iteration " << k;
+    EXPECT_EQ(csv.rows[i][csv.column("mode")], k >= 5 && k < 11 ? "subsolvers" : "standard")
+        << "iteration " << k;
     EXPECT_LT(std::stod(csv.rows[i][csv.column("dog_max")]), 1e-4) << "iteration " << k;
   }
   const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
@@ -341,7 +394,8 @@ TEST(RunCommand, UsageErrorsExitWithTwo) {
   r = test::run_sdog(kSmallRun + " --preset warp");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("--preset: warp"), std::string::npos) << r.err;
-  r = test::run_sdog("run '" + test::dataset("diagonal_fold.svg") + "' --res 21x21 -q --scenario fold");
+  r = test::run_sdog("run '" + test::dataset("diagonal_fold.svg") +
+                     "' --res 21x21 -q --scenario fold");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("no fold sites"), std::string::npos) << r.err;
   r = test::run_sdog(kSmallRun + " --switch 5:warp");
@@ -351,7 +405,8 @@ TEST(RunCommand, UsageErrorsExitWithTwo) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("ITERATION:MODE"), std::string::npos) << r.err;
   // A coarse mode needs the coarse mesh: refused before the run, not at the switch.
-  r = test::run_sdog("run '" + kPattern + "' --res 20x14 --fine-only --iters 20 --hold 5 -q --switch 5:twolevel");
+  r = test::run_sdog("run '" + kPattern +
+                     "' --res 20x14 --fine-only --iters 20 --hold 5 -q --switch 5:twolevel");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("twolevel needs the coarse mesh"), std::string::npos) << r.err;
 }

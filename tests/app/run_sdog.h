@@ -55,7 +55,9 @@ inline Run expect_unwritable_output_fails(const std::string& args, const std::st
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(dir + "/file"), std::string::npos) << r.err;
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1)
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            1)
       << "files left in " << dir;
   return r;
 }

@@ -14,7 +14,8 @@ enum class Fruit { kApple, kPear, kQuince };
 template <>
 struct EnumNames<Fruit> {
   static constexpr const char* noun = "fruit";
-  static constexpr EnumName<Fruit> rows[] = {{Fruit::kApple, "apple"}, {Fruit::kPear, "pear"}, {Fruit::kQuince, "quince"}};
+  static constexpr EnumName<Fruit> rows[] = {
+      {Fruit::kApple, "apple"}, {Fruit::kPear, "pear"}, {Fruit::kQuince, "quince"}};
 };
 
 namespace {
@@ -22,7 +23,8 @@ namespace {
 TEST(EnumNames, PrintsAndListsInTheEnumsOrder) {
   EXPECT_STREQ(enum_name(Fruit::kPear), "pear");
   EXPECT_EQ(enum_names<Fruit>(), (std::vector<std::string>{"apple", "pear", "quince"}));
-  EXPECT_EQ(enum_values<Fruit>(), (std::vector<Fruit>{Fruit::kApple, Fruit::kPear, Fruit::kQuince}));
+  EXPECT_EQ(enum_values<Fruit>(),
+            (std::vector<Fruit>{Fruit::kApple, Fruit::kPear, Fruit::kQuince}));
   EXPECT_EQ(known_names<Fruit>(), "apple, pear, quince");
 }
 
@@ -40,7 +42,8 @@ TEST(EnumNames, ParsesANameOrSaysWhatIsKnown) {
 }
 
 TEST(EnumNames, ParsesAListWithoutEmptyOrRepeatedNames) {
-  EXPECT_EQ(parse_enum_list<Fruit>("pear,apple"), (std::vector<Fruit>{Fruit::kPear, Fruit::kApple}));
+  EXPECT_EQ(parse_enum_list<Fruit>("pear,apple"),
+            (std::vector<Fruit>{Fruit::kPear, Fruit::kApple}));
   const auto message = [](const std::string& text) {
     try {
       parse_enum_list<Fruit>(text, "--fruits: ");

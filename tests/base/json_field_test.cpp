@@ -29,9 +29,13 @@ TEST(JsonField, ReadsValuesAndNamesThePathOfWhatIsWrong) {
   };
   EXPECT_EQ(message([&] { root["a"]["b"][2].number(); }), "f.json: $.a.b[2]: expected a number");
   EXPECT_EQ(message([&] { root["n"].integer(5); }), "f.json: $.n: expected an integer >= 5, got 3");
-  EXPECT_EQ(message([&] { root["a"]["b"].vector<2>(); }), "f.json: $.a.b: expected an array of 2 numbers");
+  EXPECT_EQ(message([&] { root["a"]["b"].vector<2>(); }),
+            "f.json: $.a.b: expected an array of 2 numbers");
   EXPECT_EQ(message([&] { root["t"].text(); }), "f.json: $.t: expected a string");
-  EXPECT_EQ(message([&] { root.expect_object({"a", "n"}); }), "f.json: $.t: unknown key (known: a, n)");
+  EXPECT_EQ(message([&] {
+              root.expect_object({"a", "n"});
+            }),
+            "f.json: $.t: unknown key (known: a, n)");
 }
 
 }  // namespace

@@ -3,9 +3,9 @@
 // count and a small mesh. Clear errors (InputError, UsageError) are expected; anything else is a
 // bug: a crash, a sanitizer report, or another exception (which escapes and aborts the run).
 #include "base/errors.h"
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/dog_model.h"
 #include "geometry/mesh/patch_layout.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "geometry/pattern/pattern_faces.h"
 
 namespace sdog::fuzz {

@@ -84,7 +84,9 @@ std::vector<SourceFile> source_files() {
   return out;
 }
 
-std::string folder_of(const std::string& path) { return fs::path(path).parent_path().generic_string(); }
+std::string folder_of(const std::string& path) {
+  return fs::path(path).parent_path().generic_string();
+}
 
 TEST(Layout, EveryLayerIsListed) {
   for (const auto& f : source_files())
@@ -110,9 +112,10 @@ TEST(Layout, IncludesRunDownTheLayers) {
       EXPECT_TRUE(allowed.count(target))
           << f.path << ":" << i + 1 << " (layer " << layer << ") includes " << m[1].str()
           << " of layer " << target << ", which is not below it";
-      if (target_folder != target)
+      if (target_folder != target) {
         EXPECT_EQ(target, layer) << f.path << ":" << i + 1 << " includes " << m[1].str()
                                  << ", a header internal to " << target;
+      }
     }
   }
   EXPECT_GT(checked, 500);
@@ -127,14 +130,16 @@ TEST(Layout, NoFileIsLong) {
 // and is no namespace, type, preprocessor or comment line, whose signature ends in "{"; its body
 // ends at the next "}" in column 0.
 TEST(Layout, NoFunctionIsLong) {
-  const std::regex not_a_function(R"(^(namespace|struct|class|enum|union|extern|template|#|//|\}))");
+  const std::regex not_a_function(
+      R"(^(namespace|struct|class|enum|union|extern|template|#|//|\}))");
   int functions = 0;
   for (const auto& f : source_files()) {
     const auto& L = f.lines;
     for (size_t i = 0; i < L.size(); ++i) {
       const std::string& l = L[i];
       if (l.empty() || std::isspace(static_cast<unsigned char>(l[0])) ||
-          l.find('(') == std::string::npos || l.back() == ';' || std::regex_search(l, not_a_function))
+          l.find('(') == std::string::npos || l.back() == ';' ||
+          std::regex_search(l, not_a_function))
         continue;
       size_t k = i;
       while (k < L.size() && !L[k].empty() && L[k].back() != '{' && L[k].back() != ';') ++k;
@@ -142,13 +147,13 @@ TEST(Layout, NoFunctionIsLong) {
       size_t end = k + 1;
       while (end < L.size() && (L[end].empty() || L[end][0] != '}')) ++end;
       ++functions;
-      EXPECT_LE(static_cast<int>(end - i + 1), kMaxFunctionLines) << f.path << ":" << i + 1 << ": " << l;
+      EXPECT_LE(static_cast<int>(end - i + 1), kMaxFunctionLines)
+          << f.path << ":" << i + 1 << ": " << l;
       i = end;
     }
   }
   EXPECT_GT(functions, 1000);
 }
-
 
 // tests/ mirrors the sources: a test folder under tests/base, tests/geometry or tests/solver tests
 // the source folder of the same name.
@@ -159,7 +164,8 @@ TEST(Layout, TheControllersIncludeNoQt) {
     if (folder_of(f.path) != "ui/control") continue;
     ++files;
     for (const std::string& line : f.lines)
-      if (line.rfind("#include <Q", 0) == 0 || line.rfind("#include <q", 0) == 0 || line.find("QVTK") != std::string::npos)
+      if (line.rfind("#include <Q", 0) == 0 || line.rfind("#include <q", 0) == 0 ||
+          line.find("QVTK") != std::string::npos)
         ADD_FAILURE() << f.path << ": " << line;
   }
   EXPECT_GE(files, 8);
@@ -173,9 +179,12 @@ TEST(Layout, TestFoldersMirrorTheSources) {
       if (e.path().extension() != ".cpp") continue;
       const fs::path source = fs::relative(e.path().parent_path(), root / "tests");
       ++files;
-      EXPECT_TRUE(fs::is_directory(root / source)) << e.path().generic_string() << ": no source folder " << source;
-      if (source.generic_string() == "geometry" || source.generic_string() == "solver" || source.generic_string() == "ui")
-        ADD_FAILURE() << e.path().generic_string() << ": belongs in the folder of the layer it tests";
+      EXPECT_TRUE(fs::is_directory(root / source))
+          << e.path().generic_string() << ": no source folder " << source;
+      if (source.generic_string() == "geometry" || source.generic_string() == "solver" ||
+          source.generic_string() == "ui")
+        ADD_FAILURE() << e.path().generic_string()
+                      << ": belongs in the folder of the layer it tests";
     }
   }
   EXPECT_GT(files, 50);

@@ -19,8 +19,9 @@ namespace sdog {
 namespace {
 
 const char* const kCorpus[] = {
-    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg", "crossing_arc_pleats.svg", "crossing_wave_pleats.svg",
-    "parabola_pleats.svg",           "s_curve_pleats.svg",    "twelve_wave_pleats.fold", "v_pleat.fold",
+    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg", "crossing_arc_pleats.svg",
+    "crossing_wave_pleats.svg",      "parabola_pleats.svg",   "s_curve_pleats.svg",
+    "twelve_wave_pleats.fold",       "v_pleat.fold",
 };
 
 // Held iterations at most after the targets stop moving.
@@ -46,7 +47,8 @@ TEST_P(FoldCorpus, FoldsAsDrawnAtTwoResolutionsAnglesAndPaces) {
     const DogModel model = build_dog_model(read_crease_pattern(test::dataset(name)), res);
     for (const double angle : {30.0, 90.0})
       for (const int k : {1, 10}) {
-        const std::string what = name + " " + res.str() + " " + std::to_string(static_cast<int>(angle)) +
+        const std::string what = name + " " + res.str() + " " +
+                                 std::to_string(static_cast<int>(angle)) +
                                  " degrees K = " + std::to_string(k);
         RunConfig config;
         config.fold_angle = angle;
@@ -57,7 +59,8 @@ TEST_P(FoldCorpus, FoldsAsDrawnAtTwoResolutionsAnglesAndPaces) {
         EXPECT_LE(r.stitch_gap_max, kResidual) << what;
         ASSERT_GT(r.angles.bent_sites, 0) << what << ": nothing folded";
         EXPECT_GE(r.angles.direction_agreement(), kAgreement)
-            << what << ": " << r.angles.bent_as_targeted << " of " << r.angles.bent_sites << " bent the drawn way";
+            << what << ": " << r.angles.bent_as_targeted << " of " << r.angles.bent_sites
+            << " bent the drawn way";
         EXPECT_LE(r.angles.median_error, kMedianError) << what;
       }
   }

@@ -21,7 +21,9 @@ struct ThesisCase {
   std::string pattern;
   int nx, ny;
   double thesis_objective;  // ../shared/reference/thesis-results.md, Figure 6.2, standard
-  friend void PrintTo(const ThesisCase& c, std::ostream* os) { *os << c.pattern << "_" << c.nx << "x" << c.ny; }
+  friend void PrintTo(const ThesisCase& c, std::ostream* os) {
+    *os << c.pattern << "_" << c.nx << "x" << c.ny;
+  }
 };
 
 class ThesisProtocol : public ::testing::TestWithParam<ThesisCase> {};
@@ -29,12 +31,13 @@ class ThesisProtocol : public ::testing::TestWithParam<ThesisCase> {};
 TEST_P(ThesisProtocol, MeetsTheConstraintBarsAndTheThesisObjective) {
   SDOG_REQUIRE_SHARED();
   const ThesisCase& c = GetParam();
-  const DogModel model =
-      build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg"), {c.nx, c.ny});
+  const DogModel model = build_dog_model(
+      read_crease_pattern(test::reference_patterns_dir() + "/" + c.pattern + ".svg"), {c.nx, c.ny});
   const RunResult r = test::run_mode("standard", model, test::thesis_config());
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   ASSERT_EQ(r.summary.iterations, 300);
-  for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+  for (const auto& rep : r.reports)
+    EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_TRUE(r.reports.back().step.folded);
   const double objective = r.reports.back().diagnostics.objective;
@@ -45,13 +48,13 @@ TEST_P(ThesisProtocol, MeetsTheConstraintBarsAndTheThesisObjective) {
   RecordProperty("final_objective", std::to_string(objective));
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, ThesisProtocol,
-                         ::testing::Values(ThesisCase{"1_curve", 31, 21, 2.94}, ThesisCase{"1_curve", 43, 31, 3.00},
-                                           ThesisCase{"4_corners", 21, 21, 1.96},
-                                           ThesisCase{"4_corners", 41, 41, 2.53}, ThesisCase{"valley", 21, 21, 1.10},
-                                           ThesisCase{"valley", 41, 41, 1.42},
-                                           ThesisCase{"parallel_curves_4", 27, 45, 3.75},
-                                           ThesisCase{"parallel_curves_4", 39, 65, 4.50}));
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ThesisProtocol,
+    ::testing::Values(ThesisCase{"1_curve", 31, 21, 2.94}, ThesisCase{"1_curve", 43, 31, 3.00},
+                      ThesisCase{"4_corners", 21, 21, 1.96}, ThesisCase{"4_corners", 41, 41, 2.53},
+                      ThesisCase{"valley", 21, 21, 1.10}, ThesisCase{"valley", 41, 41, 1.42},
+                      ThesisCase{"parallel_curves_4", 27, 45, 3.75},
+                      ThesisCase{"parallel_curves_4", 39, 65, 4.50}));
 
 }  // namespace
 }  // namespace sdog

@@ -16,8 +16,8 @@ namespace {
 
 TEST(UsersPace, ParallelCurvesEndsFoldedAfterATenIterationDrag) {
   SDOG_REQUIRE_SHARED();
-  const DogModel model =
-      build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/parallel_curves_4.svg"), {39, 65});
+  const DogModel model = build_dog_model(
+      read_crease_pattern(test::reference_patterns_dir() + "/parallel_curves_4.svg"), {39, 65});
   const PaceResult r = run_pace(model, RunConfig{}, 10, 200);
   ASSERT_TRUE(r.failure.empty()) << r.failure;
   EXPECT_TRUE(r.converged);

@@ -36,14 +36,15 @@ inline RunResult run_setup(RunSetup& setup) {
 }
 
 /// Runs `mode` with `scenario` (made from the configuration) on the model's fine mesh.
-inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config,
-                          const Scenario& scenario) {
+inline RunResult run_mode(const std::string& mode_name, const DogModel& model,
+                          const RunConfig& config, const Scenario& scenario) {
   RunSetup setup(model, parse_enum<ModeKind>(mode_name), config, scenario);
   return run_setup(setup);
 }
 
 /// Runs `mode` with the configuration's scenario on the model's fine mesh.
-inline RunResult run_mode(const std::string& mode_name, const DogModel& model, const RunConfig& config) {
+inline RunResult run_mode(const std::string& mode_name, const DogModel& model,
+                          const RunConfig& config) {
   RunSetup setup(model, parse_enum<ModeKind>(mode_name), config);
   return run_setup(setup);
 }
@@ -95,7 +96,8 @@ inline void expect_follows_angles(const std::string& mode_name, const DogModel& 
   config.fold_angle = 60;
   const RunResult with = run_mode(mode_name, model, config);
   ASSERT_FALSE(with.summary.failed()) << mode_name << ": " << with.summary.failure;
-  for (const auto& rep : with.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << mode_name << " " << rep.iteration;
+  for (const auto& rep : with.reports)
+    EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << mode_name << " " << rep.iteration;
   config.weights.angles = 0;
   const RunResult without = run_mode(mode_name, model, config);
   ASSERT_FALSE(without.summary.failed()) << mode_name << ": " << without.summary.failure;
@@ -107,8 +109,8 @@ inline void expect_follows_angles(const std::string& mode_name, const DogModel& 
 /// standard solver's end state with the final targets held, `iterations` iterations of the mode
 /// stay within 1% of its objective and its stitching gap. (Both with the thesis's soft stitching:
 /// the patch modes stitch softly.)
-inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name, const DogModel& model,
-                                                 int iterations) {
+inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name,
+                                                 const DogModel& model, int iterations) {
   const RunConfig config = thesis_run(60, 40);
   const Scenario scenario = make_scenario(config, model.fine);
   const RunResult standard = run_mode("standard", model, config, scenario);
@@ -127,7 +129,8 @@ inline void expect_standard_end_is_a_fixed_point(const std::string& mode_name, c
   }
   const Diagnostics end = diagnose(problem, x);
   EXPECT_NEAR(end.objective, start.objective, 0.01 * start.objective) << mode_name;
-  EXPECT_NEAR(end.stitch_gap_max, start.stitch_gap_max, 0.01 * start.stitch_gap_max + 1e-4) << mode_name;
+  EXPECT_NEAR(end.stitch_gap_max, start.stitch_gap_max, 0.01 * start.stitch_gap_max + 1e-4)
+      << mode_name;
   EXPECT_LT(end.dog_max, 1e-5) << mode_name;
 }
 

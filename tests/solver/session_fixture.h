@@ -8,7 +8,8 @@
 namespace sdog::test {
 
 inline const DogModel& session_model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 

@@ -13,17 +13,19 @@ std::string with_extension(const std::string& path, const std::string& extension
   return std::filesystem::path(path).extension().empty() ? path + "." + extension : path;
 }
 
-void write_whole_file(const std::string& path, const std::function<void(const std::string&)>& write) {
+void write_whole_file(const std::string& path,
+                      const std::function<void(const std::string&)>& write) {
   const std::filesystem::path target(path);
   OutputSet out(target.has_parent_path() ? target.parent_path().string() : ".");
   write(out.temporary(target.filename().string()));
   out.commit();
 }
 
-std::string export_picture(const DogModel& model, const vis::SceneState& state, const vis::PictureOptions& options,
-                           const std::string& path) {
+std::string export_picture(const DogModel& model, const vis::SceneState& state,
+                           const vis::PictureOptions& options, const std::string& path) {
   const std::string file = with_extension(path, "png");
-  write_whole_file(file, [&](const std::string& tmp) { vis::render_picture(model, state, options, tmp); });
+  write_whole_file(
+      file, [&](const std::string& tmp) { vis::render_picture(model, state, options, tmp); });
   return file;
 }
 

@@ -17,12 +17,13 @@ std::string with_extension(const std::string& path, const std::string& extension
 
 /// Calls write(temporary path) and gives the file `path` its name only when that succeeded.
 /// Throws OutputError when the folder cannot be written.
-void write_whole_file(const std::string& path, const std::function<void(const std::string&)>& write);
+void write_whole_file(const std::string& path,
+                      const std::function<void(const std::string&)>& write);
 
 /// The picture of `state` drawn with `options` (vis/picture.h) written to `path` (.png appended to
 /// a name without an extension); returns the file written. Throws OutputError.
-std::string export_picture(const DogModel& model, const vis::SceneState& state, const vis::PictureOptions& options,
-                           const std::string& path);
+std::string export_picture(const DogModel& model, const vis::SceneState& state,
+                           const vis::PictureOptions& options, const std::string& path);
 
 /// The trimmed surface of `state` in sheet units (vis/surface_files.h), OBJ or PLY as the path's
 /// extension says (.obj appended when it names neither), a PLY coloured by `colour`; returns the

@@ -16,8 +16,9 @@ std::optional<Grab> grab_target(const vis::ConstraintView& drawn, const Eigen::M
   grab.target = drawn.handles[picked].target;
   grab.depth = display(picked, 2);
   const auto& handles = user.handles;
-  const auto own = std::find_if(handles.begin(), handles.end(),
-                                [&](const UserConstraints::Handle& h) { return h.vertex == grab.vertex; });
+  const auto own =
+      std::find_if(handles.begin(), handles.end(),
+                   [&](const UserConstraints::Handle& h) { return h.vertex == grab.vertex; });
   grab.new_handle = own == handles.end();
   grab.handle = static_cast<int>((grab.new_handle ? handles.end() : own) - handles.begin());
   return grab;

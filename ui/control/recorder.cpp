@@ -14,7 +14,9 @@ namespace fs = std::filesystem;
 void Recorder::check(const RecordingOptions& options) {
   if (!options.png && !options.vtu && !options.surface)
     throw UsageError("nothing to record: choose pictures (PNG), meshes (.vtu) or surfaces (.vtp)");
-  if (options.every < 1) throw UsageError("record every " + std::to_string(options.every) + " iterations: must be 1 or more");
+  if (options.every < 1)
+    throw UsageError("record every " + std::to_string(options.every) +
+                     " iterations: must be 1 or more");
 }
 
 Recorder::Recorder(const DogModel& model, std::string dir, const RecordingOptions& options)
@@ -34,13 +36,14 @@ bool Recorder::due(int iteration) const {
   return iteration != last_iteration_ && iteration % options_.every == 0;
 }
 
-void Recorder::record(const vis::SceneState& state, int iteration, double time, const vis::PictureOptions& picture) {
+void Recorder::record(const vis::SceneState& state, int iteration, double time,
+                      const vis::PictureOptions& picture) {
   char stem[32];
   std::snprintf(stem, sizeof stem, "%04d", frames_);
   const std::string frame = std::string("frame_") + stem, surface = std::string("surface_") + stem;
   OutputSet out(dir_);
-  std::vector<std::string> names;     // this frame's files
-  std::uintmax_t index_bytes = 0;     // frames.csv and the .pvd files, rewritten whole every frame
+  std::vector<std::string> names;  // this frame's files
+  std::uintmax_t index_bytes = 0;  // frames.csv and the .pvd files, rewritten whole every frame
   auto write_index = [&](const std::string& name, const std::string& text) {
     out.write_text(name, text);
     index_bytes += text.size();
@@ -50,7 +53,8 @@ void Recorder::record(const vis::SceneState& state, int iteration, double time, 
     names.push_back(frame + ".png");
     vis::render_picture(model_, state, picture, out.temporary(names.back()));
   }
-  const MeshArrays arrays = options_.vtu || options_.surface ? vis::frame_arrays(model_, state.fields) : MeshArrays{};
+  const MeshArrays arrays =
+      options_.vtu || options_.surface ? vis::frame_arrays(model_, state.fields) : MeshArrays{};
   if (options_.vtu) {
     names.push_back(frame + ".vtu");
     vis::write_frame_vtu(model_, state.fine, arrays, out.temporary(names.back()));
@@ -58,7 +62,8 @@ void Recorder::record(const vis::SceneState& state, int iteration, double time, 
     write_index("frames.pvd", vis::pvd_collection(vtu_steps));
   }
   if (options_.surface) {
-    if (!surface_) surface_ = std::make_unique<TrimmedSurface>(trimmed_surface(model_.fine, state.fine));
+    if (!surface_)
+      surface_ = std::make_unique<TrimmedSurface>(trimmed_surface(model_.fine, state.fine));
     place_trimmed_surface(*surface_, state.fine);
     names.push_back(surface + ".vtp");
     vis::write_surface_vtp(*surface_, arrays, out.temporary(names.back()));
@@ -94,12 +99,13 @@ std::string megabytes(std::uintmax_t bytes) {
 }  // namespace
 
 std::string recording_indicator(const Recorder& recorder) {
-  return "\u25CF REC " + std::to_string(recorder.frame_count()) + " frames, " + megabytes(recorder.bytes());
+  return "\u25CF REC " + std::to_string(recorder.frame_count()) + " frames, " +
+         megabytes(recorder.bytes());
 }
 
 std::string recording_summary(const Recorder& recorder, const std::string& dir) {
-  return "recording stopped: " + std::to_string(recorder.frame_count()) + " frames (" + megabytes(recorder.bytes()) +
-         ") in " + dir + " (frames.csv lists their iterations)";
+  return "recording stopped: " + std::to_string(recorder.frame_count()) + " frames (" +
+         megabytes(recorder.bytes()) + ") in " + dir + " (frames.csv lists their iterations)";
 }
 
 }  // namespace sdog::control

@@ -41,7 +41,8 @@ class Recorder {
   bool due(int iteration) const;
   /// Writes the state's files as the next frame; `picture` says how the PNG is drawn. Throws
   /// OutputError (the frame's files are then not there).
-  void record(const vis::SceneState& state, int iteration, double time, const vis::PictureOptions& picture);
+  void record(const vis::SceneState& state, int iteration, double time,
+              const vis::PictureOptions& picture);
 
   int frame_count() const { return frames_; }
   /// Bytes on disk of the recording's files.
@@ -60,7 +61,7 @@ class Recorder {
   int last_iteration_ = -1;
   std::uintmax_t frame_bytes_ = 0;  // the frames' files
   std::uintmax_t index_bytes_ = 0;  // frames.csv and the .pvd files as last written
-  std::string table_;  // frames.csv
+  std::string table_;               // frames.csv
   vis::TimeSteps vtu_steps_, surface_steps_;
 };
 

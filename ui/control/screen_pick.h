@@ -13,6 +13,7 @@ int nearest_on_screen(const Eigen::MatrixX3d& display, double x, double y, doubl
 
 /// Rows of `display` in the rectangle with corners (x0, y0) and (x1, y1) (any two opposite
 /// corners), hidden ones included, in row order.
-std::vector<int> inside_rectangle(const Eigen::MatrixX3d& display, double x0, double y0, double x1, double y1);
+std::vector<int> inside_rectangle(const Eigen::MatrixX3d& display, double x0, double y0, double x1,
+                                  double y1);
 
 }  // namespace sdog::control

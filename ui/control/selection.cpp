@@ -13,24 +13,28 @@ void add_each_once(std::vector<int>& to, int value) {
 
 }  // namespace
 
-ClickPick pick_at(const DogMesh& fine, const Eigen::MatrixX3d& crease_points, const Eigen::MatrixX3d& vertices,
-                  double x, double y) {
+ClickPick pick_at(const DogMesh& fine, const Eigen::MatrixX3d& crease_points,
+                  const Eigen::MatrixX3d& vertices, double x, double y) {
   ClickPick pick;
   const auto& curves = fine.stitching.curves;
   if (crease_points.rows() > 0 && !curves.empty()) {
     const int point = nearest_on_screen(crease_points, x, y, 8);
     for (int k = 0; point >= 0 && k < static_cast<int>(curves.size()); ++k) {
-      if (std::find(curves[k].points.begin(), curves[k].points.end(), point) == curves[k].points.end()) continue;
+      if (std::find(curves[k].points.begin(), curves[k].points.end(), point) ==
+          curves[k].points.end())
+        continue;
       pick.crease = k;
       pick.crease_point = point;
-      pick.message = "crease " + std::to_string(k) + " picked at crease point " + std::to_string(point) +
+      pick.message = "crease " + std::to_string(k) + " picked at crease point " +
+                     std::to_string(point) +
                      " (Creases: Mountain, Valley, Angle..., Fold; Edit > Add angle constraint: A)";
       return pick;
     }
   }
   pick.vertex = nearest_on_screen(vertices, x, y, 12);
-  pick.message = pick.vertex >= 0 ? "vertex " + std::to_string(pick.vertex) + " picked (Edit > Make handle: H)"
-                                  : "no vertex within 12 pixels of the click";
+  pick.message = pick.vertex >= 0
+                     ? "vertex " + std::to_string(pick.vertex) + " picked (Edit > Make handle: H)"
+                     : "no vertex within 12 pixels of the click";
   return pick;
 }
 

@@ -11,9 +11,9 @@ namespace sdog::control {
 
 /// What a click picked, and the status line that says so.
 struct ClickPick {
-  int crease = -1;        ///< the crease picked (then crease_point is where), else -1
+  int crease = -1;  ///< the crease picked (then crease_point is where), else -1
   int crease_point = -1;
-  int vertex = -1;        ///< the vertex picked when no crease was, else -1
+  int vertex = -1;  ///< the vertex picked when no crease was, else -1
   std::string message;
 };
 
@@ -21,8 +21,8 @@ struct ClickPick {
 /// pixels when `crease_points` (the display coordinates of the fine mesh's crease points, in
 /// order) is not empty; otherwise, or when there is none, the nearest vertex of `vertices` (display
 /// coordinates of the fine vertices) within 12 pixels.
-ClickPick pick_at(const DogMesh& fine, const Eigen::MatrixX3d& crease_points, const Eigen::MatrixX3d& vertices,
-                  double x, double y);
+ClickPick pick_at(const DogMesh& fine, const Eigen::MatrixX3d& crease_points,
+                  const Eigen::MatrixX3d& vertices, double x, double y);
 
 class Selection {
  public:

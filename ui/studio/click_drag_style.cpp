@@ -17,7 +17,8 @@ const std::vector<std::pair<const char*, const char*>>& mouse_actions() {
       {"pointing", "shows the vertex under the mouse in the Inspector"},
       {"Ctrl + left drag", "selects the vertices in a rubber band"},
       {"Ctrl + Shift + left drag", "adds the vertices in a rubber band to the selection"},
-      {"Shift + left drag on a target", "moves a handle's target, or takes over a scenario target as a handle"},
+      {"Shift + left drag on a target",
+       "moves a handle's target, or takes over a scenario target as a handle"},
   };
   return actions;
 }

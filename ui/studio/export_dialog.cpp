@@ -4,15 +4,16 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QFormLayout>
-#include <QLineEdit>
 #include <QHBoxLayout>
+#include <QLineEdit>
 #include <QSpinBox>
 
 #include "ui/studio/dialog_parts.h"
 
 namespace sdog::studio {
 
-ExportDialog::ExportDialog(const QString& path, const vis::ImageSize& size, QWidget* parent) : QDialog(parent) {
+ExportDialog::ExportDialog(const QString& path, const vis::ImageSize& size, QWidget* parent)
+    : QDialog(parent) {
   setWindowTitle("Export screenshot");
   path_ = new QLineEdit(path);
   path_->setToolTip("The PNG file to write (.png is added to a name without an extension)");
@@ -36,8 +37,10 @@ ExportDialog::ExportDialog(const QString& path, const vis::ImageSize& size, QWid
   framing_ = new QComboBox;
   framing_->addItem("Frame the sheet (fill the picture)");
   framing_->addItem("The view's camera as it is");
-  framing_->setToolTip("Framing keeps the direction the view looks from and moves the camera so that the sheet fills "
-                       "the picture");
+  framing_->setToolTip(
+      "Framing keeps the direction the view looks from and moves the camera so that the sheet "
+      "fills "
+      "the picture");
   auto* form = new QFormLayout(this);
   form->addRow("File:", file_row);
   form->addRow("Size:", size_row);
@@ -46,9 +49,17 @@ ExportDialog::ExportDialog(const QString& path, const vis::ImageSize& size, QWid
   add_buttons(form, this, "Export");
 }
 
-QString ExportDialog::path() const { return path_->text().trimmed(); }
-vis::ImageSize ExportDialog::size() const { return {width_->value(), height_->value()}; }
-bool ExportDialog::transparent() const { return transparent_->isChecked(); }
-bool ExportDialog::frame() const { return framing_->currentIndex() == 0; }
+QString ExportDialog::path() const {
+  return path_->text().trimmed();
+}
+vis::ImageSize ExportDialog::size() const {
+  return {width_->value(), height_->value()};
+}
+bool ExportDialog::transparent() const {
+  return transparent_->isChecked();
+}
+bool ExportDialog::frame() const {
+  return framing_->currentIndex() == 0;
+}
 
 }  // namespace sdog::studio

@@ -1,8 +1,8 @@
 #include "ui/studio/frame_rate.h"
 
+#include <vtkCamera.h>
 #include <QEventLoop>
 #include <QTimer>
-#include <vtkCamera.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +13,9 @@ namespace sdog::studio {
 
 FrameRate measure_frame_rate(MainWindow& window, double seconds) {
   using Clock = std::chrono::steady_clock;
-  const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  const auto ms = [](Clock::duration d) {
+    return std::chrono::duration<double, std::milli>(d).count();
+  };
   FrameRate r;
   const int reports_before = window.reports_received();
   int states = 0;

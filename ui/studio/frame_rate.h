@@ -11,13 +11,13 @@ namespace sdog::studio {
 class MainWindow;
 
 struct FrameRate {
-  double seconds = 0;        ///< measured
-  int frames = 0;            ///< camera moves drawn
-  double fps = 0;            ///< frames / seconds
-  double median_ms = 0;      ///< between consecutive frames
+  double seconds = 0;    ///< measured
+  int frames = 0;        ///< camera moves drawn
+  double fps = 0;        ///< frames / seconds
+  double median_ms = 0;  ///< between consecutive frames
   double p95_ms = 0, max_ms = 0;
-  int states_shown = 0;      ///< solver states the view took in that time
-  int iterations = 0;        ///< solver iterations reported in that time
+  int states_shown = 0;  ///< solver states the view took in that time
+  int iterations = 0;    ///< solver iterations reported in that time
 };
 
 /// Plays the open session for `seconds` while drawing camera moves; pauses it afterwards. The

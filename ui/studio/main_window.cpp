@@ -1,5 +1,6 @@
 #include "ui/studio/main_window.h"
 
+#include <QVTKOpenGLNativeWidget.h>
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -12,7 +13,6 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QStatusBar>
-#include <QVTKOpenGLNativeWidget.h>
 #include <QtGlobal>
 #include <algorithm>
 #include <exception>
@@ -61,7 +61,8 @@ QString warnings_text(const DogModel& model) {
 }  // namespace
 
 QString with_extension(const QString& path, const QString& extension) {
-  return QString::fromStdString(control::with_extension(path.toStdString(), extension.toStdString()));
+  return QString::fromStdString(
+      control::with_extension(path.toStdString(), extension.toStdString()));
 }
 
 MainWindow::MainWindow(const QString& about, QWidget* parent)
@@ -73,17 +74,21 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   qRegisterMetaType<sdog::IterationReport>();
   setWindowTitle("Scalable DOGs studio");
   setAcceptDrops(true);
-  error_sink_ = [this](const QString& message) { QMessageBox::critical(this, "Scalable DOGs studio", message); };
+  error_sink_ = [this](const QString& message) {
+    QMessageBox::critical(this, "Scalable DOGs studio", message);
+  };
   question_sink_ = [this](const QString& question, const QStringList& answers) {
-    QMessageBox box(QMessageBox::Question, "Scalable DOGs studio", question, QMessageBox::NoButton, this);
+    QMessageBox box(QMessageBox::Question, "Scalable DOGs studio", question, QMessageBox::NoButton,
+                    this);
     std::vector<QPushButton*> buttons;
     for (int k = 0; k < answers.size(); ++k)
-      buttons.push_back(box.addButton(answers[k], k + 1 == answers.size() ? QMessageBox::RejectRole
-                                                                           : QMessageBox::AcceptRole));
+      buttons.push_back(box.addButton(
+          answers[k], k + 1 == answers.size() ? QMessageBox::RejectRole : QMessageBox::AcceptRole));
     box.setDefaultButton(buttons.front());
     box.exec();
     const auto chosen = std::find(buttons.begin(), buttons.end(), box.clickedButton());
-    return chosen == buttons.end() ? static_cast<int>(answers.size()) - 1 : static_cast<int>(chosen - buttons.begin());
+    return chosen == buttons.end() ? static_cast<int>(answers.size()) - 1
+                                   : static_cast<int>(chosen - buttons.begin());
   };
   save_path_sink_ = [this](const QString& title, const QString& filter) {
     return QFileDialog::getSaveFileName(this, title, {}, filter);
@@ -98,7 +103,8 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   render_window_->SetMultiSamples(0);
   view_->setRenderWindow(render_window_);
   QString mouse_tip;
-  for (const auto& [action, effect] : mouse_actions()) mouse_tip += QString("%1%2: %3").arg(mouse_tip.isEmpty() ? "" : "\n", action, effect);
+  for (const auto& [action, effect] : mouse_actions())
+    mouse_tip += QString("%1%2: %3").arg(mouse_tip.isEmpty() ? "" : "\n", action, effect);
   view_->setToolTip(mouse_tip);
   view_->setMinimumSize(300, 240);
   setCentralWidget(view_);
@@ -114,13 +120,15 @@ MainWindow::MainWindow(const QString& about, QWidget* parent)
   inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   inspector_->setMargin(6);
   inspector_->setWordWrap(true);
-  inspector_->setToolTip("The picked fine vertex: patch, class, type and twin in the coarse mesh, residuals");
+  inspector_->setToolTip(
+      "The picked fine vertex: patch, class, type and twin in the coarse mesh, residuals");
   auto* inspector_dock = new QDockWidget("Inspector", this);
   inspector_dock->setObjectName("inspector");
   inspector_dock->setWidget(inspector_);
   addDockWidget(Qt::RightDockWidgetArea, inspector_dock);
 
-  status_ = new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG or FOLD file here).");
+  status_ =
+      new QLabel("Open a crease pattern (File > Open pattern, or drop an SVG or FOLD file here).");
   statusBar()->addWidget(status_, 1);
   recording_label_ = new QLabel;
   recording_label_->setStyleSheet("QLabel { color: #c00000; font-weight: bold; }");
@@ -143,7 +151,9 @@ MainWindow::~MainWindow() {
   marks_.reset();
 }
 
-void MainWindow::report_error(const QString& message) { error_sink_(message); }
+void MainWindow::report_error(const QString& message) {
+  error_sink_(message);
+}
 
 bool MainWindow::attempt(const std::function<void()>& what) {
   try {
@@ -166,9 +176,7 @@ void MainWindow::post(std::function<void(SolverWorker&)> command) {
 void MainWindow::stop_worker() {
   if (!worker_) return;
   QMetaObject::invokeMethod(
-      worker_,
-      [w = worker_] { w->pause(); },
-      Qt::BlockingQueuedConnection);
+      worker_, [w = worker_] { w->pause(); }, Qt::BlockingQueuedConnection);
   solver_thread_.quit();
   solver_thread_.wait();
   delete worker_;
@@ -197,8 +205,9 @@ void MainWindow::start_worker() {
   });
   connect(worker_, &SolverWorker::stopped_converged, this, [this, generation] {
     if (generation != generation_) return;
-    status_->setText(status_->text() + " - done: the targets no longer move and the shape has converged "
-                                       "(edit a constraint or press Play to go on)");
+    status_->setText(status_->text() +
+                     " - done: the targets no longer move and the shape has converged "
+                     "(edit a constraint or press Play to go on)");
     if (snapshot_) chart_->add_mark(snapshot_->iteration, "done");
   });
   connect(worker_, &SolverWorker::workspace_saved, this, [this](const QString& path) {
@@ -222,8 +231,8 @@ bool MainWindow::open_pattern(const QString& path, const QString& resolution, co
   return true;
 }
 
-void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString& path, const std::string& mode_name,
-                            const std::optional<Workspace>& state) {
+void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString& path,
+                            const std::string& mode_name, const std::optional<Workspace>& state) {
   stop_frames();
   stop_worker();
   scene_.reset();
@@ -237,13 +246,16 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   // A run configuration names vertices, crease points and creases of its pattern: another pattern
   // does not get it.
   QString dropped;
-  if (!config_pattern_.isEmpty() && QFileInfo(config_pattern_).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) {
+  if (!config_pattern_.isEmpty() &&
+      QFileInfo(config_pattern_).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) {
     if (!config_file_.isEmpty()) {
-      dropped = QString(" - the run configuration of %1 (for %2) is dropped: default solver settings")
-                    .arg(QFileInfo(config_file_).fileName(), QFileInfo(config_pattern_).fileName());
+      dropped =
+          QString(" - the run configuration of %1 (for %2) is dropped: default solver settings")
+              .arg(QFileInfo(config_file_).fileName(), QFileInfo(config_pattern_).fileName());
       config_ = RunConfig{};
     } else if (!config_.creases.empty()) {
-      dropped = QString(" - the crease assignments set for %1 are dropped").arg(QFileInfo(config_pattern_).fileName());
+      dropped = QString(" - the crease assignments set for %1 are dropped")
+                    .arg(QFileInfo(config_pattern_).fileName());
       config_.creases.clear();
     }
     config_file_.clear();
@@ -251,12 +263,14 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   config_pattern_ = path;
   model_ = std::move(model);
   pattern_path_ = path;
-  resolution_ = QString::fromStdString(Resolution{model_->fine.nx(), model_->fine.ny()}.str());  // "auto" resolved
+  resolution_ = QString::fromStdString(
+      Resolution{model_->fine.nx(), model_->fine.ny()}.str());  // "auto" resolved
   mode_ = mode_name;
   scene_ = std::make_unique<vis::Scene>(*model_, renderer_, scene_options_);
   if (!wireframe_chosen_) {  // from about 60 grid lines on, the quad edges hide the surface
     const QSignalBlocker block(layer_actions_.at(vis::Layer::kWireframe));
-    layer_actions_.at(vis::Layer::kWireframe)->setChecked(std::max(model_->fine.nx(), model_->fine.ny()) <= kWireframeLines);
+    layer_actions_.at(vis::Layer::kWireframe)
+        ->setChecked(std::max(model_->fine.nx(), model_->fine.ny()) <= kWireframeLines);
   }
   for (const auto& [layer, action] : layer_actions_) scene_->set_layer(layer, action->isChecked());
   camera_fitted_ = false;
@@ -264,15 +278,18 @@ void MainWindow::show_model(std::shared_ptr<const DogModel> model, const QString
   const RunConfig config = config_;
   post([config, mode_name, state](SolverWorker& w) { w.open(config, mode_name, state); });
   setWindowTitle(QFileInfo(path).fileName() + " " + resolution_ + " - Scalable DOGs studio");
-  status_->setText(QString("%1 at %2: %3 fine vertices in %4 patches, %5; mode %6, scenario %7 (Solver > Step: S, "
-                           "Play: Space)")
-                       .arg(QFileInfo(path).fileName(), resolution_)
-                       .arg(model_->fine.vertex_count())
-                       .arg(model_->fine.patch_count())
-                       .arg(model_->has_coarse ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
-                                               : QString("no coarse mesh (even resolution)"))
-                       .arg(QString::fromStdString(mode_), QString(enum_name(config_.scenario))) +
-                   dropped + warnings_text(*model_));
+  status_->setText(
+      QString(
+          "%1 at %2: %3 fine vertices in %4 patches, %5; mode %6, scenario %7 (Solver > Step: S, "
+          "Play: Space)")
+          .arg(QFileInfo(path).fileName(), resolution_)
+          .arg(model_->fine.vertex_count())
+          .arg(model_->fine.patch_count())
+          .arg(model_->has_coarse
+                   ? QString("coarse mesh %1 vertices").arg(model_->coarse.vertex_count())
+                   : QString("no coarse mesh (even resolution)"))
+          .arg(QString::fromStdString(mode_), QString(enum_name(config_.scenario))) +
+      dropped + warnings_text(*model_));
   update_actions();
   show_solver_state();
   render();
@@ -291,7 +308,8 @@ void MainWindow::show_snapshot(const Snapshot& s) {
   if (updated) {
     if (snapshot_) {
       if (changed(*snapshot_, s)) modified_ = true;
-      if (snapshot_->mode != s.mode) chart_->add_mark(s.iteration, "mode " + QString::fromStdString(s.mode));
+      if (snapshot_->mode != s.mode)
+        chart_->add_mark(s.iteration, "mode " + QString::fromStdString(s.mode));
     }
     if (!s.scenario_done) scenario_end_marked_ = false;
     snapshot_ = s;
@@ -336,22 +354,25 @@ void MainWindow::show_report(const IterationReport& r) {
   if (r.step.stage == settling_stage::kRunning) {
     progress = ", settling (folding straight from the start state to compare)";
   } else if (r.step.stage == settling_stage::kReplaced) {
-    progress = ", converged (settled: the fold straight from the start state is lower and replaces it)";
+    progress =
+        ", converged (settled: the fold straight from the start state is lower and replaces it)";
   } else if (r.step.converged) {
     progress = *r.step.converged ? ", converged"
-                                 : QString(", converging (%1% of the targets' move)").arg(100 * r.step.target_fraction, 0, 'f', 0);
+                                 : QString(", converging (%1% of the targets' move)")
+                                       .arg(100 * r.step.target_fraction, 0, 'f', 0);
   }
-  status_->setText(QString("iteration %1 (%2, t = %3): objective %4, DOG residual max %5, stitch gap max %6, "
-                           "%7 ms%8%9")
-                       .arg(r.iteration)
-                       .arg(QString::fromStdString(r.mode))
-                       .arg(r.t, 0, 'f', 3)
-                       .arg(r.diagnostics.objective, 0, 'g', 4)
-                       .arg(r.diagnostics.dog_max, 0, 'g', 3)
-                       .arg(r.diagnostics.stitch_gap_max, 0, 'g', 3)
-                       .arg(r.iteration_ms, 0, 'f', 1)
-                       .arg(progress)
-                       .arg(r.step.failed ? ", FAILED: " + QString::fromStdString(r.step.failure) : QString()));
+  status_->setText(
+      QString("iteration %1 (%2, t = %3): objective %4, DOG residual max %5, stitch gap max %6, "
+              "%7 ms%8%9")
+          .arg(r.iteration)
+          .arg(QString::fromStdString(r.mode))
+          .arg(r.t, 0, 'f', 3)
+          .arg(r.diagnostics.objective, 0, 'g', 4)
+          .arg(r.diagnostics.dog_max, 0, 'g', 3)
+          .arg(r.diagnostics.stitch_gap_max, 0, 'g', 3)
+          .arg(r.iteration_ms, 0, 'f', 1)
+          .arg(progress)
+          .arg(r.step.failed ? ", FAILED: " + QString::fromStdString(r.step.failure) : QString()));
 }
 
 void MainWindow::render() {
@@ -360,149 +381,12 @@ void MainWindow::render() {
   view_->update();
 }
 
-QString MainWindow::inspector_text() const { return inspector_->text(); }
-QString MainWindow::status_text() const { return status_->text(); }
-
-void MainWindow::step(int iterations) {
-  post([iterations](SolverWorker& w) {
-    for (int k = 0; k < iterations; ++k) w.step();
-  });
+QString MainWindow::inspector_text() const {
+  return inspector_->text();
 }
-
-void MainWindow::play() { post([](SolverWorker& w) { w.play(); }); }
-void MainWindow::pause() { post([](SolverWorker& w) { w.pause(); }); }
-void MainWindow::reset_solver() {
-  chart_->clear();
-  post([](SolverWorker& w) { w.reset(); });
+QString MainWindow::status_text() const {
+  return status_->text();
 }
-
-bool MainWindow::set_mode(const QString& mode) {
-  const std::string name = mode.toStdString();
-  if (!attempt([&] {
-        const ModeKind kind = parse_enum<ModeKind>(name, "mode: ");
-        if (model_) check_mode_usable(kind, *model_);
-      })) {
-    update_actions();
-    return false;
-  }
-  mode_ = name;
-  if (worker_) post([name](SolverWorker& w) { w.set_mode(name); });
-  update_actions();
-  show_solver_state();
-  return true;
-}
-
-bool MainWindow::set_scenario(const QString& scenario) {
-  const std::string name = scenario.toStdString();
-  RunConfig config = config_;
-  if (!attempt([&] { config.scenario = parse_enum<ScenarioKind>(name, "scenario: "); })) return false;
-  // A new base scenario starts the session again (the user's constraints go with it).
-  return set_run_config(config);
-}
-
-bool MainWindow::choose_scenario(const QString& scenario) {
-  if (snapshot_ && scenario.toStdString() != enum_name(config_.scenario) && left_start()) {
-    const int answer = question_sink_(
-        QString("Another scenario starts a new session from its start state: the current shape (iteration %1) and "
-                "the handles and angle constraints go. Start the %2 scenario?")
-            .arg(snapshot_->iteration)
-            .arg(scenario),
-        {"Start it", "Cancel"});
-    if (answer != 0) {
-      update_actions();
-      return false;
-    }
-  }
-  return set_scenario(scenario);
-}
-
-bool MainWindow::left_start() const {
-  return snapshot_ && (snapshot_->iteration > 0 || !snapshot_->constraints.handles.empty() ||
-                       !snapshot_->constraints.angles.empty());
-}
-
-bool MainWindow::load_run_config(const QString& path) {
-  RunConfig config;
-  if (!attempt([&] { read_run_config(path.toStdString(), config); })) return false;
-  if (!set_run_config(config)) return false;
-  config_file_ = path;
-  config_pattern_ = pattern_path_;  // none open: the next one
-  return true;
-}
-
-bool MainWindow::set_run_config(const RunConfig& config, bool keep_shape) {
-  if (!attempt([&] { validate_run_config(config, "solver settings"); })) return false;
-  config_ = config;
-  update_actions();
-  show_solver_state();
-  if (!worker_) return true;
-  modified_ = true;
-  if (!keep_shape) chart_->clear();
-  const std::string mode = mode_;
-  post([config, mode, keep_shape](SolverWorker& w) { w.reopen(config, mode, keep_shape); });
-  return true;
-}
-
-bool MainWindow::apply_settings(const RunConfig& config) {
-  bool keep = false;
-  if (left_start()) {
-    const int answer = question_sink_(
-        QString("New solver settings start a new session. Apply them to the current shape (iteration %1, with its "
-                "handles and angle constraints), or start again from the scenario's start state?")
-            .arg(snapshot_->iteration),
-        {"Keep the shape", "Start again", "Cancel"});
-    if (answer == 2 || answer < 0) {
-      status_->setText("settings not applied (Apply again to choose)");
-      return false;
-    }
-    keep = answer == 0;
-  }
-  if (!set_run_config(config, keep)) return false;
-  status_->setText(keep ? QString("settings applied to the shape of iteration %1").arg(snapshot_->iteration)
-                        : QString("settings applied: started again from the scenario's start state"));
-  return true;
-}
-
-bool MainWindow::settle_unsaved(const QString& action) {
-  if (!modified_ || !worker_) return true;
-  const int answer = question_sink_(
-      QString("The session has changes that are not saved in a workspace. Save them before %1?").arg(action),
-      {"Save...", "Discard", "Cancel"});
-  if (answer == 1) return true;
-  if (answer != 0) return false;
-  const QString path = save_path_sink_("Save workspace", "Workspaces (*.json)");
-  if (path.isEmpty()) return false;
-  // Waits for the solver thread to write it.
-  QEventLoop wait;
-  bool saved = false;
-  const auto on_saved = connect(this, &MainWindow::workspace_saved, &wait, [&] {
-    saved = true;
-    wait.quit();
-  });
-  const auto on_failed = connect(worker_, &SolverWorker::failed, &wait, [&] { wait.quit(); });
-  if (save_workspace(path)) wait.exec();
-  disconnect(on_saved);
-  disconnect(on_failed);
-  return saved;
-}
-
-void MainWindow::add_handle(int vertex) { add_handles({vertex}); }
-void MainWindow::add_handles(const std::vector<int>& vertices) {
-  post([vertices](SolverWorker& w) { w.add_handles(vertices); });
-}
-void MainWindow::move_handle(int handle, const Eigen::Vector3d& target) {
-  post([handle, target](SolverWorker& w) { w.move_handle(handle, target); });
-}
-void MainWindow::drag_handle(int handle, const Eigen::Vector3d& target, bool first) {
-  if (worker_) worker_->drag_handle(handle, target, first);
-}
-void MainWindow::remove_handle(int handle) { post([handle](SolverWorker& w) { w.remove_handle(handle); }); }
-void MainWindow::add_angle(int point, double degrees) {
-  post([point, degrees](SolverWorker& w) { w.add_angle(point, degrees); });
-}
-void MainWindow::remove_angle(int angle) { post([angle](SolverWorker& w) { w.remove_angle(angle); }); }
-void MainWindow::undo() { post([](SolverWorker& w) { w.undo(); }); }
-void MainWindow::redo() { post([](SolverWorker& w) { w.redo(); }); }
 
 bool MainWindow::open_workspace(const QString& path) {
   Workspace w;
@@ -515,8 +399,10 @@ bool MainWindow::open_workspace(const QString& path) {
   return open_state(std::move(model), w, path);
 }
 
-bool MainWindow::open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source) {
-  if (!attempt([&] { check_mode_usable(parse_enum<ModeKind>(state.mode, "mode: "), *model); })) return false;
+bool MainWindow::open_state(std::shared_ptr<const DogModel> model, const Workspace& state,
+                            const QString& source) {
+  if (!attempt([&] { check_mode_usable(parse_enum<ModeKind>(state.mode, "mode: "), *model); }))
+    return false;
   const QString pattern = QString::fromStdString(state.pattern);
   config_ = state.config;
   config_file_ = source;
@@ -531,10 +417,13 @@ bool MainWindow::save_workspace(const QString& path) {
     report_error("Open a crease pattern first (File > Open pattern).");
     return false;
   }
-  const std::string file = with_extension(path, "json").toStdString(), pattern = QFileInfo(pattern_path_).absoluteFilePath().toStdString(),
+  const std::string file = with_extension(path, "json").toStdString(),
+                    pattern = QFileInfo(pattern_path_).absoluteFilePath().toStdString(),
                     res = resolution_.toStdString();
   const nlohmann::json camera = camera_json();
-  post([file, pattern, res, camera](SolverWorker& w) { w.save_workspace(file, pattern, res, camera); });
+  post([file, pattern, res, camera](SolverWorker& w) {
+    w.save_workspace(file, pattern, res, camera);
+  });
   return true;
 }
 
@@ -553,10 +442,13 @@ void MainWindow::open_file(const QString& path) {
   if (!settle_unsaved("opening " + QFileInfo(path).fileName())) return;
   if (path.endsWith(".json", Qt::CaseInsensitive))
     open_workspace(path);
-  else if (path.endsWith(".svg", Qt::CaseInsensitive) || path.endsWith(".fold", Qt::CaseInsensitive))
-    open_pattern(path, resolution_.isEmpty() ? QString("auto") : resolution_, QString::fromStdString(mode_));
+  else if (path.endsWith(".svg", Qt::CaseInsensitive) ||
+           path.endsWith(".fold", Qt::CaseInsensitive))
+    open_pattern(path, resolution_.isEmpty() ? QString("auto") : resolution_,
+                 QString::fromStdString(mode_));
   else
-    report_error("Cannot open " + path + ": the studio opens crease patterns (.svg, .fold) and workspaces (.json).");
+    report_error("Cannot open " + path +
+                 ": the studio opens crease patterns (.svg, .fold) and workspaces (.json).");
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -6,14 +6,14 @@
 // Every public operation is what a menu entry does, without dialogs, so that tests and the
 // command line drive the window as a user would. Errors go to the error sink (a message box by
 // default); operations that can fail return false after reporting.
-#include <QLabel>
-#include <QMainWindow>
-#include <QStringList>
-#include <QThread>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <QLabel>
+#include <QMainWindow>
+#include <QStringList>
+#include <QThread>
 #include <functional>
 #include <map>
 #include <memory>
@@ -58,12 +58,14 @@ class MainWindow : public QMainWindow {
   void set_error_sink(std::function<void(const QString&)> sink) { error_sink_ = std::move(sink); }
   /// How the window asks a question: the index of the answer chosen in `answers` (the last one is
   /// the cancelling one, also when the question is dismissed). Default: a message box.
-  void set_question_sink(std::function<int(const QString& question, const QStringList& answers)> sink) {
+  void set_question_sink(
+      std::function<int(const QString& question, const QStringList& answers)> sink) {
     question_sink_ = std::move(sink);
   }
   /// How the window asks for a file to save to (dialog title, file filter; empty: cancelled).
   /// Default: a file dialog.
-  void set_save_path_sink(std::function<QString(const QString& title, const QString& filter)> sink) {
+  void set_save_path_sink(
+      std::function<QString(const QString& title, const QString& filter)> sink) {
     save_path_sink_ = std::move(sink);
   }
 
@@ -71,7 +73,8 @@ class MainWindow : public QMainWindow {
   /// Meshes the pattern and starts a session on it with the current run configuration. A run
   /// configuration loaded (or crease assignments set) for another pattern is dropped first, which
   /// the status bar says.
-  bool open_pattern(const QString& path, const QString& resolution, const QString& mode = "standard");
+  bool open_pattern(const QString& path, const QString& resolution,
+                    const QString& mode = "standard");
   /// The same pattern at another resolution (the mode stays if it can run there).
   bool change_resolution(const QString& resolution);
   bool open_workspace(const QString& path);
@@ -83,14 +86,16 @@ class MainWindow : public QMainWindow {
   bool settle_unsaved(const QString& action);
   /// A workspace's state on a model built by the caller (sdog-studio --frame: a saved frame on the
   /// model of its run, meshed with the run's options); `source` names the file it came from.
-  bool open_state(std::shared_ptr<const DogModel> model, const Workspace& state, const QString& source);
+  bool open_state(std::shared_ptr<const DogModel> model, const Workspace& state,
+                  const QString& source);
   /// Saved by the solver thread (`.json` appended to a name without an extension);
   /// workspace_saved() follows, and the status bar names the file.
   bool save_workspace(const QString& path);
   /// The current view rendered offscreen at the given size (`.png` appended to a name without an
   /// extension) with the view's camera, or (`frame`) its direction with the sheet framed to fill
   /// the picture. The status bar names the file.
-  bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent, bool frame = false);
+  bool export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent,
+                         bool frame = false);
   /// The trimmed surface of the current state in sheet units (vis/surface_files.h): OBJ or PLY as
   /// the path's extension says (.obj appended when it names neither); a PLY is coloured by the
   /// colour overlay that is on (patches when none is). The status bar names the file written.
@@ -98,7 +103,8 @@ class MainWindow : public QMainWindow {
   /// Records into `dir` (recorder.h): the current state, then the iterations that are multiples of
   /// `options.every`, as they are shown. `frame`: every picture frames the sheet (the view's
   /// direction). The status bar shows the count and size while recording.
-  bool start_frames(const QString& dir, const control::RecordingOptions& options = {}, bool frame = true);
+  bool start_frames(const QString& dir, const control::RecordingOptions& options = {},
+                    bool frame = true);
   /// Ends the recording; frames_written() follows.
   void stop_frames();
   bool recording_frames() const { return recorder_ != nullptr; }
@@ -116,7 +122,8 @@ class MainWindow : public QMainWindow {
   void set_smooth_edges(bool on);
   bool smooth_edges() const { return renderer_->GetUseFXAA(); }
   void reset_camera();
-  /// The camera, looking the way it looks, moved to frame the sheet as it is now (View > Frame all).
+  /// The camera, looking the way it looks, moved to frame the sheet as it is now (View > Frame
+  /// all).
   void frame_all();
   /// Every new state shown is framed (View > Keep the sheet framed; off by default).
   void set_keep_framed(bool on);
@@ -220,8 +227,8 @@ class MainWindow : public QMainWindow {
  private:
   /// Shows `model` (of the pattern at `path`) and starts a session on it in `mode` with the run
   /// configuration, at `state` when given.
-  void show_model(std::shared_ptr<const DogModel> model, const QString& path, const std::string& mode,
-                  const std::optional<Workspace>& state);
+  void show_model(std::shared_ptr<const DogModel> model, const QString& path,
+                  const std::string& mode, const std::optional<Workspace>& state);
   /// The session has left its start state: an iteration, a handle or an angle constraint.
   bool left_start() const;
   void build_menus();
@@ -273,7 +280,7 @@ class MainWindow : public QMainWindow {
   bool modified_ = false;
   bool keep_framed_ = false;
   bool scenario_end_marked_ = false;  // the chart marks the iteration the scenario's targets stop
-  bool wireframe_chosen_ = false;  // the user set the wireframe: no default by mesh size
+  bool wireframe_chosen_ = false;     // the user set the wireframe: no default by mesh size
 
   // The open pattern; the scene and the worker refer to the model.
   QString pattern_path_, resolution_;
@@ -315,7 +322,8 @@ class MainWindow : public QMainWindow {
   std::map<vis::Layer, QAction*> layer_actions_;
   std::map<std::string, QAction*> mode_actions_, scenario_actions_;
   std::map<vis::View, QAction*> view_actions_;
-  QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr, *coarse_action_ = nullptr;
+  QAction *play_action_ = nullptr, *undo_action_ = nullptr, *redo_action_ = nullptr,
+          *coarse_action_ = nullptr;
   QAction *frames_action_ = nullptr, *smooth_action_ = nullptr, *keep_framed_action_ = nullptr;
   QAction *step_action_ = nullptr, *step10_action_ = nullptr, *reset_action_ = nullptr;
   SolverPanel* solver_panel_ = nullptr;

@@ -1,10 +1,10 @@
 // MainWindow: pictures, surfaces, frame series and the mouse in the 3D view.
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkRenderWindowInteractor.h>
 #include <QAction>
 #include <QFileInfo>
 #include <QLabel>
 #include <QPixmap>
-#include <QVTKOpenGLNativeWidget.h>
-#include <vtkRenderWindowInteractor.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -12,6 +12,7 @@
 
 #include "base/atomic_output.h"
 #include "base/errors.h"
+#include "geometry/surface/trimmed_surface.h"
 #include "ui/control/exports.h"
 #include "ui/control/handle_drag.h"
 #include "ui/studio/click_drag_style.h"
@@ -19,7 +20,6 @@
 #include "ui/studio/screen_picking.h"
 #include "ui/studio/selection_marks.h"
 #include "ui/studio/solver_worker.h"
-#include "geometry/surface/trimmed_surface.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/frame_writer.h"
 #include "ui/vis/picture.h"
@@ -27,7 +27,8 @@
 
 namespace sdog::studio {
 
-bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& size, bool transparent, bool frame) {
+bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& size,
+                                   bool transparent, bool frame) {
   if (!snapshot_) {
     report_error("Nothing to export yet: open a crease pattern first (File > Open pattern).");
     return false;
@@ -36,8 +37,9 @@ bool MainWindow::export_screenshot(const QString& path, const vis::ImageSize& si
   options.transparent = transparent;
   options.frame = frame;
   std::string file;
-  const bool written =
-      attempt([&] { file = control::export_picture(*model_, snapshot_->state, options, path.toStdString()); });
+  const bool written = attempt([&] {
+    file = control::export_picture(*model_, snapshot_->state, options, path.toStdString());
+  });
   if (written)
     status_->setText(QString("screenshot (%1x%2) written to %3")
                          .arg(size.width)
@@ -53,9 +55,12 @@ bool MainWindow::export_surface(const QString& path) {
   }
   const vis::Layer colour = scene_->colour_layer().value_or(vis::Layer::kPatches);
   std::string file;
-  const bool written =
-      attempt([&] { file = control::export_surface(*model_, snapshot_->state, colour, path.toStdString()); });
-  if (written) status_->setText("trimmed surface written to " + QFileInfo(QString::fromStdString(file)).absoluteFilePath());
+  const bool written = attempt([&] {
+    file = control::export_surface(*model_, snapshot_->state, colour, path.toStdString());
+  });
+  if (written)
+    status_->setText("trimmed surface written to " +
+                     QFileInfo(QString::fromStdString(file)).absoluteFilePath());
   return written;
 }
 
@@ -81,13 +86,17 @@ vis::PictureOptions MainWindow::picture_options(const vis::ImageSize& size) cons
   return options;
 }
 
-bool MainWindow::start_frames(const QString& dir, const control::RecordingOptions& options, bool frame) {
+bool MainWindow::start_frames(const QString& dir, const control::RecordingOptions& options,
+                              bool frame) {
   if (!worker_ || !snapshot_) {
     report_error("Open a crease pattern first (File > Open pattern).");
     return false;
   }
   stop_frames();
-  if (!attempt([&] { recorder_ = std::make_unique<control::Recorder>(*model_, dir.toStdString(), options); })) return false;
+  if (!attempt([&] {
+        recorder_ = std::make_unique<control::Recorder>(*model_, dir.toStdString(), options);
+      }))
+    return false;
   record_framed_ = frame;
   const int every = options.every;
   post([every](SolverWorker& w) { w.set_recording(every); });
@@ -104,13 +113,18 @@ void MainWindow::stop_frames() {
   if (worker_) post([](SolverWorker& w) { w.set_recording(0); });
   update_recording_indicator();
   const QString dir = QFileInfo(QString::fromStdString(recorder->dir())).absoluteFilePath();
-  status_->setText(QString::fromStdString(control::recording_summary(*recorder, dir.toStdString())));
+  status_->setText(
+      QString::fromStdString(control::recording_summary(*recorder, dir.toStdString())));
   Q_EMIT frames_written(dir, recorder->frame_count());
 }
 
-int MainWindow::frames_recorded() const { return recorder_ ? recorder_->frame_count() : 0; }
+int MainWindow::frames_recorded() const {
+  return recorder_ ? recorder_->frame_count() : 0;
+}
 
-QString MainWindow::recording_indicator() const { return recording_label_->isVisible() ? recording_label_->text() : QString(); }
+QString MainWindow::recording_indicator() const {
+  return recording_label_->isVisible() ? recording_label_->text() : QString();
+}
 
 void MainWindow::update_recording_indicator() {
   if (!recorder_) {
@@ -123,10 +137,12 @@ void MainWindow::update_recording_indicator() {
 
 void MainWindow::record_frame() {
   if (!recorder_ || !snapshot_ || !recorder_->due(snapshot_->iteration)) return;
-  vis::PictureOptions options =
-      picture_options({std::max(64, view_->width() / 2 * 2), std::max(64, view_->height() / 2 * 2)});
+  vis::PictureOptions options = picture_options(
+      {std::max(64, view_->width() / 2 * 2), std::max(64, view_->height() / 2 * 2)});
   options.frame = record_framed_;
-  if (!attempt([&] { recorder_->record(snapshot_->state, snapshot_->iteration, snapshot_->time, options); })) {
+  if (!attempt([&] {
+        recorder_->record(snapshot_->state, snapshot_->iteration, snapshot_->time, options);
+      })) {
     stop_frames();  // the frames written so far stay
     return;
   }
@@ -137,20 +153,27 @@ bool MainWindow::grab_target(double x, double y) {
   if (!snapshot_ || !scene_ || !scene_->layer_on(vis::Layer::kHandles)) return false;
   const auto& drawn = snapshot_->state.constraints;  // the scenario's handles and the user's
   Eigen::MatrixX3d targets(drawn.handles.size(), 3);
-  for (size_t i = 0; i < drawn.handles.size(); ++i) targets.row(i) = drawn.handles[i].target.transpose();
-  const auto grab = control::grab_target(drawn, project_to_display(renderer_, targets), snapshot_->constraints, x, y);
+  for (size_t i = 0; i < drawn.handles.size(); ++i)
+    targets.row(i) = drawn.handles[i].target.transpose();
+  const auto grab = control::grab_target(drawn, project_to_display(renderer_, targets),
+                                         snapshot_->constraints, x, y);
   if (!grab) return false;
   drag_.begin(*grab);
-  if (grab->new_handle) {  // a target of the scenario: a handle takes it over, and the drag continues that edit
+  if (grab->new_handle) {  // a target of the scenario: a handle takes it over, and the drag
+                           // continues that edit
     const int vertex = grab->vertex;
     const Eigen::Vector3d target = grab->target;
     post([vertex, target](SolverWorker& w) { w.add_handle_at(vertex, target); });
-    status_->setText(QString("the scenario's target of vertex %1 is now a handle (Edit > Undo takes it back)").arg(vertex));
+    status_->setText(
+        QString("the scenario's target of vertex %1 is now a handle (Edit > Undo takes it back)")
+            .arg(vertex));
   }
   return true;
 }
 
-vtkRenderWindowInteractor* MainWindow::interactor() const { return view_->interactor(); }
+vtkRenderWindowInteractor* MainWindow::interactor() const {
+  return view_->interactor();
+}
 
 void MainWindow::set_up_mouse() {
   vtkNew<ClickDragStyle> style;
@@ -166,7 +189,8 @@ void MainWindow::set_up_mouse() {
   style->on_band_end = [this](int x0, int y0, int x1, int y1, bool add) {
     marks_->hide_band();
     select_in_rectangle(x0, y0, x1, y1, add);  // renders
-    status_->setText(QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.vertices().size()));
+    status_->setText(
+        QString("%1 vertices selected (Edit > Make handle: H)").arg(selection_.vertices().size()));
   };
   style->on_grab = [this](int x, int y) { return grab_target(x, y); };
   // The target follows the mouse while the button is down; the solver gets the newest target

@@ -1,6 +1,8 @@
-// MainWindow: selecting vertices and creases, clicking in the view, editing creases, the inspectors.
+// MainWindow: selecting vertices and creases, clicking in the view, editing creases, the
+// inspectors.
 #include "ui/studio/main_window.h"
 
+#include <QVTKOpenGLNativeWidget.h>
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -13,7 +15,6 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QStatusBar>
-#include <QVTKOpenGLNativeWidget.h>
 #include <QtGlobal>
 #include <algorithm>
 #include <exception>
@@ -35,12 +36,15 @@
 #include "ui/vis/camera.h"
 #include "ui/vis/mesh_view.h"
 
-
 namespace sdog::studio {
 
-void MainWindow::select_vertex(int vertex) { select_vertices(vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{}); }
+void MainWindow::select_vertex(int vertex) {
+  select_vertices(vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{});
+}
 
-int MainWindow::crease_count() const { return model_ ? static_cast<int>(model_->fine.stitching.curves.size()) : 0; }
+int MainWindow::crease_count() const {
+  return model_ ? static_cast<int>(model_->fine.stitching.curves.size()) : 0;
+}
 
 void MainWindow::select_vertices(const std::vector<int>& vertices, bool add) {
   selection_.select_vertices(vertices, add);
@@ -63,8 +67,8 @@ void MainWindow::click(double x, double y) {
     for (size_t p = 0; p < points.size(); ++p) rows.row(p) = points[p].transpose();
     crease_points = project_to_display(renderer_, rows);
   }
-  const control::ClickPick pick =
-      control::pick_at(model_->fine, crease_points, project_to_display(renderer_, shown_positions()), x, y);
+  const control::ClickPick pick = control::pick_at(
+      model_->fine, crease_points, project_to_display(renderer_, shown_positions()), x, y);
   selection_.apply(pick, crease_count());
   refresh_selection_marks();
   show_in_inspector(-1);
@@ -74,15 +78,21 @@ void MainWindow::click(double x, double y) {
 bool MainWindow::edit_creases(std::optional<Fold> fold, std::optional<double> angle) {
   const std::vector<int> creases = selection_.creases();
   std::string message;
-  if (!attempt([&] { message = control::crease_edit_message(creases, fold, angle, config_.scenario); })) return false;
+  if (!attempt(
+          [&] { message = control::crease_edit_message(creases, fold, angle, config_.scenario); }))
+    return false;
   post([creases, fold, angle](SolverWorker& w) { w.set_creases(creases, fold, angle); });
   status_->setText(QString::fromStdString(message));
   return true;
 }
 
-void MainWindow::set_crease_fold(Fold fold) { edit_creases(fold, std::nullopt); }
+void MainWindow::set_crease_fold(Fold fold) {
+  edit_creases(fold, std::nullopt);
+}
 
-void MainWindow::set_crease_angle(double degrees) { edit_creases(std::nullopt, degrees); }
+void MainWindow::set_crease_angle(double degrees) {
+  edit_creases(std::nullopt, degrees);
+}
 
 void MainWindow::fold_creases() {
   if (!worker_) {
@@ -91,7 +101,8 @@ void MainWindow::fold_creases() {
   }
   chart_->clear();
   post([](SolverWorker& w) { w.fold(); });
-  status_->setText("folding from the flat sheet with the crease assignments (Solver > Play: Space)");
+  status_->setText(
+      "folding from the flat sheet with the crease assignments (Solver > Play: Space)");
 }
 
 void MainWindow::set_fold_percent(int percent) {
@@ -112,7 +123,9 @@ void MainWindow::set_fold_percent(int percent) {
 
 void MainWindow::select_in_rectangle(double x0, double y0, double x1, double y1, bool add) {
   if (!snapshot_) return;
-  select_vertices(control::inside_rectangle(project_to_display(renderer_, shown_positions()), x0, y0, x1, y1), add);
+  select_vertices(
+      control::inside_rectangle(project_to_display(renderer_, shown_positions()), x0, y0, x1, y1),
+      add);
 }
 
 Eigen::MatrixX3d MainWindow::shown_positions() const {
@@ -133,9 +146,10 @@ void MainWindow::show_in_inspector(int hovered) {
   const int vertex = hovered >= 0 ? hovered : selection_.vertex();
   if (vertex < 0 && !selection_.creases().empty() && model_ && snapshot_) {
     attempt([&] {
-      inspector_->setText("<i>picked</i><br>" + describe_creases(*model_, snapshot_->state.crease_folds,
-                                                                 snapshot_->crease_angles, config_.fold_angle,
-                                                                 selection_.creases()));
+      inspector_->setText("<i>picked</i><br>" +
+                          describe_creases(*model_, snapshot_->state.crease_folds,
+                                           snapshot_->crease_angles, config_.fold_angle,
+                                           selection_.creases()));
     });
     return;
   }
@@ -144,8 +158,9 @@ void MainWindow::show_in_inspector(int hovered) {
     return;
   }
   attempt([&] {
-    inspector_->setText((hovered >= 0 ? QString("<i>under the mouse</i>") : QString("<i>picked</i>")) +
-                        describe_vertex(*model_, snapshot_->state, vertex));
+    inspector_->setText(
+        (hovered >= 0 ? QString("<i>under the mouse</i>") : QString("<i>picked</i>")) +
+        describe_vertex(*model_, snapshot_->state, vertex));
   });
 }
 

@@ -1,6 +1,7 @@
 // MainWindow: overlays, views, the camera and camera files.
 #include "ui/studio/main_window.h"
 
+#include <QVTKOpenGLNativeWidget.h>
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -13,7 +14,6 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QStatusBar>
-#include <QVTKOpenGLNativeWidget.h>
 #include <QtGlobal>
 #include <algorithm>
 #include <exception>
@@ -31,7 +31,6 @@
 #include "ui/studio/vertex_inspector.h"
 #include "ui/vis/camera.h"
 #include "ui/vis/mesh_view.h"
-
 
 namespace sdog::studio {
 
@@ -86,22 +85,28 @@ void MainWindow::frame_all() {
 
 void MainWindow::set_keep_framed(bool on) {
   keep_framed_ = on;
-  if (keep_framed_action_ && keep_framed_action_->isChecked() != on) keep_framed_action_->setChecked(on);
+  if (keep_framed_action_ && keep_framed_action_->isChecked() != on)
+    keep_framed_action_->setChecked(on);
   if (on) frame_all();
 }
 
-nlohmann::json MainWindow::camera_json() const { return vis::to_json(vis::camera_pose(renderer_->GetActiveCamera())); }
+nlohmann::json MainWindow::camera_json() const {
+  return vis::to_json(vis::camera_pose(renderer_->GetActiveCamera()));
+}
 
 bool MainWindow::save_camera(const QString& path) {
   const QString file = with_extension(path, "json");
-  const bool saved =
-      attempt([&] { vis::save_camera(vis::camera_pose(renderer_->GetActiveCamera()), file.toStdString()); });
+  const bool saved = attempt([&] {
+    vis::save_camera(vis::camera_pose(renderer_->GetActiveCamera()), file.toStdString());
+  });
   if (saved) status_->setText("camera saved to " + QFileInfo(file).absoluteFilePath());
   return saved;
 }
 
 bool MainWindow::load_camera(const QString& path) {
-  const bool ok = attempt([&] { vis::apply_camera_pose(vis::load_camera(path.toStdString()), renderer_->GetActiveCamera()); });
+  const bool ok = attempt([&] {
+    vis::apply_camera_pose(vis::load_camera(path.toStdString()), renderer_->GetActiveCamera());
+  });
   if (ok) render();
   return ok;
 }

@@ -5,9 +5,11 @@
 
 namespace sdog::studio {
 
-std::shared_ptr<const DogModel> load_model(const std::string& pattern_path, const std::string& resolution) {
+std::shared_ptr<const DogModel> load_model(const std::string& pattern_path,
+                                           const std::string& resolution) {
   const CreasePattern pattern = read_crease_pattern(pattern_path);
-  const Resolution res = resolve_resolution(resolution, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
+  const Resolution res =
+      resolve_resolution(resolution, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
   MeshOptions options;
   options.build_coarse = res.nx % 2 == 1 && res.ny % 2 == 1;
   check_resolution(res, options.build_coarse);

@@ -13,6 +13,7 @@ namespace sdog::studio {
 /// lines along the sheet's longer side, as sdog's default). Throws the geometry library's errors
 /// (UsageError for a resolution that cannot work, InputError for a pattern that cannot be read or
 /// meshed).
-std::shared_ptr<const DogModel> load_model(const std::string& pattern_path, const std::string& resolution);
+std::shared_ptr<const DogModel> load_model(const std::string& pattern_path,
+                                           const std::string& resolution);
 
 }  // namespace sdog::studio

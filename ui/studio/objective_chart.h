@@ -46,6 +46,9 @@ class ObjectiveChart : public QWidget {
     std::array<double, kTermCount + 1> log_values;  // the terms, then the DOG residual
     double ms;
   };
+  /// The series with a value above the floor somewhere (terms in use), and their range of log
+  /// values [lo, hi].
+  std::vector<int> used_series(double& lo, double& hi) const;
   std::deque<Point> points_;
   std::deque<Mark> marks_;
 };

@@ -3,8 +3,8 @@
 #include <QCheckBox>
 #include <QFileDialog>
 #include <QFormLayout>
-#include <QLineEdit>
 #include <QHBoxLayout>
+#include <QLineEdit>
 #include <QSpinBox>
 
 #include "ui/studio/dialog_parts.h"
@@ -14,7 +14,8 @@ namespace sdog::studio {
 RecordDialog::RecordDialog(const QString& dir, QWidget* parent) : QDialog(parent) {
   setWindowTitle("Record frames");
   dir_ = new QLineEdit(dir);
-  dir_->setToolTip("The folder for the frames (created if needed; it must not hold another recording)");
+  dir_->setToolTip(
+      "The folder for the frames (created if needed; it must not hold another recording)");
   auto* dir_row = path_row(dir_, [this](const QString& current) {
     return QFileDialog::getExistingDirectory(this, "Folder for the frames", current);
   });
@@ -30,10 +31,14 @@ RecordDialog::RecordDialog(const QString& dir, QWidget* parent) : QDialog(parent
   every_->setValue(defaults.every);
   every_->setPrefix("every ");
   every_->setSuffix(" iteration(s)");
-  every_->setToolTip("The iterations that are multiples of this are recorded (and the state when recording starts)");
+  every_->setToolTip(
+      "The iterations that are multiples of this are recorded (and the state when recording "
+      "starts)");
   frame_ = new QCheckBox("Frame the sheet in every picture");
   frame_->setChecked(true);
-  frame_->setToolTip("Each picture keeps the view's direction and fits the sheet as it is then; off: the view's camera");
+  frame_->setToolTip(
+      "Each picture keeps the view's direction and fits the sheet as it is then; off: the view's "
+      "camera");
   auto* form = new QFormLayout(this);
   form->addRow("Folder:", dir_row);
   form->addRow("Write:", png_);
@@ -44,7 +49,9 @@ RecordDialog::RecordDialog(const QString& dir, QWidget* parent) : QDialog(parent
   add_buttons(form, this, "Record");
 }
 
-QString RecordDialog::dir() const { return dir_->text().trimmed(); }
+QString RecordDialog::dir() const {
+  return dir_->text().trimmed();
+}
 
 control::RecordingOptions RecordDialog::options() const {
   control::RecordingOptions o;
@@ -55,6 +62,8 @@ control::RecordingOptions RecordDialog::options() const {
   return o;
 }
 
-bool RecordDialog::frame() const { return frame_->isChecked(); }
+bool RecordDialog::frame() const {
+  return frame_->isChecked();
+}
 
 }  // namespace sdog::studio

@@ -29,8 +29,8 @@ Eigen::Vector3d to_world(vtkRenderer* renderer, double x, double y, double depth
 
 Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3d& points) {
   // The camera's matrix once (WorldToDisplay per point recomputes it: too slow for hovering).
-  vtkMatrix4x4* world_to_view =
-      renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1);
+  vtkMatrix4x4* world_to_view = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+      renderer->GetTiledAspectRatio(), -1, 1);
   Eigen::MatrixX3d display(points.rows(), 3);
   for (int i = 0; i < points.rows(); ++i) {
     double p[4] = {points(i, 0), points(i, 1), points(i, 2), 1}, v[4];
@@ -46,7 +46,8 @@ Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3
   return display;
 }
 
-int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels) {
+int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y,
+               double max_pixels) {
   return control::nearest_on_screen(project_to_display(renderer, points), x, y, max_pixels);
 }
 

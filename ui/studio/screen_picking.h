@@ -12,7 +12,8 @@ namespace sdog::studio {
 /// The row of `points` (world coordinates, n x 3) nearest display position (x, y) (VTK display
 /// coordinates: origin bottom left) within `max_pixels`, as control::nearest_on_screen picks it;
 /// -1 if none.
-int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y, double max_pixels);
+int pick_point(vtkRenderer* renderer, const Eigen::MatrixX3d& points, double x, double y,
+               double max_pixels);
 
 /// Display coordinates (x, y, depth) of every row of `points` (a point behind the camera: NaN).
 Eigen::MatrixX3d project_to_display(vtkRenderer* renderer, const Eigen::MatrixX3d& points);

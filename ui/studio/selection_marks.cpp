@@ -13,7 +13,8 @@ namespace sdog::studio {
 namespace {
 
 // RGB of the selection (not the handles' orange).
-constexpr double kRed = vis::kSelectionColour[0], kGreen = vis::kSelectionColour[1], kBlue = vis::kSelectionColour[2];
+constexpr double kRed = vis::kSelectionColour[0], kGreen = vis::kSelectionColour[1],
+                 kBlue = vis::kSelectionColour[2];
 
 }  // namespace
 
@@ -53,7 +54,8 @@ SelectionMarks::~SelectionMarks() {
   renderer_->RemoveActor2D(band_actor_);
 }
 
-void SelectionMarks::show_points(const Eigen::MatrixX3d& positions, const std::vector<int>& selected) {
+void SelectionMarks::show_points(const Eigen::MatrixX3d& positions,
+                                 const std::vector<int>& selected) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto vertices = vtkSmartPointer<vtkCellArray>::New();
   for (int v : selected) {
@@ -77,8 +79,12 @@ void SelectionMarks::show_band(double x0, double y0, double x1, double y1) {
   band_actor_->VisibilityOn();
 }
 
-void SelectionMarks::hide_band() { band_actor_->VisibilityOff(); }
+void SelectionMarks::hide_band() {
+  band_actor_->VisibilityOff();
+}
 
-bool SelectionMarks::band_visible() const { return band_actor_->GetVisibility() != 0; }
+bool SelectionMarks::band_visible() const {
+  return band_actor_->GetVisibility() != 0;
+}
 
 }  // namespace sdog::studio

@@ -1,7 +1,6 @@
 #include "ui/studio/solver_panel.h"
 
 #include <QAction>
-#include <cmath>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -13,6 +12,7 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "solver/modes/mode_kind.h"
 #include "ui/studio/solver_settings.h"
@@ -23,20 +23,25 @@ namespace {
 // While the fold slider is dragged, its value is sent once it has rested this long.
 constexpr int kFoldSliderPause = 120;
 
-QString percent_text(int percent) { return QString::number(percent) + "%"; }
+QString percent_text(int percent) {
+  return QString::number(percent) + "%";
+}
 
 }  // namespace
 
-// The mode and scenario choices (with the button that reads a run configuration) and the fold slider.
+// The mode and scenario choices (with the button that reads a run configuration) and the fold
+// slider.
 QFormLayout* SolverPanel::build_choices(QPushButton* from_file) {
   auto* choices = new QFormLayout;
   mode_ = new QComboBox;
-  for (const std::string& name : enum_names<ModeKind>()) mode_->addItem(QString::fromStdString(name));
+  for (const std::string& name : enum_names<ModeKind>())
+    mode_->addItem(QString::fromStdString(name));
   mode_->setToolTip("How an iteration is computed; switching keeps the current state");
   choices->addRow("mode", mode_);
   auto* scenario_row = new QHBoxLayout;
   scenario_ = new QComboBox;
-  for (const std::string& name : enum_names<ScenarioKind>()) scenario_->addItem(QString::fromStdString(name));
+  for (const std::string& name : enum_names<ScenarioKind>())
+    scenario_->addItem(QString::fromStdString(name));
   scenario_->setToolTip("The base scenario's targets (a new scenario starts the session again)");
   scenario_row->addWidget(scenario_, 1);
   scenario_row->addWidget(from_file);
@@ -45,8 +50,9 @@ QFormLayout* SolverPanel::build_choices(QPushButton* from_file) {
   fold_ = new QSlider(Qt::Horizontal);
   fold_->setRange(0, 100);
   fold_->setValue(100);
-  fold_->setToolTip("Fold amount: every crease folds to this share of its angle (0%: flat, 100%: the drawn "
-                    "angles); moving it starts the fold scenario and plays");
+  fold_->setToolTip(
+      "Fold amount: every crease folds to this share of its angle (0%: flat, 100%: the drawn "
+      "angles); moving it starts the fold scenario and plays");
   fold_label_ = new QLabel(percent_text(100));
   fold_label_->setMinimumWidth(fold_label_->fontMetrics().horizontalAdvance("100%") + 4);
   fold_row->addWidget(fold_, 1);
@@ -72,8 +78,9 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
   layout->addLayout(buttons);
 
   auto* from_file = new QPushButton("From file...");
-  from_file->setToolTip("Scenario, weights, tolerances and constraints from a run configuration (JSON, as "
-                        "sdog run --config reads it)");
+  from_file->setToolTip(
+      "Scenario, weights, tolerances and constraints from a run configuration (JSON, as "
+      "sdog run --config reads it)");
   layout->addLayout(build_choices(from_file));
 
   form_ = new SolverSettingsForm(RunConfig{});
@@ -89,7 +96,8 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
   revert_ = new QPushButton("Revert");
   revert_->setToolTip("Show the settings in use again");
   apply_ = new QPushButton("Apply");
-  apply_->setToolTip("Use these settings: the session starts again with them (the constraints stay)");
+  apply_->setToolTip(
+      "Use these settings: the session starts again with them (the constraints stay)");
   apply_->setDefault(true);
   apply_row->addWidget(revert_);
   apply_row->addWidget(apply_);
@@ -104,7 +112,8 @@ SolverPanel::SolverPanel(const std::vector<QAction*>& controls, QWidget* parent)
     fold_label_->setText(percent_text(percent));
     fold_pause_->start();
   });
-  connect(fold_pause_, &QTimer::timeout, this, [this] { Q_EMIT fold_percent_chosen(fold_->value()); });
+  connect(fold_pause_, &QTimer::timeout, this,
+          [this] { Q_EMIT fold_percent_chosen(fold_->value()); });
   connect(fold_, &QSlider::sliderReleased, this, [this] {
     fold_pause_->stop();
     Q_EMIT fold_percent_chosen(fold_->value());
@@ -131,7 +140,8 @@ void SolverPanel::show_state(const std::string& mode, const RunConfig& config, b
   // The coarse modes need the coarse mesh (odd resolutions): their entries are greyed out.
   if (auto* items = qobject_cast<QStandardItemModel*>(mode_->model()))
     for (int i = 0; i < mode_->count(); ++i) {
-      const bool usable = has_coarse || !mode_needs_coarse(parse_enum<ModeKind>(mode_->itemText(i).toStdString()));
+      const bool usable =
+          has_coarse || !mode_needs_coarse(parse_enum<ModeKind>(mode_->itemText(i).toStdString()));
       items->item(i)->setEnabled(usable);
       items->item(i)->setToolTip(usable ? QString() : "needs the coarse mesh (an odd resolution)");
     }

@@ -40,13 +40,15 @@ class SolverSettingsForm : public QWidget {
     std::function<void(RunConfig&, QWidget*)> show;
     std::function<void(RunConfig&, const QWidget*)> store;
   };
-  void add_double(QFormLayout* form, const QString& label, double& (*member)(RunConfig&), double min, double max,
-                  int decimals, const QString& tip);
-  void add_int(QFormLayout* form, const QString& label, int& (*member)(RunConfig&), int min, int max,
-               const QString& tip);
-  void add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&), const QString& tip);
-  void add_choice(QFormLayout* form, const QString& label, int (*get)(const RunConfig&), void (*set)(RunConfig&, int),
-                  const std::vector<std::string>& names, const QString& tip);
+  void add_double(QFormLayout* form, const QString& label, double& (*member)(RunConfig&),
+                  double min, double max, int decimals, const QString& tip);
+  void add_int(QFormLayout* form, const QString& label, int& (*member)(RunConfig&), int min,
+               int max, const QString& tip);
+  void add_bool(QFormLayout* form, const QString& label, bool& (*member)(RunConfig&),
+                const QString& tip);
+  void add_choice(QFormLayout* form, const QString& label, int (*get)(const RunConfig&),
+                  void (*set)(RunConfig&, int), const std::vector<std::string>& names,
+                  const QString& tip);
   void add_scenario_group(QVBoxLayout* layout);
   void add_weights_group(QVBoxLayout* layout);
   void add_standard_group(QVBoxLayout* layout);

@@ -52,7 +52,8 @@ Session& SolverWorker::session() {
 void SolverWorker::send_snapshot() {
   const Session& s = *session_;
   Snapshot snap;
-  snap.state = vis::scene_state(s.problem(), s.positions(), s.coarse_positions(), &s.scenario(), s.time());
+  snap.state =
+      vis::scene_state(s.problem(), s.positions(), s.coarse_positions(), &s.scenario(), s.time());
   snap.iteration = s.iteration();
   snap.mode = enum_name(s.mode());
   snap.constraints = s.constraints();
@@ -72,7 +73,8 @@ void SolverWorker::send_snapshot() {
   Q_EMIT snapshot_ready(snap);
 }
 
-void SolverWorker::open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state) {
+void SolverWorker::open(const RunConfig& config, const std::string& mode,
+                        const std::optional<Workspace>& state) {
   pause();
   session_.reset();
   session_ = std::make_unique<Session>(*model_, config, parse_enum<ModeKind>(mode));
@@ -90,11 +92,13 @@ void SolverWorker::step() {
   if (report.step.failed) {
     pause();
     send_snapshot();
-    throw SolverError("iteration " + std::to_string(report.iteration) + " failed: " + report.step.failure +
-                      ". The sheet stays at the last good state: undo the last edit (Ctrl+Z), move the handle a "
-                      "shorter way, or reset the solver (Ctrl+Backspace).");
+    throw SolverError(
+        "iteration " + std::to_string(report.iteration) + " failed: " + report.step.failure +
+        ". The sheet stays at the last good state: undo the last edit (Ctrl+Z), move the handle a "
+        "shorter way, or reset the solver (Ctrl+Backspace).");
   }
-  if (play_timer_->isActive() && session_->scenario_done() && report.step.converged.value_or(false)) {
+  if (play_timer_->isActive() && session_->scenario_done() &&
+      report.step.converged.value_or(false)) {
     pause();  // sends the snapshot
     stopped_converged_ = true;
     Q_EMIT stopped_converged();
@@ -211,7 +215,8 @@ void SolverWorker::remove_angle(int angle) {
   send_snapshot();
 }
 
-void SolverWorker::set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle) {
+void SolverWorker::set_creases(const std::vector<int>& curves, std::optional<Fold> fold,
+                               std::optional<double> angle) {
   session().set_creases(curves, fold, angle);
   play_on();
   send_snapshot();
@@ -240,8 +245,8 @@ void SolverWorker::redo() {
   send_snapshot();
 }
 
-void SolverWorker::save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
-                                  const nlohmann::json& camera) {
+void SolverWorker::save_workspace(const std::string& path, const std::string& pattern,
+                                  const std::string& resolution, const nlohmann::json& camera) {
   sdog::save_workspace(workspace_of(session(), pattern, resolution, camera), path);
   Q_EMIT workspace_saved(QString::fromStdString(path));
 }

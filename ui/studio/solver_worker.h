@@ -13,9 +13,9 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "solver/run/run_config.h"
 #include "solver/session/session.h"
@@ -44,7 +44,8 @@ class SolverWorker : public QObject {
 
   // Commands (call them through post()). Each sends a snapshot afterwards.
   /// A new session; with `state` (a workspace, a saved frame) at its constraints and positions.
-  void open(const RunConfig& config, const std::string& mode, const std::optional<Workspace>& state = std::nullopt);
+  void open(const RunConfig& config, const std::string& mode,
+            const std::optional<Workspace>& state = std::nullopt);
   /// A new session with another configuration; `keep_shape`: at the current session's positions,
   /// iteration and constraints (new weights and tolerances act on the current shape).
   void reopen(const RunConfig& config, const std::string& mode, bool keep_shape);
@@ -64,14 +65,15 @@ class SolverWorker : public QObject {
   void add_angle(int crease_point, double degrees);
   void remove_angle(int angle);
   /// Session::set_creases and Session::fold.
-  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold, std::optional<double> angle);
+  void set_creases(const std::vector<int>& curves, std::optional<Fold> fold,
+                   std::optional<double> angle);
   void fold();
   /// Session::set_fold_percent; starts playing, so the sheet folds or unfolds at once.
   void set_fold_percent(double percent);
   void undo();
   void redo();
-  void save_workspace(const std::string& path, const std::string& pattern, const std::string& resolution,
-                      const nlohmann::json& camera);
+  void save_workspace(const std::string& path, const std::string& pattern,
+                      const std::string& resolution, const nlohmann::json& camera);
   /// While the window records (every >= 1; 0: not recording), the state of every iteration that
   /// is a multiple of `every` is sent, and playing waits until the window has taken it.
   void set_recording(int every);

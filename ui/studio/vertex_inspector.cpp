@@ -22,7 +22,8 @@ QString describe_vertex(const DogModel& model, const vis::SceneState& state, int
   QString html = "<table>";
   html += row("fine vertex", QString::number(v));
   html += row("patch", QString::number(model.fine.vertex_patch[v]));
-  html += row("grid (i, j)", QString("(%1, %2)").arg(model.fine.grid[v].x()).arg(model.fine.grid[v].y()));
+  html += row("grid (i, j)",
+              QString("(%1, %2)").arg(model.fine.grid[v].x()).arg(model.fine.grid[v].y()));
   html += row("class", enum_name(model.fine_topology.vertex_class[v]));
   if (model.has_coarse) {
     html += row("type", enum_name(model.map.fine_type[v]));

@@ -20,7 +20,9 @@ const Eigen::Vector2d kDrawingCentre{kDrawingWidth - 1, 0};
 // The share of the height a 3D view fills when a caption may sit at the top.
 constexpr double kCaptionFreeHeight = 0.88;
 
-Eigen::Vector3d centre(const Bounds& b) { return {0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])}; }
+Eigen::Vector3d centre(const Bounds& b) {
+  return {0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])};
+}
 
 // The camera's window centre that puts the focal point in the middle of the drawing area.
 Eigen::Vector2d drawing_window_center(bool legend_column) {
@@ -52,19 +54,21 @@ CameraPose top_view_camera(const Bounds& b, double aspect, bool legend_column) {
 
 CameraPose three_d_camera(const Bounds& b, double aspect, bool legend_column) {
   std::vector<Eigen::Vector3d> corners;
-  for (int k = 0; k < 8; ++k) corners.emplace_back(b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]);
+  for (int k = 0; k < 8; ++k)
+    corners.emplace_back(b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]);
   return three_d_camera(corners, aspect, legend_column);
 }
 
-CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column) {
+CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect,
+                          bool legend_column) {
   CameraPose pose;
   pose.view_up = {0, 0, 1};
   pose.position = pose.focal_point + Eigen::Vector3d(0.9, -1.2, 1);
   return framed_camera(points, pose, aspect, legend_column);
 }
 
-CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from, double aspect,
-                         bool legend_column) {
+CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from,
+                         double aspect, bool legend_column) {
   // The margin around the points' projection, as a factor of the distance (of the extent in a
   // parallel projection).
   constexpr double kMargin = 1.06;
@@ -97,7 +101,8 @@ CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const Camer
       depth = std::max(depth, std::abs(rel.dot(towards_camera)));
     }
     c += 0.5 * (lo_x + hi_x) * right + 0.5 * (lo_y + hi_y) * up;
-    const double half_w = std::max(0.5 * (hi_x - lo_x), 1e-9), half_h = std::max(0.5 * (hi_y - lo_y), 1e-9);
+    const double half_w = std::max(0.5 * (hi_x - lo_x), 1e-9),
+                 half_h = std::max(0.5 * (hi_y - lo_y), 1e-9);
     pose.parallel_scale = kMargin * std::max(half_h / height_share, half_w / width_share);
     pose.focal_point = c;
     pose.position = c + (4 * std::max({half_w, half_h, depth}) + 1) * towards_camera;
@@ -114,7 +119,8 @@ CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const Camer
     for (const auto& p : points) {
       const Eigen::Vector3d rel = p - c;
       const double z = rel.dot(towards_camera);
-      distance = std::max({distance, z + std::abs(rel.dot(right)) / tan_x, z + std::abs(rel.dot(up)) / tan_y});
+      distance = std::max(
+          {distance, z + std::abs(rel.dot(right)) / tan_x, z + std::abs(rel.dot(up)) / tan_y});
     }
     if (pass == 1) break;
     double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
@@ -160,25 +166,31 @@ nlohmann::json to_json(const CameraPose& p) {
     for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
     return a;
   };
-  return {{"position", array(p.position)},      {"focal_point", array(p.focal_point)},
-          {"view_up", array(p.view_up)},        {"view_angle", p.view_angle},
-          {"parallel", p.parallel},             {"parallel_scale", p.parallel_scale},
+  return {{"position", array(p.position)},
+          {"focal_point", array(p.focal_point)},
+          {"view_up", array(p.view_up)},
+          {"view_angle", p.view_angle},
+          {"parallel", p.parallel},
+          {"parallel_scale", p.parallel_scale},
           {"window_center", array(p.window_center)}};
 }
 
 CameraPose camera_pose_from_json(const nlohmann::json& json, const std::string& source) {
-  if (!json.is_object()) throw InputError(source + ": expected a JSON object with the camera's keys");
-  for (const char* key :
-       {"position", "focal_point", "view_up", "view_angle", "parallel", "parallel_scale", "window_center"})
+  if (!json.is_object())
+    throw InputError(source + ": expected a JSON object with the camera's keys");
+  for (const char* key : {"position", "focal_point", "view_up", "view_angle", "parallel",
+                          "parallel_scale", "window_center"})
     if (!json.contains(key)) throw InputError(source + ": $." + key + ": missing");
   CameraPose p;
   p.position = vector3(json, "position", source);
   p.focal_point = vector3(json, "focal_point", source);
   p.view_up = vector3(json, "view_up", source);
-  if (!json["view_angle"].is_number() || !(json["view_angle"].get<double>() > 0 && json["view_angle"].get<double>() < 180))
+  if (!json["view_angle"].is_number() ||
+      !(json["view_angle"].get<double>() > 0 && json["view_angle"].get<double>() < 180))
     throw InputError(source + ": $.view_angle: expected degrees between 0 and 180");
   p.view_angle = json["view_angle"].get<double>();
-  if (!json["parallel"].is_boolean()) throw InputError(source + ": $.parallel: expected true or false");
+  if (!json["parallel"].is_boolean())
+    throw InputError(source + ": $.parallel: expected true or false");
   p.parallel = json["parallel"].get<bool>();
   if (!json["parallel_scale"].is_number() || !(json["parallel_scale"].get<double>() > 0))
     throw InputError(source + ": $.parallel_scale: expected a positive number");

@@ -24,7 +24,7 @@ struct CameraPose {
   Eigen::Vector3d position{0, 0, 1}, focal_point{0, 0, 0}, view_up{0, 1, 0};
   double view_angle = 30;  ///< degrees (perspective)
   bool parallel = false;
-  double parallel_scale = 1;  ///< half the viewport height in world units (parallel)
+  double parallel_scale = 1;            ///< half the viewport height in world units (parallel)
   Eigen::Vector2d window_center{0, 0};  ///< vtkCamera::SetWindowCenter, viewport units [-1, 1]
 };
 
@@ -39,11 +39,12 @@ CameraPose top_view_camera(const Bounds& bounds, double aspect, bool legend_colu
 CameraPose three_d_camera(const Bounds& bounds, double aspect, bool legend_column = true);
 /// The 3D camera framing the points themselves (tighter than their bounds): every point inside
 /// the drawing area, their projection centred in it.
-CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect, bool legend_column = true);
+CameraPose three_d_camera(const std::vector<Eigen::Vector3d>& points, double aspect,
+                          bool legend_column = true);
 /// The camera `from` (its direction, view up and projection) moved so that every point lies
 /// inside the drawing area, their projection centred in it: View > Frame all.
-CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from, double aspect,
-                         bool legend_column = true);
+CameraPose framed_camera(const std::vector<Eigen::Vector3d>& points, const CameraPose& from,
+                         double aspect, bool legend_column = true);
 
 CameraPose camera_pose(vtkCamera* camera);
 void apply_camera_pose(const CameraPose& pose, vtkCamera* camera);

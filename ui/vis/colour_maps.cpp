@@ -12,7 +12,8 @@ struct Stop {
   Rgb colour;
 };
 
-vtkSmartPointer<vtkLookupTable> lut_from_stops(const std::vector<Stop>& stops, double low, double high) {
+vtkSmartPointer<vtkLookupTable> lut_from_stops(const std::vector<Stop>& stops, double low,
+                                               double high) {
   auto ctf = vtkSmartPointer<vtkColorTransferFunction>::New();
   ctf->SetColorSpaceToLab();
   for (const auto& s : stops) ctf->AddRGBPoint(s.at, s.colour[0], s.colour[1], s.colour[2]);
@@ -39,11 +40,13 @@ vtkSmartPointer<vtkLookupTable> sequential_lut(double low, double high) {
                         low, high);
 }
 
-vtkSmartPointer<vtkLookupTable> dog_residual_lut() { return sequential_lut(-10, -2); }
+vtkSmartPointer<vtkLookupTable> dog_residual_lut() {
+  return sequential_lut(-10, -2);
+}
 
 vtkSmartPointer<vtkLookupTable> heat_lut(double low, double high) {
-  return lut_from_stops({{0.0, {1.00, 0.82, 0.55}}, {0.5, {0.93, 0.42, 0.14}}, {1.0, {0.55, 0.00, 0.05}}}, low,
-                        high);
+  return lut_from_stops(
+      {{0.0, {1.00, 0.82, 0.55}}, {0.5, {0.93, 0.42, 0.14}}, {1.0, {0.55, 0.00, 0.05}}}, low, high);
 }
 
 vtkSmartPointer<vtkLookupTable> categorical_lut(int count) {

@@ -23,20 +23,28 @@ MeshArrays frame_arrays(const DogModel& model, Fields f) {
   return arrays;
 }
 
-void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays, const std::string& path) {
+void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays,
+                     const std::string& path) {
   auto grid = quad_grid(X, model.fine.F, arrays);
   grid->GetPointData()->AddArray(vector_array("rest_position", model.fine.V));
   write_vtu(grid, path);
 }
 
-FrameWriter::FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out, int every,
-                         int last_iteration)
-    : model_(model), problem_(problem), out_(out), every_(std::max(1, every)), last_(last_iteration) {}
+FrameWriter::FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out,
+                         int every, int last_iteration)
+    : model_(model),
+      problem_(problem),
+      out_(out),
+      every_(std::max(1, every)),
+      last_(last_iteration) {}
 
-void FrameWriter::write_start(const Dofs& x) { write(0, x); }
+void FrameWriter::write_start(const Dofs& x) {
+  write(0, x);
+}
 
 void FrameWriter::on_iteration(const IterationReport& report, const Dofs& x) {
-  if (report.iteration % every_ == 0 || report.iteration == last_ || report.step.failed) write(report.iteration, x);
+  if (report.iteration % every_ == 0 || report.iteration == last_ || report.step.failed)
+    write(report.iteration, x);
 }
 
 void FrameWriter::write(int iteration, const Dofs& x) {
@@ -49,6 +57,8 @@ void FrameWriter::write(int iteration, const Dofs& x) {
   if (surfaces_) surfaces_->write_frame(iteration, X, arrays);
 }
 
-void FrameWriter::finish() { out_.write_text("frames.pvd", pvd_collection(frames_)); }
+void FrameWriter::finish() {
+  out_.write_text("frames.pvd", pvd_collection(frames_));
+}
 
 }  // namespace sdog::vis

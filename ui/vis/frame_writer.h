@@ -25,12 +25,14 @@ MeshArrays frame_arrays(const DogModel& model, Fields fields);
 
 /// Writes the fine mesh at positions X (mesh units) with `arrays` and rest_position as a .vtu
 /// file: one frame (throws OutputError).
-void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays, const std::string& path);
+void write_frame_vtu(const DogModel& model, const Eigen::MatrixX3d& X, const MeshArrays& arrays,
+                     const std::string& path);
 
 class FrameWriter : public RunObserver {
  public:
   /// `every` >= 1; `last_iteration` is the run's final iteration (always written).
-  FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out, int every, int last_iteration);
+  FrameWriter(const DogModel& model, const DogProblem& problem, OutputSet& out, int every,
+              int last_iteration);
   /// Writes frame_0000 of the start state.
   void write_start(const Dofs& x);
   /// Writes the trimmed surface of every frame from now on into `surfaces` (which must outlive the

@@ -11,7 +11,8 @@
 namespace sdog::vis {
 
 enum class Layer : int {
-  kVertexTypes,   ///< vertices coloured link / I / X / coarse-only, crease points pink (colour layer)
+  kVertexTypes,   ///< vertices coloured link / I / X / coarse-only, crease points pink (colour
+                  ///< layer)
   kLinks,         ///< lines from each fine link vertex to its coarse twin
   kPatches,       ///< faces coloured by patch (colour layer)
   kDogResidual,   ///< DOG constraint residual per vertex, log10 scale (colour layer)
@@ -21,7 +22,7 @@ enum class Layer : int {
   kHandles,       ///< position handles, their targets and residual lines; angle-constraint sites
   kCreaseCurves,  ///< crease polylines coloured by assignment, crease points pink
   kWireframe,     ///< the quad edges
-  kFullCells,     ///< every quad whole instead of the trimmed surface (the DOG as the solver sees it)
+  kFullCells,  ///< every quad whole instead of the trimmed surface (the DOG as the solver sees it)
 };
 
 }  // namespace sdog::vis

@@ -3,11 +3,11 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCoordinate.h>
-#include <vtkPolyDataMapper2D.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper2D.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +62,8 @@ Legend Legend::categories(const std::string& title, const std::vector<LegendEntr
     const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
     quads->InsertNextCell(4, ids);
     const Rgb& c = entries[k].colour;
-    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]),
+                          std::lround(255 * c[2]));
     auto label = vtkSmartPointer<vtkTextActor>::New();
     label->SetInput(entries[k].label.c_str());
     label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -105,7 +106,9 @@ void Legend::set_visible(bool visible) const {
   for (vtkTextActor* label : labels_) label->SetVisibility(visible);
 }
 
-bool Legend::visible() const { return bar_ ? bar_->GetVisibility() : title_->GetVisibility(); }
+bool Legend::visible() const {
+  return bar_ ? bar_->GetVisibility() : title_->GetVisibility();
+}
 
 double Legend::height_pixels(int font) const {
   if (bar_) return 12.0 * font;
@@ -130,7 +133,8 @@ void Legend::place(double top, int viewport_width, int viewport_height, int font
   const double x0 = kLegendColumnLeft + 0.008;
   vtkPoints* points = squares_->GetPoints();
   for (size_t k = 0; k < labels_.size(); ++k) {
-    const double y = top - 1.6 * font / viewport_height - (static_cast<double>(k) + 0.5) * row;  // the row's middle
+    const double y = top - 1.6 * font / viewport_height -
+                     (static_cast<double>(k) + 0.5) * row;  // the row's middle
     const vtkIdType first = 4 * static_cast<vtkIdType>(k);
     points->SetPoint(first, x0, y - side_y / 2, 0);
     points->SetPoint(first + 1, x0 + side_x, y - side_y / 2, 0);
@@ -151,13 +155,15 @@ double Legend::entry_width_pixels(int font) const {
   size_t longest = 0;
   for (vtkTextActor* label : labels_) longest = std::max(longest, std::strlen(label->GetInput()));
   // The square and the gap after it (1.2 em), then the label.
-  return labels_.empty() ? 0.0 : 1.2 * font + 0.55 * static_cast<double>(longest) * kLabelScale * font;
+  return labels_.empty() ? 0.0
+                         : 1.2 * font + 0.55 * static_cast<double>(longest) * kLabelScale * font;
 }
 
 std::vector<LegendEntry> patch_legend_entries(int patch_count) {
   std::vector<LegendEntry> entries;
   if (patch_count <= kPatchColours) {
-    for (int p = 0; p < patch_count; ++p) entries.push_back({"patch " + std::to_string(p), patch_colour(p)});
+    for (int p = 0; p < patch_count; ++p)
+      entries.push_back({"patch " + std::to_string(p), patch_colour(p)});
     return entries;
   }
   constexpr int kNamed = 3;  // patch numbers named per colour before "..."
@@ -177,7 +183,8 @@ std::vector<LegendEntry> patch_legend_entries(int patch_count) {
   return entries;
 }
 
-void stack_legends(const std::vector<const Legend*>& legends, int viewport_width, int viewport_height, int font) {
+void stack_legends(const std::vector<const Legend*>& legends, int viewport_width,
+                   int viewport_height, int font) {
   double total = 0, widest = 0;
   for (const Legend* l : legends)
     if (l->visible()) {
@@ -185,7 +192,8 @@ void stack_legends(const std::vector<const Legend*>& legends, int viewport_width
       widest = std::max({widest, l->title_width_pixels(font), l->entry_width_pixels(font)});
     }
   const double room = (kTop - 0.02) * viewport_height, column = kColumnWidth * viewport_width;
-  const double scale = std::min({1.0, total > 0 ? room / total : 1.0, widest > 0 ? column / widest : 1.0});
+  const double scale =
+      std::min({1.0, total > 0 ? room / total : 1.0, widest > 0 ? column / widest : 1.0});
   const int f = scale < 1 ? std::max(6, static_cast<int>(font * scale)) : font;
   double top = kTop;
   for (const Legend* l : legends) {

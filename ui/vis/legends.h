@@ -57,9 +57,9 @@ class Legend {
  private:
   vtkSmartPointer<vtkTextActor> title_;                // categories only
   std::vector<vtkSmartPointer<vtkTextActor>> labels_;  // categories only
-  vtkSmartPointer<vtkPolyData> squares_;               // categories only: one coloured quad per entry
+  vtkSmartPointer<vtkPolyData> squares_;  // categories only: one coloured quad per entry
   vtkSmartPointer<vtkActor2D> squares_actor_;
-  vtkSmartPointer<vtkScalarBarActor> bar_;             // scalar bars only
+  vtkSmartPointer<vtkScalarBarActor> bar_;  // scalar bars only
 };
 
 /// The patches legend's entries: one per patch ("patch 3") up to kPatchColors patches; beyond,
@@ -68,6 +68,7 @@ std::vector<LegendEntry> patch_legend_entries(int patch_count);
 
 /// Stacks the visible legends from the top of the column, in the order given; shrinks them
 /// evenly when they do not fit the viewport's height or a title does not fit the column's width.
-void stack_legends(const std::vector<const Legend*>& legends, int viewport_width, int viewport_height, int font);
+void stack_legends(const std::vector<const Legend*>& legends, int viewport_width,
+                   int viewport_height, int font);
 
 }  // namespace sdog::vis

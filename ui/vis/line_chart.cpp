@@ -81,8 +81,8 @@ double round_step(double raw) {
 // a fraction of the plot left free at the top);
 // linear axes get round ticks at least `spacing` pixels apart and at most 12, so that labels do not
 // collide (VTK's automatic ticks ignore the label width).
-void set_range(vtkAxis* axis, std::array<double, 2> r, bool log, bool from_zero, double top_room, double spacing,
-               int pixels) {
+void set_range(vtkAxis* axis, std::array<double, 2> r, bool log, bool from_zero, double top_room,
+               double spacing, int pixels) {
   if (log) {
     r = {std::log10(r[0]), std::log10(r[1])};
   }
@@ -118,7 +118,8 @@ void set_range(vtkAxis* axis, std::array<double, 2> r, bool log, bool from_zero,
 
 }  // namespace
 
-LineChart titled_chart(const std::string& title, const std::string& x_title, const std::string& y_title) {
+LineChart titled_chart(const std::string& title, const std::string& x_title,
+                       const std::string& y_title) {
   LineChart chart;
   chart.title = title;
   chart.x_title = x_title;
@@ -130,11 +131,13 @@ void render_line_chart(const LineChart& chart, const ImageSize& size, const std:
   int points = 0;
   for (const auto& s : chart.series) {
     if (s.x.size() != s.y.size())
-      throw std::logic_error("render_line_chart: series '" + s.name + "' has " + std::to_string(s.x.size()) +
-                                  " x and " + std::to_string(s.y.size()) + " y values");
+      throw std::logic_error("render_line_chart: series '" + s.name + "' has " +
+                             std::to_string(s.x.size()) + " x and " + std::to_string(s.y.size()) +
+                             " y values");
     for (size_t i = 0; i < s.x.size(); ++i) points += drawable(s.x[i], s.y[i], chart);
   }
-  if (points == 0) throw UsageError(png_path + ": the chart '" + chart.title + "' has no point to draw");
+  if (points == 0)
+    throw UsageError(png_path + ": the chart '" + chart.title + "' has no point to draw");
 
   auto window = offscreen_window(size);
   auto view = vtkSmartPointer<vtkContextView>::New();
@@ -146,15 +149,16 @@ void render_line_chart(const LineChart& chart, const ImageSize& size, const std:
   style_text(xy->GetTitleProperties(), chart.title_font, true);
   style_axis(xy->GetAxis(vtkAxis::BOTTOM), chart.x_title, chart.log_x, chart);
   style_axis(xy->GetAxis(vtkAxis::LEFT), chart.y_title, chart.log_y, chart);
-  // The legend's height (a line per series) as a fraction of the plot area, left free above the lines.
+  // The legend's height (a line per series) as a fraction of the plot area, left free above the
+  // lines.
   const double plot_height = 0.75 * size.height;
-  const double legend_room =
-      std::min(0.5, (1.5 * chart.legend_font * chart.series.size() + 20) / std::max(1.0, plot_height));
+  const double legend_room = std::min(
+      0.5, (1.5 * chart.legend_font * chart.series.size() + 20) / std::max(1.0, plot_height));
   // Tick labels: up to 6 characters side by side on x, one text line each on y.
-  set_range(xy->GetAxis(vtkAxis::BOTTOM), data_range(chart, true), chart.log_x, false, 0.0, 5.0 * chart.label_font,
-            size.width);
-  set_range(xy->GetAxis(vtkAxis::LEFT), data_range(chart, false), chart.log_y, true, legend_room, 3.0 * chart.label_font,
-            size.height);
+  set_range(xy->GetAxis(vtkAxis::BOTTOM), data_range(chart, true), chart.log_x, false, 0.0,
+            5.0 * chart.label_font, size.width);
+  set_range(xy->GetAxis(vtkAxis::LEFT), data_range(chart, false), chart.log_y, true, legend_room,
+            3.0 * chart.label_font, size.height);
   for (size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];
     const Rgb c = s.colour ? *s.colour : series_colour(static_cast<int>(k));

@@ -26,13 +26,14 @@ vtkSmartPointer<vtkCellArray> vertex_cells(vtkIdType n) {
 
 // The colours of the vertex types (one colour for all without types), as 8-bit RGB.
 vtkSmartPointer<vtkUnsignedCharArray> vertex_type_colours(const DogMesh& mesh,
-                                                         const std::vector<VertexType>* types) {
+                                                          const std::vector<VertexType>* types) {
   auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
   rgb->SetName("vertex_type_color");
   rgb->SetNumberOfComponents(3);
   for (int v = 0; v < mesh.vertex_count(); ++v) {
     const Rgb c = types ? vertex_type_colour((*types)[v]) : kUntypedVertexColour;
-    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]),
+                          std::lround(255 * c[2]));
   }
   return rgb;
 }
@@ -46,7 +47,8 @@ vtkSmartPointer<vtkCellArray> quad_edge_lines(const DogMesh& mesh) {
       edges.insert({std::min(a, b), std::max(a, b)});
     }
   auto lines = vtkSmartPointer<vtkCellArray>::New();
-  lines->AllocateExact(static_cast<vtkIdType>(edges.size()), 2 * static_cast<vtkIdType>(edges.size()));
+  lines->AllocateExact(static_cast<vtkIdType>(edges.size()),
+                       2 * static_cast<vtkIdType>(edges.size()));
   for (const auto& [a, b] : edges) {
     const vtkIdType ids[2] = {a, b};
     lines->InsertNextCell(2, ids);
@@ -67,7 +69,8 @@ vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& colour) {
   return actor;
 }
 
-std::vector<Eigen::Vector3d> crease_point_positions(const DogMesh& mesh, const Eigen::MatrixX3d& X) {
+std::vector<Eigen::Vector3d> crease_point_positions(const DogMesh& mesh,
+                                                    const Eigen::MatrixX3d& X) {
   std::vector<Eigen::Vector3d> out;
   out.reserve(mesh.stitching.points.size());
   for (const auto& p : mesh.stitching.points) {
@@ -129,7 +132,8 @@ MeshView::MeshView(const DogMesh& mesh, const std::vector<VertexType>* types, vt
   crease_point_coords_->SetNumberOfPoints(static_cast<vtkIdType>(mesh.stitching.points.size()));
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   for (const auto& c : mesh.stitching.curves) {
-    lines->InsertNextCell(static_cast<int>(c.points.size() + (c.closed && !c.points.empty() ? 1 : 0)));
+    lines->InsertNextCell(
+        static_cast<int>(c.points.size() + (c.closed && !c.points.empty() ? 1 : 0)));
     for (int p : c.points) lines->InsertCellPoint(p);
     if (c.closed && !c.points.empty()) lines->InsertCellPoint(c.points.front());
   }
@@ -157,7 +161,8 @@ MeshView::~MeshView() {
 }
 
 std::vector<vtkActor*> MeshView::actors() const {
-  return {trimmed_actor_, surface_, quad_edge_actor_, crease_line_actor_, vertex_actor_, crease_point_actor_};
+  return {trimmed_actor_,     surface_,      quad_edge_actor_,
+          crease_line_actor_, vertex_actor_, crease_point_actor_};
 }
 
 void MeshView::set_positions(const Eigen::MatrixX3d& X) {
@@ -168,7 +173,8 @@ void MeshView::set_positions(const Eigen::MatrixX3d& X) {
   vtkDataArray* normals = trimmed_poly_->GetPointData()->GetNormals();
   for (int r = 0; r < trimmed_surface_.vertex_count(); ++r) {
     tp->SetPoint(r, trimmed_surface_.V(r, 0), trimmed_surface_.V(r, 1), trimmed_surface_.V(r, 2));
-    normals->SetTuple3(r, trimmed_surface_.N(r, 0), trimmed_surface_.N(r, 1), trimmed_surface_.N(r, 2));
+    normals->SetTuple3(r, trimmed_surface_.N(r, 0), trimmed_surface_.N(r, 1),
+                       trimmed_surface_.N(r, 2));
   }
   tp->Modified();
   normals->Modified();
@@ -185,12 +191,14 @@ void MeshView::set_offset(double dx) {
 
 void MeshView::set_point_array(const char* name, const std::vector<double>& values) {
   set_double_array(grid_->GetPointData(), name, values);
-  set_double_array(trimmed_poly_->GetPointData(), name, trimmed_point_values(trimmed_surface_, values));
+  set_double_array(trimmed_poly_->GetPointData(), name,
+                   trimmed_point_values(trimmed_surface_, values));
 }
 
 void MeshView::set_cell_array(const char* name, const std::vector<double>& values) {
   set_double_array(grid_->GetCellData(), name, values);
-  set_double_array(trimmed_poly_->GetCellData(), name, trimmed_cell_values(trimmed_surface_, values));
+  set_double_array(trimmed_poly_->GetCellData(), name,
+                   trimmed_cell_values(trimmed_surface_, values));
 }
 
 void MeshView::set_paper(bool paper) {
@@ -276,7 +284,8 @@ void MeshView::set_crease_folds(const std::vector<Fold>& folds) {
     const Fold fold = k < folds.size() ? folds[k] : Fold::kUnassigned;
     code->InsertNextValue(static_cast<int>(fold));
     const Rgb c = fold_colour(fold);
-    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]), std::lround(255 * c[2]));
+    rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]),
+                          std::lround(255 * c[2]));
   }
   crease_lines_->GetCellData()->AddArray(code);
   crease_lines_->GetCellData()->SetScalars(rgb);

@@ -89,8 +89,8 @@ class MeshView {
   const DogMesh& mesh_;
   vtkRenderer* renderer_;
   double offset_ = 0;
-  bool visible_ = true, filled_ = true, trimmed_on_ = true, vertices_ = false, crease_lines_on_ = false, crease_points_ = false,
-       edges_ = false;
+  bool visible_ = true, filled_ = true, trimmed_on_ = true, vertices_ = false,
+       crease_lines_on_ = false, crease_points_ = false, edges_ = false;
   vtkSmartPointer<vtkPoints> points_, crease_point_coords_;
   vtkSmartPointer<vtkUnstructuredGrid> grid_;
   vtkSmartPointer<vtkDataSetMapper> surface_mapper_;
@@ -101,7 +101,8 @@ class MeshView {
   const char* colour_array_ = nullptr;  ///< what color_by chose (nullptr: plain)
   bool colour_cells_ = false;
   vtkScalarsToColors* colour_lut_ = nullptr;
-  vtkSmartPointer<vtkActor> trimmed_actor_, surface_, vertex_actor_, crease_line_actor_, crease_point_actor_;
+  vtkSmartPointer<vtkActor> trimmed_actor_, surface_, vertex_actor_, crease_line_actor_,
+      crease_point_actor_;
   vtkSmartPointer<vtkPolyData> vertices_poly_, crease_lines_, crease_points_poly_;
   vtkSmartPointer<vtkPolyData> quad_edges_;  ///< each quad edge once, on the grid's points
   vtkSmartPointer<vtkActor> quad_edge_actor_;

@@ -1,5 +1,5 @@
-#include <limits>
 #include "ui/vis/model_files.h"
+#include <limits>
 
 #include "geometry/surface/mesh_arrays.h"
 #include "ui/vis/vtk_meshes.h"
@@ -28,8 +28,8 @@ void write_model_files(const DogModel& model, OutputSet& out) {
 
   const CreaseStitching& st = model.fine.stitching;
   std::vector<Polyline3> creases;
-  NamedArray index{"crease", {}, true}, closed{"closed", {}, true}, assignment{"assignment", {}, true},
-      angle{"angle", {}, true};
+  NamedArray index{"crease", {}, true}, closed{"closed", {}, true},
+      assignment{"assignment", {}, true}, angle{"angle", {}, true};
   for (size_t k = 0; k < st.curves.size(); ++k) {
     Polyline3 line;
     for (int p : st.curves[k].points)
@@ -40,7 +40,8 @@ void write_model_files(const DogModel& model, OutputSet& out) {
     closed.values.push_back(st.curves[k].closed);
     const Crease& c = model.clean.creases[k];
     assignment.values.push_back(static_cast<double>(c.fold));
-    angle.values.push_back(c.angle ? fold_sign(c.fold) * *c.angle : std::numeric_limits<double>::quiet_NaN());
+    angle.values.push_back(c.angle ? fold_sign(c.fold) * *c.angle
+                                   : std::numeric_limits<double>::quiet_NaN());
   }
   write_vtp(polylines(creases, {index, closed, assignment, angle}), out.temporary("creases.vtp"));
 

@@ -2,8 +2,8 @@
 // Colours shared by every picture (the thesis's conventions for the fine/coarse map).
 #include <array>
 
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/fine_coarse_map.h"
+#include "geometry/pattern/crease_pattern.h"
 
 namespace sdog::vis {
 
@@ -46,12 +46,12 @@ inline constexpr Rgb kPaperBackColour{0.78, 0.82, 0.88};  // and its back side
 inline constexpr Rgb kEdgeColour{0.62, 0.62, 0.62};
 inline constexpr Rgb kTextColour{0.1, 0.1, 0.1};
 inline constexpr Rgb kLinkLineColour{0.15, 0.15, 0.15};
-inline constexpr Rgb kHandleColour{0.95, 0.55, 0.05};       // orange
-inline constexpr Rgb kSelectionColour{0.05, 0.05, 0.05};    // the studio's selected vertices: black
-inline constexpr Rgb kTargetColour{0.10, 0.20, 0.60};       // dark blue
-inline constexpr Rgb kResidualLineColour{0.85, 0.10, 0.10}; // red
-inline constexpr Rgb kAngleSiteColour{0.00, 0.75, 0.80};    // cyan
-inline constexpr Rgb kCoarseEdgeColour{0.20, 0.30, 0.75};   // the coarse mesh over the fine one
+inline constexpr Rgb kHandleColour{0.95, 0.55, 0.05};     // orange
+inline constexpr Rgb kSelectionColour{0.05, 0.05, 0.05};  // the studio's selected vertices: black
+inline constexpr Rgb kTargetColour{0.10, 0.20, 0.60};     // dark blue
+inline constexpr Rgb kResidualLineColour{0.85, 0.10, 0.10};  // red
+inline constexpr Rgb kAngleSiteColour{0.00, 0.75, 0.80};     // cyan
+inline constexpr Rgb kCoarseEdgeColour{0.20, 0.30, 0.75};    // the coarse mesh over the fine one
 
 /// The number of patch colours: light, distinct colours (the vertex and handle colours stay
 /// readable on them); patches beyond it take them again from the start.
@@ -68,8 +68,9 @@ inline Rgb patch_colour(int index) {
 /// palette without its yellow, which is too faint on white): blue, vermillion, bluish green,
 /// reddish purple, orange, sky blue, black; then again from the start.
 inline Rgb series_colour(int index) {
-  static constexpr Rgb colours[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45}, {0.80, 0.47, 0.65},
-                                   {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91}, {0.00, 0.00, 0.00}};
+  static constexpr Rgb colours[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45},
+                                    {0.80, 0.47, 0.65}, {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91},
+                                    {0.00, 0.00, 0.00}};
   constexpr int n = sizeof colours / sizeof colours[0];
   return colours[((index % n) + n) % n];
 }

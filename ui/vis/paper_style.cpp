@@ -28,10 +28,13 @@ PaperEffects parse_paper_effects(const std::string& text) {
     else if (name == "shadows")
       effects.shadows = true;
     else
-      throw UsageError("unknown render effect '" + name + "' (known: ambient-occlusion, shadows, or none)");
+      throw UsageError("unknown render effect '" + name +
+                       "' (known: ambient-occlusion, shadows, or none)");
   }
   if (effects.ambient_occlusion && effects.shadows)
-    throw UsageError("render effects: ambient-occlusion or shadows, not both (VTK 9.1's renderer draws one of them)");
+    throw UsageError(
+        "render effects: ambient-occlusion or shadows, not both (VTK 9.1's renderer draws one of "
+        "them)");
   return effects;
 }
 

@@ -20,18 +20,20 @@ struct PictureOptions {
   ImageSize size;
   bool transparent = false;  ///< transparent background (RGBA PNG)
   std::string caption;       ///< top-left text (empty: none)
-  std::optional<CameraPose> camera;  ///< instead of the view's default camera (dots keep the default's size)
-  bool frame = false;                ///< with `camera`: looking its way, framing the drawing (Scene::frame_all)
-  bool paper = false;                ///< the paper style (paper_style.h); no caption
-  PaperEffects effects;              ///< of the paper style
+  std::optional<CameraPose>
+      camera;            ///< instead of the view's default camera (dots keep the default's size)
+  bool frame = false;    ///< with `camera`: looking its way, framing the drawing (Scene::frame_all)
+  bool paper = false;    ///< the paper style (paper_style.h); no caption
+  PaperEffects effects;  ///< of the paper style
 };
 
 /// Font size of a picture's legends and titles: the image height / 32, between 10 and 40.
 int picture_font_size(const ImageSize& size);
 
 /// Draws the state with the layers (at most one colour layer: UsageError otherwise), in the
-/// paper style if asked, on a white background with the view's default camera (or the given one) and writes the PNG to `path` (needs an X display,
-/// see offscreen.h; OutputError when the file cannot be written).
+/// paper style if asked, on a white background with the view's default camera (or the given one)
+/// and writes the PNG to `path` (needs an X display, see offscreen.h; OutputError when the file
+/// cannot be written).
 void render_picture(const DogModel& model, const SceneState& state, const PictureOptions& options,
                     const std::string& path);
 

@@ -24,7 +24,8 @@ std::optional<int> integer_step(const char* text) {
   try {
     size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used != std::string(text).size() || value != std::floor(value) || value < 0 || value > 1e9) return std::nullopt;
+    if (used != std::string(text).size() || value != std::floor(value) || value < 0 || value > 1e9)
+      return std::nullopt;
     return static_cast<int>(value);
   } catch (const std::exception&) {
     return std::nullopt;
@@ -42,7 +43,8 @@ Eigen::MatrixX3d rows_of(vtkDataArray* a) {
 
 std::vector<FrameEntry> read_frame_list(const std::string& pvd_path) {
   if (!std::filesystem::is_regular_file(pvd_path))
-    throw InputError(pvd_path + (std::filesystem::exists(pvd_path) ? ": not a file" : ": no such file"));
+    throw InputError(pvd_path +
+                     (std::filesystem::exists(pvd_path) ? ": not a file" : ": no such file"));
   take_vtk_error();  // installs the capturing output window
   auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
   parser->SetFileName(pvd_path.c_str());
@@ -51,8 +53,10 @@ std::vector<FrameEntry> read_frame_list(const std::string& pvd_path) {
   vtkXMLDataElement* root = parsed ? parser->GetRootElement() : nullptr;
   vtkXMLDataElement* collection = root ? root->FindNestedElementWithName("Collection") : nullptr;
   if (!collection)
-    throw InputError(pvd_path + ": not a ParaView collection of frames (expected <VTKFile type=\"Collection\"> "
-                                "with a <Collection>, as sdog run writes frames.pvd)");
+    throw InputError(
+        pvd_path +
+        ": not a ParaView collection of frames (expected <VTKFile type=\"Collection\"> "
+        "with a <Collection>, as sdog run writes frames.pvd)");
   const std::filesystem::path dir = std::filesystem::path(pvd_path).parent_path();
   std::vector<FrameEntry> frames;
   for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
@@ -81,7 +85,8 @@ std::string describe_iterations(const std::vector<int>& its) {
   for (const size_t n : {its.size(), its.size() - 1}) {
     if (n < 3) break;
     if (const int stride = series_of(n)) {
-      std::string text = std::to_string(its.front()) + " to " + std::to_string(its[n - 1]) + " every " + std::to_string(stride);
+      std::string text = std::to_string(its.front()) + " to " + std::to_string(its[n - 1]) +
+                         " every " + std::to_string(stride);
       return n < its.size() ? text + ", and " + std::to_string(its.back()) : text;
     }
   }
@@ -121,18 +126,21 @@ SavedFrame read_frame(const std::string& path) {
     points->GetPoint(i, p);
     frame.positions.row(i) << p[0], p[1], p[2];
   }
-  if (!frame.positions.allFinite()) throw InputError(path + ": the frame has positions that are not finite numbers");
+  if (!frame.positions.allFinite())
+    throw InputError(path + ": the frame has positions that are not finite numbers");
   frame.quads.resize(grid->GetNumberOfCells(), 4);
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
     vtkIdType count = 0;
     const vtkIdType* ids = nullptr;
     grid->GetCellPoints(c, count, ids);
     if (grid->GetCellType(c) != VTK_QUAD || count != 4)
-      throw InputError(path + ": cell " + std::to_string(c) + " is not a quad: not a frame of a DOG");
+      throw InputError(path + ": cell " + std::to_string(c) +
+                       " is not a quad: not a frame of a DOG");
     for (int k = 0; k < 4; ++k) frame.quads(c, k) = static_cast<int>(ids[k]);
   }
   vtkDataArray* rest = grid->GetPointData()->GetArray("rest_position");
-  if (rest && rest->GetNumberOfComponents() == 3 && rest->GetNumberOfTuples() == n) frame.rest = rows_of(rest);
+  if (rest && rest->GetNumberOfComponents() == 3 && rest->GetNumberOfTuples() == n)
+    frame.rest = rows_of(rest);
   return frame;
 }
 
@@ -140,20 +148,22 @@ void check_frame_of(const SavedFrame& frame, const DogMesh& fine, const std::str
                     const std::string& model_name) {
   const std::string head = frame_path + " is not a frame of " + model_name + ": ";
   if (frame.positions.rows() != fine.vertex_count())
-    throw InputError(head + "it has " + std::to_string(frame.positions.rows()) + " vertices, that fine mesh " +
-                     std::to_string(fine.vertex_count()));
+    throw InputError(head + "it has " + std::to_string(frame.positions.rows()) +
+                     " vertices, that fine mesh " + std::to_string(fine.vertex_count()));
   if (frame.quads.rows() != fine.quad_count() || frame.quads != fine.F)
-    throw InputError(head + "its quads are not those of that fine mesh (" + std::to_string(frame.quads.rows()) +
-                     " quads, that mesh " + std::to_string(fine.quad_count()) + ")");
+    throw InputError(head + "its quads are not those of that fine mesh (" +
+                     std::to_string(frame.quads.rows()) + " quads, that mesh " +
+                     std::to_string(fine.quad_count()) + ")");
   if (!frame.rest) return;
   const double size = (fine.V.colwise().maxCoeff() - fine.V.colwise().minCoeff()).maxCoeff();
   Eigen::Index worst = 0;
   const double gap = (*frame.rest - fine.V).rowwise().norm().maxCoeff(&worst);
   if (gap > 1e-9 * std::max(size, 1.0))
-    throw InputError(head + "its rest positions differ (vertex " + std::to_string(worst) + " rests at " +
-                     format_point(frame.rest->row(worst).head<2>().transpose()) + ", in that mesh at " +
-                     format_point(fine.V.row(worst).head<2>().transpose()) +
-                     "): another pattern file or other mesh options (--flatness, --merge-tol, --snap-tol)");
+    throw InputError(
+        head + "its rest positions differ (vertex " + std::to_string(worst) + " rests at " +
+        format_point(frame.rest->row(worst).head<2>().transpose()) + ", in that mesh at " +
+        format_point(fine.V.row(worst).head<2>().transpose()) +
+        "): another pattern file or other mesh options (--flatness, --merge-tol, --snap-tol)");
 }
 
 }  // namespace sdog::vis

@@ -32,9 +32,10 @@ std::string describe_iterations(const std::vector<int>& iterations);
 
 /// A frame file read back.
 struct SavedFrame {
-  Eigen::MatrixX3d positions;            ///< fine positions, one row per vertex
-  Eigen::MatrixX4i quads;                ///< its cells (every one a quad)
-  std::optional<Eigen::MatrixX3d> rest;  ///< its rest_position array (absent in frames of other writers)
+  Eigen::MatrixX3d positions;  ///< fine positions, one row per vertex
+  Eigen::MatrixX4i quads;      ///< its cells (every one a quad)
+  std::optional<Eigen::MatrixX3d>
+      rest;  ///< its rest_position array (absent in frames of other writers)
 };
 
 /// Reads a frame (.vtu); throws InputError naming the file when it is missing, not a VTK

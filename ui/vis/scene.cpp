@@ -29,7 +29,7 @@
 namespace sdog::vis {
 namespace {
 
-constexpr double kSideBySideShift = 1.12;                      // sheet widths
+constexpr double kSideBySideShift = 1.12;  // sheet widths
 constexpr double kPi = 3.14159265358979323846;
 
 vtkSmartPointer<vtkPolyData> poly_data() {
@@ -56,16 +56,10 @@ void merge_bounds(Bounds& into, const double* b) {
   }
 }
 
-std::vector<double> quad_patches(const DogMesh& mesh) {
-  std::vector<double> patch(mesh.quad_count());
-  for (int q = 0; q < mesh.quad_count(); ++q) patch[q] = mesh.vertex_patch[mesh.F(q, 0)];
-  return patch;
-}
-
 void check_size(size_t got, int expected, const char* what) {
   if (static_cast<int>(got) != expected)
     throw std::logic_error(std::string("scene state: ") + what + " has " + std::to_string(got) +
-                                " entries, the model " + std::to_string(expected));
+                           " entries, the model " + std::to_string(expected));
 }
 
 }  // namespace
@@ -141,9 +135,14 @@ struct Scene::Overlays {
 };
 
 Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& options)
-    : model_(model), renderer_(renderer), options_(options), overlays_(std::make_unique<Overlays>()) {
-  fine_ = std::make_unique<MeshView>(model.fine, model.has_coarse ? &model.map.fine_type : nullptr, renderer);
-  if (model.has_coarse) coarse_ = std::make_unique<MeshView>(model.coarse, &model.map.coarse_type, renderer);
+    : model_(model),
+      renderer_(renderer),
+      options_(options),
+      overlays_(std::make_unique<Overlays>()) {
+  fine_ = std::make_unique<MeshView>(model.fine, model.has_coarse ? &model.map.fine_type : nullptr,
+                                     renderer);
+  if (model.has_coarse)
+    coarse_ = std::make_unique<MeshView>(model.coarse, &model.map.coarse_type, renderer);
   Overlays& o = *overlays_;
   for (vtkActor* a : o.actors()) renderer_->AddActor(a);
   for (vtkTextActor* t : o.texts()) renderer_->AddActor2D(t);
@@ -162,8 +161,9 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
     o.links->SetLines(lines);
   }
 
-  const std::string fine_title = "fine " + model.fine_res.str() + ": " + std::to_string(model.fine.vertex_count()) +
-                                 " vertices, " + std::to_string(model.fine.patch_count()) + " patches";
+  const std::string fine_title = "fine " + model.fine_res.str() + ": " +
+                                 std::to_string(model.fine.vertex_count()) + " vertices, " +
+                                 std::to_string(model.fine.patch_count()) + " patches";
   o.fine_title->SetInput(fine_title.c_str());
   if (model.has_coarse) {
     const std::string coarse_title = "coarse " + model.coarse_res.str() + ": " +
@@ -171,9 +171,22 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
     o.coarse_title->SetInput(coarse_title.c_str());
   }
 
-  o.patch_lut = categorical_lut(model.fine.patch_count());
+  add_legends();
+  for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
+
+  // Patches do not change: their cell arrays are set once.
+  fine_->set_cell_array("patch", quad_patch(model.fine).values);
+  if (coarse_) coarse_->set_cell_array("patch", quad_patch(model.coarse).values);
+  for (Layer l : enum_values<Layer>()) on_[l] = false;
+  update(rest_scene_state(model));
+  apply_view();
+}
+
+void Scene::add_legends() {
+  Overlays& o = *overlays_;
+  o.patch_lut = categorical_lut(model_.fine.patch_count());
   std::vector<LegendEntry> types;
-  if (model.has_coarse)
+  if (model_.has_coarse)
     types = {{"link", vertex_type_colour(VertexType::kLink)},
              {"I: on a coarse edge", vertex_type_colour(VertexType::kI)},
              {"X: in a coarse quad", vertex_type_colour(VertexType::kX)},
@@ -181,36 +194,31 @@ Scene::Scene(const DogModel& model, vtkRenderer* renderer, const SceneOptions& o
   else
     types = {{"vertex (no coarse mesh)", kUntypedVertexColour}};
   types.push_back({"crease point", kCreasePointColour});
-  const std::vector<LegendEntry> patches = patch_legend_entries(model.fine.patch_count());
+  const std::vector<LegendEntry> patches = patch_legend_entries(model_.fine.patch_count());
   o.legends.emplace(Layer::kVertexTypes, Legend::categories("vertex type", types));
-  o.legends.emplace(Layer::kLinks, Legend::categories("links", {{"link to coarse twin", kLinkLineColour}}));
+  o.legends.emplace(Layer::kLinks,
+                    Legend::categories("links", {{"link to coarse twin", kLinkLineColour}}));
   o.legends.emplace(Layer::kPatches,
-                    Legend::categories(model.fine.patch_count() > kPatchColours
-                                           ? std::to_string(model.fine.patch_count()) + " patches"
+                    Legend::categories(model_.fine.patch_count() > kPatchColours
+                                           ? std::to_string(model_.fine.patch_count()) + " patches"
                                            : std::string("patches"),
                                        patches));
-  o.legends.emplace(Layer::kDogResidual, Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
+  o.legends.emplace(Layer::kDogResidual,
+                    Legend::scalar_bar("DOG residual (log10)", o.residual_lut));
   o.legends.emplace(Layer::kEdgeStrain, Legend::scalar_bar("edge strain", o.strain_lut));
   o.legends.emplace(Layer::kStitchGap, Legend::scalar_bar("stitch gap", o.gap_lut));
   o.legends.emplace(Layer::kBending, Legend::scalar_bar("bending", o.bending_lut));
-  o.legends.emplace(Layer::kHandles, Legend::categories("constraints", {{"handle", kHandleColour},
-                                                                        {"target", kTargetColour},
-                                                                        {"handle to target", kResidualLineColour},
-                                                                        {"angle constraint", kAngleSiteColour}}));
+  o.legends.emplace(Layer::kHandles,
+                    Legend::categories("constraints", {{"handle", kHandleColour},
+                                                       {"target", kTargetColour},
+                                                       {"handle to target", kResidualLineColour},
+                                                       {"angle constraint", kAngleSiteColour}}));
   o.legends.emplace(Layer::kCreaseCurves,
                     Legend::categories("creases", {{"mountain", fold_colour(Fold::kMountain)},
                                                    {"valley", fold_colour(Fold::kValley)},
                                                    {"flat", fold_colour(Fold::kFlat)},
                                                    {"unassigned", fold_colour(Fold::kUnassigned)},
                                                    {"crease point", kCreasePointColour}}));
-  for (const auto& [layer, legend] : o.legends) legend.add_to(renderer_);
-
-  // Patches do not change: their cell arrays are set once.
-  fine_->set_cell_array("patch", quad_patches(model.fine));
-  if (coarse_) coarse_->set_cell_array("patch", quad_patches(model.coarse));
-  for (Layer l : enum_values<Layer>()) on_[l] = false;
-  update(rest_scene_state(model));
-  apply_view();
 }
 
 Scene::~Scene() {
@@ -221,18 +229,21 @@ Scene::~Scene() {
 
 void Scene::update(const SceneState& state) {
   check_size(state.fine.rows(), model_.fine.vertex_count(), "fine positions");
-  if (state.coarse.rows() > 0) check_size(state.coarse.rows(), model_.coarse.vertex_count(), "coarse positions");
+  if (state.coarse.rows() > 0)
+    check_size(state.coarse.rows(), model_.coarse.vertex_count(), "coarse positions");
   check_size(state.fields.dog_residual.size(), model_.fine.vertex_count(), "dog_residual");
   check_size(state.fields.bending.size(), model_.fine.vertex_count(), "bending");
   check_size(state.fields.edge_strain.size(), model_.fine.quad_count(), "edge_strain");
-  check_size(state.fields.stitch_gap.size(), static_cast<int>(model_.fine.stitching.points.size()), "stitch_gap");
+  check_size(state.fields.stitch_gap.size(), static_cast<int>(model_.fine.stitching.points.size()),
+             "stitch_gap");
   for (const auto& h : state.constraints.handles)
     if (h.vertex < 0 || h.vertex >= model_.fine.vertex_count())
-      throw std::logic_error("scene state: handle on vertex " + std::to_string(h.vertex) + " out of range");
+      throw std::logic_error("scene state: handle on vertex " + std::to_string(h.vertex) +
+                             " out of range");
   for (const auto& a : state.constraints.angle_sites)
     if (a.point < 0 || a.point >= static_cast<int>(model_.fine.stitching.points.size()))
       throw std::logic_error("scene state: angle site at crease point " + std::to_string(a.point) +
-                                  " out of range");
+                             " out of range");
   if (!state.crease_folds.empty())
     check_size(state.crease_folds.size(), static_cast<int>(model_.fine.stitching.curves.size()),
                "crease_folds");
@@ -241,14 +252,17 @@ void Scene::update(const SceneState& state) {
 }
 
 double Scene::coarse_offset() const {
-  return options_.view == View::kSideBySide ? kSideBySideShift * (model_.fine.xs.back() - model_.fine.xs.front()) : 0;
+  return options_.view == View::kSideBySide
+             ? kSideBySideShift * (model_.fine.xs.back() - model_.fine.xs.front())
+             : 0;
 }
 
 void Scene::refresh() {
   const bool flat = options_.view == View::kFlat;
   const Eigen::MatrixX3d& fine_x = flat ? model_.fine.V : state_.fine;
   refresh_fine(fine_x);
-  if (coarse_) refresh_coarse(fine_x, flat || state_.coarse.rows() == 0 ? model_.coarse.V : state_.coarse);
+  if (coarse_)
+    refresh_coarse(fine_x, flat || state_.coarse.rows() == 0 ? model_.coarse.V : state_.coarse);
   refresh_stitch_gaps();
   refresh_handles(fine_x, flat);
   refresh_crease_folds();
@@ -354,7 +368,9 @@ void Scene::set_layer(Layer layer, bool on) {
   apply_layers();
 }
 
-bool Scene::layer_on(Layer layer) const { return on_.at(layer); }
+bool Scene::layer_on(Layer layer) const {
+  return on_.at(layer);
+}
 
 std::vector<Layer> Scene::layers_on() const {
   std::vector<Layer> out;
@@ -374,7 +390,9 @@ void Scene::set_options(const SceneOptions& options) {
   apply_view();
 }
 
-void Scene::set_caption(const std::string& text) { overlays_->caption->SetInput(text.c_str()); }
+void Scene::set_caption(const std::string& text) {
+  overlays_->caption->SetInput(text.c_str());
+}
 
 void Scene::apply_view() {
   const bool side = options_.view == View::kSideBySide;
@@ -417,12 +435,14 @@ void Scene::apply_layers() {
     default:
       fine_->colour_by(nullptr, false, nullptr);
   }
-  if (coarse_ && !(colour && *colour == Layer::kPatches)) coarse_->colour_by(nullptr, false, nullptr);
+  if (coarse_ && !(colour && *colour == Layer::kPatches))
+    coarse_->colour_by(nullptr, false, nullptr);
 
   const bool coarse_shown = coarse_ && (options_.view == View::kSideBySide || options_.coarse);
   o.links_actor->SetVisibility(on_[Layer::kLinks] && coarse_shown);
   o.gap_actor->SetVisibility(on_[Layer::kStitchGap]);
-  for (vtkActor* a : {o.residual_actor.Get(), o.handle_actor.Get(), o.target_actor.Get(), o.angle_actor.Get()})
+  for (vtkActor* a :
+       {o.residual_actor.Get(), o.handle_actor.Get(), o.target_actor.Get(), o.angle_actor.Get()})
     a->SetVisibility(on_[Layer::kHandles]);
   o.fine_title->SetVisibility(options_.view == View::kSideBySide && !options_.paper);
   o.coarse_title->SetVisibility(options_.view == View::kSideBySide && coarse_ && !options_.paper);
@@ -449,8 +469,10 @@ void Scene::layout_legends() {
   // The side-by-side titles: each no wider than the distance between the panels' centres (an
   // estimate: 0.55 em per character), so that they never run into each other.
   if (options_.view == View::kSideBySide && coarse_ && renderer_->GetRenderWindow()) {
-    const double a = o.fine_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
-    const double b = o.coarse_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
+    const double a =
+        o.fine_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
+    const double b =
+        o.coarse_title->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer_)[0];
     const double chars = static_cast<double>(
         std::max(std::strlen(o.fine_title->GetInput()), std::strlen(o.coarse_title->GetInput())));
     const int fitting = static_cast<int>(0.9 * std::abs(b - a) / (0.55 * chars));
@@ -472,7 +494,8 @@ void Scene::reset_camera() {
     cb[0] += coarse_->offset(), cb[1] += coarse_->offset();
     merge_bounds(b, cb);
   }
-  if (on_[Layer::kHandles] && o.handle_lines->GetNumberOfPoints() > 0) merge_bounds(b, o.handle_lines->GetBounds());
+  if (on_[Layer::kHandles] && o.handle_lines->GetNumberOfPoints() > 0)
+    merge_bounds(b, o.handle_lines->GetBounds());
 
   const bool legends = !options_.paper;
   CameraPose pose;
@@ -485,9 +508,9 @@ void Scene::reset_camera() {
   renderer_->ResetCameraClippingRange();
 
   // Dots scale with the zoom of the default camera: pixels per mesh unit at the focal point.
-  const double half_height = pose.parallel
-                                 ? pose.parallel_scale
-                                 : (pose.position - pose.focal_point).norm() * std::tan(0.5 * pose.view_angle * kPi / 180);
+  const double half_height = pose.parallel ? pose.parallel_scale
+                                           : (pose.position - pose.focal_point).norm() *
+                                                 std::tan(0.5 * pose.view_angle * kPi / 180);
   const double ppu = 0.5 * height / half_height;
   const double dot = std::clamp(0.45 * ppu, 2.0, 14.0);
   for (MeshView* view : {fine_.get(), coarse_.get()}) {
@@ -523,14 +546,16 @@ std::vector<Eigen::Vector3d> Scene::drawn_points() const {
 }
 
 void Scene::frame_all() {
-  if (options_.view != View::kThreeD) {  // the top views show the rest state: their default frames it
+  if (options_.view !=
+      View::kThreeD) {  // the top views show the rest state: their default frames it
     reset_camera();
     return;
   }
   const ImageSize size = viewport_size();
   const double width = size.width, height = size.height;
   vtkCamera* camera = renderer_->GetActiveCamera();
-  apply_camera_pose(framed_camera(drawn_points(), camera_pose(camera), width / height, !options_.paper), camera);
+  apply_camera_pose(
+      framed_camera(drawn_points(), camera_pose(camera), width / height, !options_.paper), camera);
   renderer_->ResetCameraClippingRange();
 }
 
@@ -549,7 +574,9 @@ vtkDataSet* Scene::layer_data(Layer layer) const {
   }
 }
 
-vtkPolyData* Scene::trimmed_surface() const { return fine_->trimmed(); }
+vtkPolyData* Scene::trimmed_surface() const {
+  return fine_->trimmed();
+}
 
 vtkProp* Scene::legend_prop(Layer layer) const {
   const auto it = overlays_->legends.find(layer);

@@ -125,6 +125,8 @@ class Scene {
 
  private:
   struct Overlays;
+  /// The legend of every layer (with the patch colours of the model), made once.
+  void add_legends();
   /// The renderer's size in pixels; 1600 x 800 while it has no window (or no size yet).
   ImageSize viewport_size() const;
   void apply_layers();

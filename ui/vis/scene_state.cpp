@@ -3,19 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace sdog::vis {
 
 ConstraintView constraint_view(const Scenario& scenario, double t) {
   ConstraintView view;
-  for (const auto& p : scenario.positions) view.handles.push_back({p.vertex, p.start + t * (p.end - p.start)});
+  for (const auto& p : scenario.positions)
+    view.handles.push_back({p.vertex, p.start + t * (p.end - p.start)});
   for (const auto& a : scenario.angles)
     view.angle_sites.push_back({a.point, a.start_degrees + t * (a.end_degrees - a.start_degrees)});
   return view;
 }
 
-SceneState scene_state(const DogProblem& problem, const Dofs& x, const Dofs* coarse_x, const Scenario* scenario,
-                       double t) {
+SceneState scene_state(const DogProblem& problem, const Dofs& x, const Dofs* coarse_x,
+                       const Scenario* scenario, double t) {
   SceneState s;
   s.fine = to_positions(x);
   if (coarse_x) s.coarse = to_positions(*coarse_x);

@@ -15,8 +15,8 @@ namespace sdog::vis {
 /// The constraints the handles layer draws.
 struct ConstraintView {
   struct Handle {
-    int vertex;               ///< fine vertex
-    Eigen::Vector3d target;   ///< where the solver pulls it (mesh units)
+    int vertex;              ///< fine vertex
+    Eigen::Vector3d target;  ///< where the solver pulls it (mesh units)
   };
   struct AngleSite {
     int point;              ///< crease point
@@ -32,7 +32,7 @@ ConstraintView constraint_view(const Scenario& scenario, double t);
 struct SceneState {
   Eigen::MatrixX3d fine;    ///< fine positions (vertex_count x 3)
   Eigen::MatrixX3d coarse;  ///< coarse positions; no rows: the coarse rest state
-  Fields fields;            ///< of `fine` (diagnostics.h): dog_residual, bending, edge_strain, stitch_gap
+  Fields fields;  ///< of `fine` (diagnostics.h): dog_residual, bending, edge_strain, stitch_gap
   ConstraintView constraints;
   /// Assignment of each crease curve (the cleaned creases, in order) as the run folds them;
   /// empty: the model's own.

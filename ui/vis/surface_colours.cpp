@@ -94,7 +94,7 @@ std::vector<Rgb8> surface_colours(Layer layer, const TrimmedSurface& surface,
     }
     default:
       throw std::logic_error(std::string("surface colours: '") + enum_name(layer) +
-                                  "' is not a colour layer");
+                             "' is not a colour layer");
   }
 }
 

@@ -68,7 +68,8 @@ void write_ply(const TrimmedSurface& surface, const std::vector<Rgb8>& colours,
 
 }  // namespace
 
-std::vector<SurfaceFormat> parse_surface_formats(const std::string& text, const std::string& context) {
+std::vector<SurfaceFormat> parse_surface_formats(const std::string& text,
+                                                 const std::string& context) {
   return parse_enum_list<SurfaceFormat>(text, context);
 }
 

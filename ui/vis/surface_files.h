@@ -1,6 +1,6 @@
 #pragma once
-// The trimmed surface (geometry/surface/trimmed_surface.h) as files for other programs (Blender, MeshLab,
-// ParaView), in sheet units:
+// The trimmed surface (geometry/surface/trimmed_surface.h) as files for other programs (Blender,
+// MeshLab, ParaView), in sheet units:
 // - OBJ (Wavefront, text): `v` positions, `vn` normals, `f a//a b//b c//c` triangles, through VTK's
 //   vtkOBJWriter (full double precision);
 // - PLY (binary little endian): per vertex float x, y, z, float nx, ny, nz and uchar red, green,

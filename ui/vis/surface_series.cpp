@@ -12,7 +12,8 @@ SurfaceSeries::SurfaceSeries(const DogMesh& mesh, OutputSet& out, SurfaceExport 
       exports_(std::move(exports)),
       surface_(trimmed_surface(mesh, mesh.V)) {}
 
-void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays, const std::string& path) {
+void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays,
+                       const std::string& path) {
   write_vtp(triangle_surface(surface, trimmed_arrays(surface, mesh_arrays)), path);
 }
 

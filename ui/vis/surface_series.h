@@ -25,12 +25,13 @@ namespace sdog::vis {
 
 struct SurfaceExport {
   std::vector<SurfaceFormat> formats;  ///< OBJ and PLY files to write besides the .vtp (none: none)
-  Layer colour = Layer::kPatches;       ///< the colour layer of the PLY files' vertex colours
+  Layer colour = Layer::kPatches;      ///< the colour layer of the PLY files' vertex colours
 };
 
 /// Writes the surface (placed at a state) as a .vtp file with normals and the state's fine mesh
 /// arrays carried over (throws OutputError).
-void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays, const std::string& path);
+void write_surface_vtp(const TrimmedSurface& surface, const MeshArrays& mesh_arrays,
+                       const std::string& path);
 
 class SurfaceSeries {
  public:

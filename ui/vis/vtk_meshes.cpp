@@ -108,7 +108,8 @@ vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const 
   return grid;
 }
 
-void set_double_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values) {
+void set_double_array(vtkDataSetAttributes* attributes, const char* name,
+                      const std::vector<double>& values) {
   auto* array = vtkDoubleArray::SafeDownCast(attributes->GetArray(name));
   if (!array) {
     auto fresh = vtkSmartPointer<vtkDoubleArray>::New();
@@ -121,7 +122,8 @@ void set_double_array(vtkDataSetAttributes* attributes, const char* name, const 
   array->Modified();
 }
 
-vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays) {
+vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface,
+                                              const MeshArrays& arrays) {
   const Eigen::MatrixX3d& V = surface.V;
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -137,7 +139,8 @@ vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, con
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(V.rows());
-  for (Eigen::Index i = 0; i < V.rows(); ++i) normals->SetTuple3(i, surface.N(i, 0), surface.N(i, 1), surface.N(i, 2));
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    normals->SetTuple3(i, surface.N(i, 0), surface.N(i, 1), surface.N(i, 2));
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
   poly->SetPolys(triangles);
@@ -168,7 +171,8 @@ vtkSmartPointer<vtkDataArray> vector_array(const std::string& name, const Eigen:
   out->SetName(name.c_str());
   out->SetNumberOfComponents(3);
   out->SetNumberOfTuples(rows.rows());
-  for (Eigen::Index i = 0; i < rows.rows(); ++i) out->SetTuple3(i, rows(i, 0), rows(i, 1), rows(i, 2));
+  for (Eigen::Index i = 0; i < rows.rows(); ++i)
+    out->SetTuple3(i, rows(i, 0), rows(i, 1), rows(i, 2));
   return out;
 }
 
@@ -183,7 +187,8 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& path) {
   if (readable) reader->Update();
   const std::string why = one_line(take_vtk_error());
   if (!readable || reader->GetErrorCode() != 0 || !why.empty() || !reader->GetOutput())
-    throw InputError(path + ": not a readable VTK unstructured grid (.vtu) file" + (why.empty() ? "" : " (" + why + ")"));
+    throw InputError(path + ": not a readable VTK unstructured grid (.vtu) file" +
+                     (why.empty() ? "" : " (" + why + ")"));
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->ShallowCopy(reader->GetOutput());  // outlives the reader
   return grid;

@@ -20,10 +20,11 @@ using Polyline3 = std::vector<Eigen::Vector3d>;
 vtkSmartPointer<vtkUnstructuredGrid> quad_grid(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& F,
                                                const MeshArrays& arrays);
 
-/// The trimmed surface (geometry/surface/trimmed_surface.h) as triangles with its normals ("Normals", the
-/// point normals for smooth shading) and the given arrays (trimmed_arrays: one value per surface
-/// vertex and per triangle).
-vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface, const MeshArrays& arrays);
+/// The trimmed surface (geometry/surface/trimmed_surface.h) as triangles with its normals
+/// ("Normals", the point normals for smooth shading) and the given arrays (trimmed_arrays: one
+/// value per surface vertex and per triangle).
+vtkSmartPointer<vtkPolyData> triangle_surface(const TrimmedSurface& surface,
+                                              const MeshArrays& arrays);
 
 /// Polylines (one cell each; closed ones repeat their first point) with one cell array per entry
 /// of `cell_arrays` (values per polyline).
@@ -31,7 +32,8 @@ vtkSmartPointer<vtkPolyData> polylines(const std::vector<Polyline3>& lines,
                                        const std::vector<NamedArray>& cell_arrays);
 
 /// Replaces (or adds) the double array `name` of the attributes, reusing its storage.
-void set_double_array(vtkDataSetAttributes* attributes, const char* name, const std::vector<double>& values);
+void set_double_array(vtkDataSetAttributes* attributes, const char* name,
+                      const std::vector<double>& values);
 
 /// A 3-component array with one tuple per row of `rows` (a point array of vectors).
 vtkSmartPointer<vtkDataArray> vector_array(const std::string& name, const Eigen::MatrixX3d& rows);

@@ -26,8 +26,8 @@ namespace sdog::svg {
 using Point = Eigen::Vector2d;
 
 /// A problem with one element's attribute or geometry. The message has no file/element prefix:
-/// the reader adds "FILE:LINE: <path id=\"x\">: path data: " and rethrows it as an InputError of its
-/// own.
+/// the reader adds "FILE:LINE: <path id=\"x\">: path data: " and rethrows it as an InputError of
+/// its own.
 struct ElementError : InputError {
   using InputError::InputError;
 };
@@ -39,8 +39,8 @@ void skip_wsp(std::string_view text, std::size_t& pos);
 bool skip_comma_wsp(std::string_view text, std::size_t& pos);
 
 enum class NumberScan {
-  kOk,          ///< value set, pos advanced past the number
-  kAbsent,      ///< no number at pos (pos unchanged)
+  kOk,         ///< value set, pos advanced past the number
+  kAbsent,     ///< no number at pos (pos unchanged)
   kNotFinite,  ///< "nan", "inf", "infinity" (any case, optional sign) or an overflow (1e999)
 };
 

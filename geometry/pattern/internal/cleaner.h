@@ -2,8 +2,8 @@
 // Internal to pattern cleaning (pattern_cleaning.cpp and cleaning_*.cpp): the Cleaner that runs
 // the steps of pattern_cleaning.h on one pattern, and the polyline helpers its steps share. Each
 // step lives in the file named after it: cleaning_clipping.cpp (step 2), cleaning_junctions.cpp
-// (steps 3 and 5), cleaning_snapping.cpp (step 4), cleaning_overlaps.cpp (step 0); pattern_cleaning.cpp has the pipeline, step 1
-// and the final check.
+// (steps 3 and 5), cleaning_snapping.cpp (step 4), cleaning_overlaps.cpp (step 0);
+// pattern_cleaning.cpp has the pipeline, step 1 and the final check.
 #include <cmath>
 #include <map>
 #include <set>

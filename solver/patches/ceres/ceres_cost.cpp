@@ -11,9 +11,12 @@ TermCost::TermCost(const Term& term, int block, double weight, const double* off
   for (int j = 0; j < term.block_size(block); ++j) mutable_parameter_block_sizes()->push_back(3);
 }
 
-void TermCost::set_weight(double weight) { scale_ = std::sqrt(weight); }
+void TermCost::set_weight(double weight) {
+  scale_ = std::sqrt(weight);
+}
 
-bool TermCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+bool TermCost::Evaluate(double const* const* parameters, double* residuals,
+                        double** jacobians) const {
   const int k = term_.block_size(block_), m = term_.residual_count(block_), cols = 3 * k;
   std::vector<Eigen::Vector3d> p(k);
   for (int j = 0; j < k; ++j) p[j] = Eigen::Map<const Eigen::Vector3d>(parameters[j]);

@@ -13,7 +13,8 @@ namespace sdog {
 class TermCost : public ceres::CostFunction {
  public:
   TermCost(const Term& term, int block, double weight, const double* offset = nullptr);
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
   void set_weight(double weight);
 
  private:

@@ -17,7 +17,8 @@ namespace sdog {
 std::string ceres_version();
 
 /// The terms, `dog` and the coupling's frozen state must outlive the stepper.
-std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
+std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch,
+                                               const std::vector<WeightedTerm>& terms,
                                                const Term& dog, const CeresPatchOptions& options,
                                                const PatchCoupling& coupling = {});
 

@@ -22,8 +22,9 @@ Eigen::VectorXd block_residual(const Term& t, int b, Position position) {
 
 }  // namespace
 
-CeresPatchSolver::CeresPatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-                         const CeresPatchOptions& options, const PatchCoupling& coupling)
+CeresPatchSolver::CeresPatchSolver(const DogMesh& mesh, int patch,
+                                   const std::vector<WeightedTerm>& terms, const Term& dog,
+                                   const CeresPatchOptions& options, const PatchCoupling& coupling)
     : patch_(patch),
       begin_(mesh.patch_begin[patch]),
       end_(mesh.patch_begin[patch + 1]),
@@ -42,7 +43,8 @@ CeresPatchSolver::CeresPatchSolver(const DogMesh& mesh, int patch, const std::ve
   };
   term_costs_.resize(terms.size());
   for (size_t k = 0; k < terms.size(); ++k) {
-    terms_.push_back(std::make_unique<PatchTerm>(*terms[k].term, begin_, end_, coupling.frozen_for(terms[k].term)));
+    terms_.push_back(std::make_unique<PatchTerm>(*terms[k].term, begin_, end_,
+                                                 coupling.frozen_for(terms[k].term)));
     const Term& t = *terms_.back();
     weights_.push_back(terms[k].weight);
     for (int b = 0; b < t.block_count(); ++b) {
@@ -71,7 +73,8 @@ void CeresPatchSolver::set_weight(size_t index, double weight) {
 }
 
 void CeresPatchSolver::load(const Dofs& x) {
-  for (size_t i = 0; i < local_.size(); ++i) local_[i] = x[3 * begin_ + static_cast<Eigen::Index>(i)];
+  for (size_t i = 0; i < local_.size(); ++i)
+    local_[i] = x[3 * begin_ + static_cast<Eigen::Index>(i)];
 }
 
 double CeresPatchSolver::constraint_max_local() {
@@ -145,7 +148,8 @@ PatchReport CeresPatchSolver::solve(Dofs& x) {
     cmax = new_max;
     if (cmax <= options_.constraint_tolerance) break;
   }
-  for (size_t i = 0; i < local_.size(); ++i) x[3 * begin_ + static_cast<Eigen::Index>(i)] = local_[i];
+  for (size_t i = 0; i < local_.size(); ++i)
+    x[3 * begin_ + static_cast<Eigen::Index>(i)] = local_[i];
   report.dog_max = cmax;
   report.converged = cmax <= options_.constraint_tolerance;
   report.objective = objective(x);
@@ -153,9 +157,12 @@ PatchReport CeresPatchSolver::solve(Dofs& x) {
   return report;
 }
 
-std::string ceres_version() { return CERES_VERSION_STRING; }
+std::string ceres_version() {
+  return CERES_VERSION_STRING;
+}
 
-std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
+std::unique_ptr<PatchStepper> make_ceres_patch(const DogMesh& mesh, int patch,
+                                               const std::vector<WeightedTerm>& terms,
                                                const Term& dog, const CeresPatchOptions& options,
                                                const PatchCoupling& coupling) {
   return std::make_unique<CeresPatchSolver>(mesh, patch, terms, dog, options, coupling);

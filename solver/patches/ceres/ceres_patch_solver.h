@@ -23,10 +23,10 @@
 
 #include "geometry/mesh/dog_mesh.h"
 #include "solver/patches/ceres/ceres_cost.h"
-#include "solver/terms/dog_constraints.h"
+#include "solver/patches/ceres/ceres_patch_options.h"
 #include "solver/patches/patch_stepper.h"
 #include "solver/patches/patch_term.h"
-#include "solver/patches/ceres/ceres_patch_options.h"
+#include "solver/terms/dog_constraints.h"
 #include "solver/terms/weighted_term.h"
 
 namespace sdog {
@@ -36,8 +36,9 @@ class CeresPatchSolver : public PatchStepper {
   /// Patch `patch` of `mesh`: the blocks of `terms` inside it (and the coupled ones) and the
   /// blocks of `dog` inside it. The terms, `dog` and the coupling's frozen state must outlive the
   /// solver; their targets may change between solves.
-  CeresPatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms, const Term& dog,
-              const CeresPatchOptions& options = {}, const PatchCoupling& coupling = {});
+  CeresPatchSolver(const DogMesh& mesh, int patch, const std::vector<WeightedTerm>& terms,
+                   const Term& dog, const CeresPatchOptions& options = {},
+                   const PatchCoupling& coupling = {});
   CeresPatchSolver(const CeresPatchSolver&) = delete;
   CeresPatchSolver& operator=(const CeresPatchSolver&) = delete;
 

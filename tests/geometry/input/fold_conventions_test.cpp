@@ -4,23 +4,25 @@
 
 #include "base/errors.h"
 #include "geometry/input/svg_pattern.h"
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/input/svg_reader.h"
+#include "geometry/pattern/crease_pattern.h"
 
 namespace sdog {
 namespace {
 
 CreasePattern pattern_of(const std::string& body) {
-  const std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
-                          "<rect x=\"0\" y=\"0\" width=\"100\" height=\"100\" fill=\"none\" stroke=\"#000\"/>" +
-                          body + "</svg>";
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<rect x=\"0\" y=\"0\" width=\"100\" height=\"100\" fill=\"none\" stroke=\"#000\"/>" +
+      body + "</svg>";
   return crease_pattern_from_svg(parse_svg(svg, "t.svg"));
 }
 
 TEST(FoldConventions, OrigamiSimulatorColoursAndOpacity) {
   const CreasePattern p = pattern_of(
       "<line id=\"m\" x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#ff0000\"/>"
-      "<line id=\"v\" x1=\"40\" y1=\"0\" x2=\"40\" y2=\"100\" stroke=\"blue\" stroke-opacity=\"0.5\"/>"
+      "<line id=\"v\" x1=\"40\" y1=\"0\" x2=\"40\" y2=\"100\" stroke=\"blue\" "
+      "stroke-opacity=\"0.5\"/>"
       "<line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" stroke=\"#ff00ff\"/>"
       "<line x1=\"0\" y1=\"0\" x2=\"100\" y2=\"100\" stroke=\"#ffff00\"/>"
       "<line x1=\"80\" y1=\"0\" x2=\"80\" y2=\"100\" stroke=\"#123456\"/>");
@@ -41,16 +43,19 @@ TEST(FoldConventions, DashesDashDotMountainDashedValleyAlsoInBlack) {
   const CreasePattern p = pattern_of(
       "<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#000\" stroke-dasharray=\"4 2\"/>"
       "<line x1=\"40\" y1=\"0\" x2=\"40\" y2=\"100\" stroke=\"#333\" stroke-dasharray=\"8 2 1 2\"/>"
-      "<line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" stroke=\"#ff0000\" stroke-dasharray=\"4 2\"/>");
+      "<line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" stroke=\"#ff0000\" stroke-dasharray=\"4 "
+      "2\"/>");
   ASSERT_EQ(p.creases.size(), 3u) << "a dashed black line is a crease";
   EXPECT_EQ(p.creases[0].fold, Fold::kValley);
   EXPECT_EQ(p.creases[1].fold, Fold::kMountain);
-  EXPECT_EQ(p.creases[2].fold, Fold::kMountain) << "Origami Simulator's colour wins over the dashes";
+  EXPECT_EQ(p.creases[2].fold, Fold::kMountain)
+      << "Origami Simulator's colour wins over the dashes";
 }
 
 TEST(FoldConventions, DataAttributesWinAndGroupsPassThemOn) {
   const CreasePattern p = pattern_of(
-      "<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#ff0000\" data-fold=\"valley\" data-angle=\"45\"/>"
+      "<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#ff0000\" data-fold=\"valley\" "
+      "data-angle=\"45\"/>"
       "<g data-fold=\"flat\"><line x1=\"40\" y1=\"0\" x2=\"40\" y2=\"100\" stroke=\"#000\"/></g>"
       "<line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" stroke=\"#0000ff\" data-angle=\"30\"/>");
   ASSERT_EQ(p.creases.size(), 3u);
@@ -70,12 +75,16 @@ TEST(FoldConventions, BadAttributesAndCutLinesAreClearErrors) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message("<line id=\"c\" x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"red\" data-fold=\"hill\"/>")
+  EXPECT_NE(message("<line id=\"c\" x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"red\" "
+                    "data-fold=\"hill\"/>")
                 .find("t.svg:1: <line id=\"c\">: data-fold=\"hill\""),
             std::string::npos);
-  EXPECT_NE(message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"red\" data-angle=\"-20\"/>").find("0 to 180"),
-            std::string::npos);
-  EXPECT_NE(message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#00ff00\"/>").find("a cut line (green)"),
+  EXPECT_NE(
+      message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"red\" data-angle=\"-20\"/>")
+          .find("0 to 180"),
+      std::string::npos);
+  EXPECT_NE(message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#00ff00\"/>")
+                .find("a cut line (green)"),
             std::string::npos);
 }
 
@@ -113,7 +122,9 @@ TEST(BoundaryPieces, AGapWiderThanTheToleranceIsAnError) {
     crease_pattern_from_svg(parse_svg(svg, "t.svg"));
     FAIL() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("the sheet boundary (black) is not closed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the sheet boundary (black) is not closed"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -1,6 +1,6 @@
-// Tests of the FOLD reader (geometry/input/fold_reader.h): the sheet from the B edges, creases from the
-// M, V, F and U edges (straight runs of edges joined), fold angles, the y axis (the same pattern as
-// SVG and as FOLD gives the same creases) and the errors, each naming the key and index.
+// Tests of the FOLD reader (geometry/input/fold_reader.h): the sheet from the B edges, creases from
+// the M, V, F and U edges (straight runs of edges joined), fold angles, the y axis (the same
+// pattern as SVG and as FOLD gives the same creases) and the errors, each naming the key and index.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "base/errors.h"
+#include "geometry/input/fold_reader.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/input/svg_pattern.h"
+#include "geometry/input/svg_reader.h"
 #include "geometry/pattern/crease_pattern.h"
-#include "geometry/input/fold_reader.h"
 #include "geometry/pattern/pattern_cleaning.h"
 #include "geometry/pattern/plane_geometry.h"
-#include "geometry/input/svg_reader.h"
 #include "tests/test_support.h"
 
 namespace sdog {

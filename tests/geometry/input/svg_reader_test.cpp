@@ -1,5 +1,5 @@
-// Tests of the SVG reader (geometry/input/svg_reader.h) and its internal parsers. Expected values are
-// computed independently of the implementation: analytic curves, hand-derived arc centres,
+// Tests of the SVG reader (geometry/input/svg_reader.h) and its internal parsers. Expected values
+// are computed independently of the implementation: analytic curves, hand-derived arc centres,
 // hand-composed transforms.
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include "base/errors.h"
 #include "geometry/input/internal/svg_flatten.h"
 #include "geometry/input/internal/svg_path_data.h"
-#include "geometry/input/svg_reader.h"
 #include "geometry/input/internal/svg_style.h"
+#include "geometry/input/svg_reader.h"
 
 namespace {
 
@@ -674,8 +674,9 @@ TEST(SvgStyle, GroupsPassTheirStyleToChildren) {
                 .colour,
             "#0000ff");
   // The element's own attribute beats a style inherited from its parent.
-  EXPECT_EQ(only_curve("<g style=\"stroke:blue\"><path stroke=\"red\" d=\"M0 0 L1 1\"/></g>").colour,
-            "#ff0000");
+  EXPECT_EQ(
+      only_curve("<g style=\"stroke:blue\"><path stroke=\"red\" d=\"M0 0 L1 1\"/></g>").colour,
+      "#ff0000");
   EXPECT_EQ(only_curve("<g stroke=\"blue\"><path stroke=\"inherit\" d=\"M0 0 L1 1\"/></g>").colour,
             "#0000ff");
   EXPECT_EQ(

@@ -179,7 +179,8 @@ TEST(DogMesh, TwoCreasePointsOnOneGridEdgeAreBothKept) {
 }
 
 // The crease points of a mesh at `sheet` within `radius` sheet units.
-std::vector<const CreaseStitching::Point*> points_near(const DogMesh& mesh, const Eigen::Vector2d& sheet,
+std::vector<const CreaseStitching::Point*> points_near(const DogMesh& mesh,
+                                                       const Eigen::Vector2d& sheet,
                                                        double radius) {
   std::vector<const CreaseStitching::Point*> near;
   for (const auto& p : mesh.stitching.points)
@@ -192,7 +193,8 @@ TEST(DogMesh, CreaseTouchingAGridLineIsStitchedOnceWhereItTouches) {
   // it crosses the grid edge (25,50)-(50,50) twice, 0.1 sheet units (0.004 mesh units) apart, as a
   // flattened arc does where it touches a grid line.
   const DogModel m = build_dog_model(
-      test::rectangle_pattern(100, 100, {{{0, 60}, {30, 52}, {37.45, 49.999}, {37.55, 49.999}, {45, 52}, {100, 60}}}),
+      test::rectangle_pattern(
+          100, 100, {{{0, 60}, {30, 52}, {37.45, 49.999}, {37.55, 49.999}, {45, 52}, {100, 60}}}),
       {5, 5});
   for (const DogMesh* mesh : {&m.fine, &m.coarse}) {
     const auto near = points_near(*mesh, {37.5, 50}, 1);

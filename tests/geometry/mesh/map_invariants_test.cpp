@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <map>
 
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
 #include "tests/test_support.h"
 
 namespace sdog {
@@ -149,8 +149,8 @@ TEST_P(MapInvariants, VertexClassesAddUpAndPatchesAreContiguous) {
   for (const auto* pair : {&m.fine, &m.coarse}) {
     const DogMesh& mesh = *pair;
     const QuadTopology& t = pair == &m.fine ? m.fine_topology : m.coarse_topology;
-    EXPECT_EQ(t.count(VertexClass::kStar) + t.count(VertexClass::kBnd3) + t.count(VertexClass::kBnd2) +
-                  t.count(VertexClass::kBnd4),
+    EXPECT_EQ(t.count(VertexClass::kStar) + t.count(VertexClass::kBnd3) +
+                  t.count(VertexClass::kBnd2) + t.count(VertexClass::kBnd4),
               mesh.vertex_count());
     EXPECT_EQ(mesh.patch_begin.back(), mesh.vertex_count());
     for (int p = 0; p < mesh.patch_count(); ++p) {

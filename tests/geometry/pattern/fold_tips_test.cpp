@@ -1,11 +1,12 @@
-// Fold tips (geometry/pattern/fold_tips.h): two creases ending together inside the sheet at an angle.
+// Fold tips (geometry/pattern/fold_tips.h): two creases ending together inside the sheet at an
+// angle.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "geometry/input/pattern_file.h"
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "geometry/pattern/fold_tips.h"
 #include "geometry/pattern/pattern_cleaning.h"
 #include "tests/geometry/pattern_builders.h"
@@ -30,7 +31,8 @@ CleanPattern meeting(const Polyline2& second, Fold a, Fold b, bool third = false
 
 TEST(FoldTips, AMountainAndAValleyEndingTogetherAtAnAngleMakeOne) {
   // The second crease leaves (50, 60) towards (80, 0): 3:6 against straight down, atan(0.5).
-  const std::vector<FoldTip> tips = fold_tips(meeting({{50, 60}, {80, 0}}, Fold::kMountain, Fold::kValley));
+  const std::vector<FoldTip> tips =
+      fold_tips(meeting({{50, 60}, {80, 0}}, Fold::kMountain, Fold::kValley));
   ASSERT_EQ(tips.size(), 1u);
   EXPECT_EQ(tips[0].point, Eigen::Vector2d(50, 60));
   EXPECT_EQ(tips[0].creases, (std::array<int, 2>{0, 1}));
@@ -42,11 +44,13 @@ TEST(FoldTips, CreasesThatContinueEachOtherOrMeetAThirdMakeNone) {
   EXPECT_TRUE(fold_tips(meeting({{50, 60}, {50, 100}}, Fold::kMountain, Fold::kValley)).empty());
   // Within kStraightCreaseDegrees of straight.
   const double off = 40 * std::tan(0.5 * kStraightCreaseDegrees * M_PI / 180);
-  EXPECT_TRUE(fold_tips(meeting({{50, 60}, {50 + off, 100}}, Fold::kMountain, Fold::kValley)).empty());
+  EXPECT_TRUE(
+      fold_tips(meeting({{50, 60}, {50 + off, 100}}, Fold::kMountain, Fold::kValley)).empty());
   // Both flat: nothing folds there.
   EXPECT_TRUE(fold_tips(meeting({{50, 60}, {80, 0}}, Fold::kFlat, Fold::kFlat)).empty());
   // A third crease ending there makes a degree-3 vertex.
-  EXPECT_TRUE(fold_tips(meeting({{50, 60}, {80, 0}}, Fold::kMountain, Fold::kValley, true)).empty());
+  EXPECT_TRUE(
+      fold_tips(meeting({{50, 60}, {80, 0}}, Fold::kMountain, Fold::kValley, true)).empty());
 }
 
 TEST(FoldTips, TheVPleatHasOneAndPatternsWithoutInnerEndsNone) {
@@ -64,7 +68,8 @@ TEST(FoldTips, TheVPleatHasOneAndPatternsWithoutInnerEndsNone) {
 }
 
 TEST(FoldTips, TheModelWarnsNamingBothCreasesAndKeepsTheTipInMeshUnits) {
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("v_pleat.fold")), parse_resolution("21x21"));
+  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("v_pleat.fold")),
+                                     parse_resolution("21x21"));
   ASSERT_EQ(m.fine.fold_tips.size(), 1u);
   // The sheet is 100 units wide on 20 grid edges.
   EXPECT_NEAR(m.fine.fold_tips[0].x(), 10, 1e-9);
@@ -72,7 +77,8 @@ TEST(FoldTips, TheModelWarnsNamingBothCreasesAndKeepsTheTipInMeshUnits) {
   for (const std::string& w : model_warnings(m))
     if (w.find("end together") != std::string::npos) {
       ++warned;
-      EXPECT_NE(w.find("creases 0 (" + m.clean.creases[0].origin + ") and 1 (" + m.clean.creases[1].origin + ")"),
+      EXPECT_NE(w.find("creases 0 (" + m.clean.creases[0].origin + ") and 1 (" +
+                       m.clean.creases[1].origin + ")"),
                 std::string::npos)
           << w;
     }

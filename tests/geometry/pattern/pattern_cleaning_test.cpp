@@ -107,23 +107,27 @@ TEST(PatternCleaning, ClosedCreaseInsideStaysClosed) {
 }
 
 TEST(PatternCleaning, CreasePartAlongTheBoundaryIsDroppedWithAWarning) {
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 0}, {100, 0}, {100, 50}, {0, 60}}}));
   ASSERT_EQ(c.creases.size(), 1u);
   EXPECT_EQ(c.creases[0].points, (Polyline2{{100, 50}, {0, 60}}));
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_NE(c.warnings[0].find("crease 0"), std::string::npos) << c.warnings[0];
-  EXPECT_NE(c.warnings[0].find("along the sheet boundary (2 segment(s))"), std::string::npos) << c.warnings[0];
+  EXPECT_NE(c.warnings[0].find("along the sheet boundary (2 segment(s))"), std::string::npos)
+      << c.warnings[0];
 }
 
 TEST(PatternCleaning, CreaseWhollyOnTheBoundaryDisappears) {
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{0, 100}, {40, 100}}, {{50, 0}, {50, 100}}}));
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 100}, {40, 100}}, {{50, 0}, {50, 100}}}));
   ASSERT_EQ(c.creases.size(), 1u);
   EXPECT_EQ(c.creases[0].points.front().x(), 50);
   EXPECT_EQ(c.warnings.size(), 1u);
 }
 
 TEST(PatternCleaning, CreaseDrawnTwiceIsMergedWithAWarning) {
-  CreasePattern p = rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}, {{50, 100}, {50, 0}}, {{0, 50}, {50, 50}}});
+  CreasePattern p = rectangle_pattern(
+      100, 100, {{{50, 0}, {50, 100}}, {{50, 100}, {50, 0}}, {{0, 50}, {50, 50}}});
   p.creases[0].fold = Fold::kMountain;
   p.creases[1].fold = Fold::kValley;
   const CleanPattern c = clean_pattern(p);
@@ -137,7 +141,8 @@ TEST(PatternCleaning, CreaseDrawnTwiceIsMergedWithAWarning) {
 TEST(PatternCleaning, CreaseDrawnPartlyAgainKeepsItsOwnPart) {
   // The second crease repeats the first one's lower half, then turns right: its turn is kept and
   // ends on the first crease (a T junction).
-  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}, {{50, 0}, {50, 40}, {100, 40}}}));
+  const CleanPattern c = clean_pattern(
+      rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}, {{50, 0}, {50, 40}, {100, 40}}}));
   ASSERT_EQ(c.creases.size(), 2u);
   EXPECT_EQ(c.creases[1].points, (Polyline2{{50, 40}, {100, 40}}));
   EXPECT_EQ(c.warnings.size(), 1u);
@@ -185,14 +190,19 @@ TEST(NonSeparatingCreases, FromTheBoundaryToAHole) {
 TEST(NonSeparatingCreases, FromACreaseToAHole) {
   // The second piece of the slanted crease (after the crossing at x = 80) runs from the vertical
   // crease to the hole: the piece left of x = 80 stays one ring around the hole.
-  const CleanPattern c = clean_pattern(annulus_pattern({{{100, 80}, {40, 50}}, {{80, 0}, {80, 80}}}));
+  const CleanPattern c =
+      clean_pattern(annulus_pattern({{{100, 80}, {40, 50}}, {{80, 0}, {80, 80}}}));
   ASSERT_EQ(c.creases[0].points.size(), 3u) << "one crease through the crossing";
   EXPECT_EQ(first_non_separating_crease(c), 0);
 }
 
 TEST(NonSeparatingCreases, SeparatingCreasesPass) {
-  EXPECT_EQ(first_non_separating_crease(clean_pattern(annulus_pattern({{{50, 0}, {50, 30.5}}, {{50, 50}, {50, 80}}}))), -1);
-  EXPECT_EQ(first_non_separating_crease(clean_pattern(test::rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}}))), -1);
+  EXPECT_EQ(first_non_separating_crease(
+                clean_pattern(annulus_pattern({{{50, 0}, {50, 30.5}}, {{50, 50}, {50, 80}}}))),
+            -1);
+  EXPECT_EQ(first_non_separating_crease(
+                clean_pattern(test::rectangle_pattern(100, 100, {{{50, 0}, {50, 100}}}))),
+            -1);
 }
 
 }  // namespace

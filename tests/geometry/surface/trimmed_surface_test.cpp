@@ -1,8 +1,8 @@
 // The trimmed surface: patches clipped at their creases and at the sheet's boundary. Areas of
 // patterns whose patches are known in closed form, seams that close, and the sheet's area on every
 // dataset and reference pattern.
-#include "geometry/input/pattern_file.h"
 #include "geometry/surface/trimmed_surface.h"
+#include "geometry/input/pattern_file.h"
 
 #include <gtest/gtest.h>
 
@@ -38,14 +38,17 @@ double sheet_area(const DogModel& m) {
 }
 
 // Areas in sheet units (the test patterns are 100 x 100 with 1 / scale = 100 / (n - 1)).
-double mesh_area(const DogMesh& mesh, double sheet_units) { return sheet_units * mesh.scale * mesh.scale; }
+double mesh_area(const DogMesh& mesh, double sheet_units) {
+  return sheet_units * mesh.scale * mesh.scale;
+}
 
 // The edges used by a single triangle that are not on the sheet's outer rectangle [0, w] x [0, h]
 // (at rest: `flat`) must each have a twin with the same end positions in `s` (either direction):
 // the patches meet along their creases without a gap. (A twin is another patch's edge, or, where a
 // crease passes within rounding of a grid vertex, the other side of a sliver of no area.) Returns
 // the number of edges without a twin.
-int open_seams(const TrimmedSurface& s, const TrimmedSurface& flat, double w, double h, double tol) {
+int open_seams(const TrimmedSurface& s, const TrimmedSurface& flat, double w, double h,
+               double tol) {
   std::map<std::pair<int, int>, int> uses;
   for (int t = 0; t < s.triangle_count(); ++t)
     for (int k = 0; k < 3; ++k) {
@@ -57,19 +60,23 @@ int open_seams(const TrimmedSurface& s, const TrimmedSurface& flat, double w, do
     if (n == 1) border.push_back(e);
   auto on_outer = [&](int v) {
     const Eigen::Vector3d p = flat.V.row(v);
-    return std::abs(p.x()) < tol || std::abs(p.y()) < tol || std::abs(p.x() - w) < tol || std::abs(p.y() - h) < tol;
+    return std::abs(p.x()) < tol || std::abs(p.y()) < tol || std::abs(p.x() - w) < tol ||
+           std::abs(p.y() - h) < tol;
   };
   auto same = [&](int u, int v) { return (s.V.row(u) - s.V.row(v)).norm() < tol; };
   int open = 0;
   for (const auto& [a, b] : border) {
-    if (same(a, b)) continue;  // an edge shorter than tol (a crease point next to a grid vertex) is a point
+    if (same(a, b))
+      continue;  // an edge shorter than tol (a crease point next to a grid vertex) is a point
     const Eigen::Vector3d mid = 0.5 * (flat.V.row(a) + flat.V.row(b)).transpose();
     if (on_outer(a) && on_outer(b) &&
-        (std::abs(mid.x()) < tol || std::abs(mid.y()) < tol || std::abs(mid.x() - w) < tol || std::abs(mid.y() - h) < tol))
+        (std::abs(mid.x()) < tol || std::abs(mid.y()) < tol || std::abs(mid.x() - w) < tol ||
+         std::abs(mid.y() - h) < tol))
       continue;
     bool twin = false;
     for (const auto& [c, d] : border)
-      if (std::make_pair(c, d) != std::make_pair(a, b) && ((same(a, c) && same(b, d)) || (same(a, d) && same(b, c)))) {
+      if (std::make_pair(c, d) != std::make_pair(a, b) &&
+          ((same(a, c) && same(b, d)) || (same(a, d) && same(b, c)))) {
         twin = true;
         break;
       }
@@ -124,7 +131,8 @@ TEST(TrimmedSurface, FourPatchesMeetAtACrossing) {
       rectangle_pattern(100, 100, {{{0, 61}, {100, 61}}, {{37, 0}, {37, 100}}}), {11, 11});
   const TrimmedSurface s = trimmed_surface(m.fine, m.fine.V);
   std::vector<double> areas = patch_areas(m.fine, s), expected;
-  for (double a : {37.0 * 61, 63.0 * 61, 37.0 * 39, 63.0 * 39}) expected.push_back(mesh_area(m.fine, a));
+  for (double a : {37.0 * 61, 63.0 * 61, 37.0 * 39, 63.0 * 39})
+    expected.push_back(mesh_area(m.fine, a));
   std::sort(areas.begin(), areas.end());
   std::sort(expected.begin(), expected.end());
   ASSERT_EQ(areas.size(), 4u);
@@ -135,7 +143,9 @@ TEST(TrimmedSurface, ThreeSlantedCreasesMeetAtAJunction) {
   // Three straight creases from (50, 50) cut cells on their way; straight lines snap to themselves,
   // so each patch has its polygon's area.
   const DogModel m = build_dog_model(
-      rectangle_pattern(100, 100, {{{0, 20}, {50, 50}}, {{50, 50}, {100, 30}}, {{50, 50}, {70, 100}}}), {21, 21});
+      rectangle_pattern(100, 100,
+                        {{{0, 20}, {50, 50}}, {{50, 50}, {100, 30}}, {{50, 50}, {70, 100}}}),
+      {21, 21});
   ASSERT_EQ(m.fine.patch_count(), 3);
   ASSERT_FALSE(m.fine.stitching.junctions.empty());
   EXPECT_FALSE(m.fine.quad_pieces.empty());
@@ -158,20 +168,24 @@ TEST(TrimmedSurface, ThreeSlantedCreasesMeetAtAJunction) {
 
 TEST(TrimmedSurface, AHoleIsLeftOpen) {
   CreasePattern p = rectangle_pattern(100, 100);
-  p.sheet.holes.push_back({{50, 30}, {30, 50}, {50, 70}, {70, 50}});  // clockwise, vertices on grid lines
+  p.sheet.holes.push_back(
+      {{50, 30}, {30, 50}, {50, 70}, {70, 50}});  // clockwise, vertices on grid lines
   const DogModel m = build_dog_model(p, {11, 11});
   const TrimmedSurface s = trimmed_surface(m.fine, m.fine.V);
   EXPECT_NEAR(surface_area(s), mesh_area(m.fine, 100 * 100 - 800), 1e-9);
   for (int t = 0; t < s.triangle_count(); ++t) {
-    const Eigen::Vector3d c = (s.V.row(s.T(t, 0)) + s.V.row(s.T(t, 1)) + s.V.row(s.T(t, 2))).transpose() / 3;
-    EXPECT_GT(std::abs(c.x() - 5) + std::abs(c.y() - 5), 2 - 1e-9) << "triangle " << t << " lies in the hole";
+    const Eigen::Vector3d c =
+        (s.V.row(s.T(t, 0)) + s.V.row(s.T(t, 1)) + s.V.row(s.T(t, 2))).transpose() / 3;
+    EXPECT_GT(std::abs(c.x() - 5) + std::abs(c.y() - 5), 2 - 1e-9)
+        << "triangle " << t << " lies in the hole";
   }
 }
 
 TEST(TrimmedSurface, SeamsCloseOnABentCurvedCrease) {
   // A circular crease around the centre: its cells are cut in every direction.
   Polyline2 circle;
-  for (int k = 0; k < 64; ++k) circle.push_back({50 + 30 * std::cos(k * M_PI / 32), 50 + 30 * std::sin(k * M_PI / 32)});
+  for (int k = 0; k < 64; ++k)
+    circle.push_back({50 + 30 * std::cos(k * M_PI / 32), 50 + 30 * std::sin(k * M_PI / 32)});
   const DogModel m = build_dog_model(rectangle_pattern(100, 100, {circle}, {true}), {21, 21});
   const TrimmedSurface flat = trimmed_surface(m.fine, m.fine.V);
   EXPECT_NEAR(surface_area(flat), mesh_area(m.fine, 100 * 100), 1e-9);
@@ -191,7 +205,8 @@ TEST(TrimmedSurface, SeamsCloseOnABentCurvedCrease) {
       const Eigen::Vector3d p = DogMesh::position(X, point.copies[c]);
       bool found = false;
       for (int r = 0; r < s.vertex_count() && !found; ++r)
-        found = s.vertex_patch[r] == point.patches[c] && (s.V.row(r).transpose() - p).norm() < 1e-12;
+        found =
+            s.vertex_patch[r] == point.patches[c] && (s.V.row(r).transpose() - p).norm() < 1e-12;
       EXPECT_TRUE(found) << "a copy of crease point " << p.transpose();
       ++copies;
     }
@@ -214,14 +229,17 @@ TEST(TrimmedSurface, ArraysAreInterpolatedAndCellArraysFollowTheirQuad) {
   ASSERT_EQ(out.point.size(), 2u);
   ASSERT_EQ(out.cell.size(), 1u);
   for (int r = 0; r < s.vertex_count(); ++r) {
-    EXPECT_NEAR(out.point[0].values[r], s.V(r, 0), 1e-12);  // x is bilinear, so exactly interpolated
+    EXPECT_NEAR(out.point[0].values[r], s.V(r, 0),
+                1e-12);  // x is bilinear, so exactly interpolated
     EXPECT_EQ(out.point[1].values[r], s.vertex_patch[r]);
   }
   for (int t = 0; t < s.triangle_count(); ++t) {
     EXPECT_EQ(out.cell[0].values[t], s.triangle_quad[t]);
     // The triangle lies in its quad's cell (at rest).
-    const Eigen::Vector3d c = (s.V.row(s.T(t, 0)) + s.V.row(s.T(t, 1)) + s.V.row(s.T(t, 2))).transpose() / 3;
-    const Eigen::Vector3d lo = m.fine.V.row(m.fine.F(s.triangle_quad[t], 0)), hi = m.fine.V.row(m.fine.F(s.triangle_quad[t], 2));
+    const Eigen::Vector3d c =
+        (s.V.row(s.T(t, 0)) + s.V.row(s.T(t, 1)) + s.V.row(s.T(t, 2))).transpose() / 3;
+    const Eigen::Vector3d lo = m.fine.V.row(m.fine.F(s.triangle_quad[t], 0)),
+                          hi = m.fine.V.row(m.fine.F(s.triangle_quad[t], 2));
     EXPECT_TRUE(c.x() >= lo.x() && c.x() <= hi.x() && c.y() >= lo.y() && c.y() <= hi.y());
   }
 }

@@ -69,7 +69,8 @@ TEST(RunConfigJson, EveryKeyRoundTripsThroughRunJson) {
   // Every value differs from its default, so the comparison above could fail.
   const auto defaults = option_values(RunConfig());
   const auto values = option_values(changed);
-  for (size_t i = 0; i < values.size(); ++i) EXPECT_NE(values[i].second, defaults[i].second) << values[i].first;
+  for (size_t i = 0; i < values.size(); ++i)
+    EXPECT_NE(values[i].second, defaults[i].second) << values[i].first;
 }
 
 TEST(RunConfigJson, ListsOfConstraintsAndSwitchesRoundTrip) {
@@ -103,12 +104,13 @@ TEST(RunConfigJson, ListsOfConstraintsAndSwitchesRoundTrip) {
 // "preset" sets its options first; the keys of the file then change what it set.
 TEST(RunConfigJson, ThePresetIsAppliedBeforeTheOtherKeys) {
   RunConfig c;
-  apply_run_config(json::parse(R"({"preset": "thesis", "solver": {"polish_factorizations": 7}})"), "c.json", c);
+  apply_run_config(json::parse(R"({"preset": "thesis", "solver": {"polish_factorizations": 7}})"),
+                   "c.json", c);
   EXPECT_EQ(c.preset, Preset::kThesis);
   EXPECT_EQ(c.standard.stitching, Stitching::kSoft);
   EXPECT_EQ(c.standard.sqp.polish_factorizations, 7);
   EXPECT_FALSE(c.standard.converge);
-  EXPECT_EQ(c.standard.max_fold_bias, 1e14);  // the reference's escalation, up to 10^14
+  EXPECT_EQ(c.standard.max_fold_bias, 1e14);        // the reference's escalation, up to 10^14
   EXPECT_EQ(c.standard.sqp.projection_steps, 100);  // its unbudgeted last iteration as before
   RunConfig d;
   apply_run_config(json::parse(R"({"preset": "default"})"), "d.json", d);
@@ -139,22 +141,31 @@ TEST(RunConfigJson, BadValuesNameTheFileAndTheJsonPath) {
       {R"({"admm": {"gamma": 0}})", "c.json: $.admm.gamma"},
       {R"({"admm": {"p": -0.5}})", "c.json: $.admm.p: expected a number >= 0"},
       {R"({"admm": {"inner": 0}})", "c.json: $.admm.inner: expected an integer >= 1, got 0"},
-      {R"({"admm": {"sigma": 1}})", "c.json: $.admm.sigma: unknown key (known: rho, gamma, p, inner)"},
+      {R"({"admm": {"sigma": 1}})",
+       "c.json: $.admm.sigma: unknown key (known: rho, gamma, p, inner)"},
       {R"({"solver": {"armijo": 0.5}})", "c.json: $.solver.armijo: expected a number in (0, 0.5)"},
       {R"({"solver": {"max_steps": 1.5}})", "c.json: $.solver.max_steps: expected an integer"},
       {R"({"solver": {"folding": 1}})", "c.json: $.solver.folding: expected true or false"},
-      {R"({"patch_solver": {"backend": "lapack"}})", "c.json: $.patch_solver.backend: expected one of sqp, ceres"},
+      {R"({"patch_solver": {"backend": "lapack"}})",
+       "c.json: $.patch_solver.backend: expected one of sqp, ceres"},
       {R"({"weights": {"bending": -2}})", "c.json: $.weights.bending: expected a number >= 0"},
-      {R"({"scenario": "twist"})", "c.json: $.scenario: expected one of corners, fold, none, flatten"},
+      {R"({"scenario": "twist"})",
+       "c.json: $.scenario: expected one of corners, fold, none, flatten"},
       {R"({"angle": 200})", "c.json: $.angle: expected a number in [-180, 180]"},
       {R"({"positions": [{"vertex": 1}]})", "c.json: $.positions[0]: give exactly one of \"end\""},
-      {R"({"positions": [{"vertex": 1, "end": [1, 2]}]})", "c.json: $.positions[0].end: expected an array of 3"},
-      {R"({"switches": [{"iteration": 2, "mode": "fast"}]})", "c.json: $.switches[0].mode: unknown mode"},
-      {R"({"angles": [{"curve": 1, "id": "a", "end": 3}]})", "c.json: $.angles[0]: give exactly one of"},
-      {R"({"creases": [{"id": "a", "fold": "hill"}]})", "c.json: $.creases[0].fold: unknown assignment \"hill\""},
+      {R"({"positions": [{"vertex": 1, "end": [1, 2]}]})",
+       "c.json: $.positions[0].end: expected an array of 3"},
+      {R"({"switches": [{"iteration": 2, "mode": "fast"}]})",
+       "c.json: $.switches[0].mode: unknown mode"},
+      {R"({"angles": [{"curve": 1, "id": "a", "end": 3}]})",
+       "c.json: $.angles[0]: give exactly one of"},
+      {R"({"creases": [{"id": "a", "fold": "hill"}]})",
+       "c.json: $.creases[0].fold: unknown assignment \"hill\""},
       {R"({"creases": [{"id": "a"}]})", "c.json: $.creases[0]: give \"fold\""},
-      {R"({"creases": [{"curve": 2, "angle": -5}]})", "c.json: $.creases[0].angle: the fold angle must be from 0 to 180"},
-      {R"({"creases": [{"fold": "valley"}]})", "c.json: $.creases[0]: give exactly one of \"curve\""},
+      {R"({"creases": [{"curve": 2, "angle": -5}]})",
+       "c.json: $.creases[0].angle: the fold angle must be from 0 to 180"},
+      {R"({"creases": [{"fold": "valley"}]})",
+       "c.json: $.creases[0]: give exactly one of \"curve\""},
       {R"({"iterations": 0, "hold": 0})", "c.json: iterations + hold must be at least 1"},
       {R"([1, 2])", "c.json: $: expected an object"}};
   for (const auto& [text, message] : cases) {
@@ -175,11 +186,13 @@ TEST(RunConfigJson, ValuesSetInCodeAreCheckedByTheSameBounds) {
     validate_run_config(config, "c.json");
     ADD_FAILURE() << "rho 0 accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("c.json: $.admm.rho must be positive"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("c.json: $.admm.rho must be positive"), std::string::npos)
+        << e.what();
   }
   config = RunConfig();
   config.standard.sqp.rho_max = 10;  // below 1/epsilon
-  EXPECT_NE(config.standard.validate().find("rho_max must be at least 1/epsilon"), std::string::npos);
+  EXPECT_NE(config.standard.validate().find("rho_max must be at least 1/epsilon"),
+            std::string::npos);
   config = RunConfig();
   config.subsolvers.patch.max_penalty = 1;  // below the initial penalty
   EXPECT_NE(config.subsolvers.validate().find("max_penalty"), std::string::npos);

@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "base/csv.h"
 #include "base/errors.h"
 #include "base/statistics.h"
 #include "solver/experiments/case_rounds.h"
-#include "base/csv.h"
 #include "solver/experiments/tables.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
@@ -21,13 +21,16 @@ namespace {
 // Records which mode ran each iteration, in the order the iterations came.
 struct ModeLog : RunObserver {
   std::vector<std::pair<std::string, int>> order;  // (mode, iteration)
-  void on_iteration(const IterationReport& r, const Dofs&) override { order.push_back({r.mode, r.iteration}); }
+  void on_iteration(const IterationReport& r, const Dofs&) override {
+    order.push_back({r.mode, r.iteration});
+  }
 };
 
 TEST(CaseRounds, RoundsRunEveryModeOnceBeforeTheNextRound) {
   RunConfig config = test::short_run(4, 1);
   const std::string pattern = test::dataset("one_curve.svg");
-  const std::vector<Case> cases = {{pattern, "15x11", ModeKind::kStandard}, {pattern, "15x11", ModeKind::kSubsolvers}};
+  const std::vector<Case> cases = {{pattern, "15x11", ModeKind::kStandard},
+                                   {pattern, "15x11", ModeKind::kSubsolvers}};
   ModeLog log;
   std::vector<std::pair<std::string, int>> runs;  // (mode, round) as the runs began
   RoundsOptions options;
@@ -37,8 +40,9 @@ TEST(CaseRounds, RoundsRunEveryModeOnceBeforeTheNextRound) {
     return std::vector<RunObserver*>{&log};
   };
   const auto rows = run_rounds(cases, config, options);
-  const std::vector<std::pair<std::string, int>> expected = {{"standard", 0},   {"subsolvers", 0}, {"standard", 1},
-                                                             {"subsolvers", 1}, {"standard", 2},   {"subsolvers", 2}};
+  const std::vector<std::pair<std::string, int>> expected = {{"standard", 0}, {"subsolvers", 0},
+                                                             {"standard", 1}, {"subsolvers", 1},
+                                                             {"standard", 2}, {"subsolvers", 2}};
   EXPECT_EQ(runs, expected);
   // The iterations themselves came in that order: five per run, one run after another.
   ASSERT_EQ(log.order.size(), 6u * 5);
@@ -68,7 +72,8 @@ TEST(CaseRounds, AModeThatCannotRunIsSkippedAndTheOthersGoOn) {
   RunConfig config = test::short_run(3, 0);
   const std::string pattern = test::dataset("one_curve.svg");
   // Even resolutions have no nested coarse mesh: the coarse mode cannot run them.
-  const std::vector<Case> cases = {{pattern, "14x10", ModeKind::kCoarse}, {pattern, "14x10", ModeKind::kStandard}};
+  const std::vector<Case> cases = {{pattern, "14x10", ModeKind::kCoarse},
+                                   {pattern, "14x10", ModeKind::kStandard}};
   int coarse_runs = 0;
   RoundsOptions options;
   options.repeat = 2;
@@ -120,7 +125,8 @@ CaseResult timed_row(ModeKind mode, std::vector<double> round_ms) {
 }
 
 TEST(CaseRounds, PairedSpeedupIsTheMedianOfTheRoundsRatios) {
-  // Round ratios 4, 2.5 and 2: their median is 2.5, while the ratio of the medians is 200 / 100 = 2.
+  // Round ratios 4, 2.5 and 2: their median is 2.5, while the ratio of the medians is 200 / 100
+  // = 2.
   std::vector<CaseResult> rows = {timed_row(ModeKind::kStandard, {400, 100, 200}),
                                   timed_row(ModeKind::kTwoLevel, {100, 40, 100})};
   relate_to_standard(rows);

@@ -4,14 +4,14 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
 #include "solver/modes/admm_mode.h"
-#include "solver/terms/crease_geometry.h"
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
+#include "solver/terms/crease_geometry.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 
@@ -114,7 +114,9 @@ TEST(AdmmMode, ThreeRowsPerStitchingPair) {
 // gap grows about 2.4 times per iteration once the fold nears its end (four_corner_arcs 15x15 at 60
 // degrees: 0.11 at iteration 15, 5.2 at 20, 950 at 26), the divergence the thesis reports for
 // prox-JADMM.
-TEST(AdmmMode, VsadmmFollowsAngleConstraints) { test::expect_follows_angles("vsadmm", model()); }
+TEST(AdmmMode, VsadmmFollowsAngleConstraints) {
+  test::expect_follows_angles("vsadmm", model());
+}
 
 }  // namespace
 }  // namespace sdog

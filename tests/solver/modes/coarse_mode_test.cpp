@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
 #include "solver/modes/coarse_mode.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/modes/two_level_mode.h"
@@ -17,11 +17,14 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 
-RunConfig short_run() { return test::short_run(12, 3); }
+RunConfig short_run() {
+  return test::short_run(12, 3);
+}
 
 // The largest distance between a fine link vertex and its coarse twin.
 double link_distance(const Dofs& fine, const Dofs& coarse) {
@@ -47,7 +50,9 @@ CoarseRun run_coarse(const RunConfig& config) {
 
 // The angle targets reach the fine patches through their cross-patch angle blocks, and the coarse
 // mesh at the crease points both meshes share.
-TEST(CoarseMode, FollowsAngleConstraints) { test::expect_follows_angles("coarse", model()); }
+TEST(CoarseMode, FollowsAngleConstraints) {
+  test::expect_follows_angles("coarse", model());
+}
 
 TEST(CoarseMode, CarriesAngleConstraintsToTheCoarseTwins) {
   RunConfig config = test::short_run(20, 10);
@@ -89,7 +94,8 @@ TEST(CoarseMode, LinkConstraintsPullBothSides) {
   const CoarseRun uncoupled = run_coarse(config);
   ASSERT_FALSE(two_way.result.summary.failed());
   ASSERT_FALSE(uncoupled.result.summary.failed());
-  EXPECT_LT(link_distance(two_way.result.x, two_way.coarse), link_distance(uncoupled.result.x, uncoupled.coarse));
+  EXPECT_LT(link_distance(two_way.result.x, two_way.coarse),
+            link_distance(uncoupled.result.x, uncoupled.coarse));
   // One-way coupling leaves the coarse run alone: it is the standard solver on the coarse mesh.
   config.coarse.link_weight = 1;
   config.coarse.fine_to_coarse = false;
@@ -105,7 +111,8 @@ TEST(CoarseMode, LinkConstraintsPullBothSides) {
 // at 21x21 the margin is small, 43.2 against 60.1, and moved with rounding: 26.6 against 135 while
 // the coarse step factorised on two BLAS threads).
 TEST(CoarseMode, DefaultLinkWeightBeatsTheThesisValue) {
-  static const DogModel m31 = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {31, 31});
+  static const DogModel m31 =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {31, 31});
   RunConfig config = test::short_run(60, 10);
   auto run = [&](const RunConfig& c) { return test::run_mode("coarse", m31, c); };
   const test::RunResult by_default = run(config);
@@ -117,13 +124,14 @@ TEST(CoarseMode, DefaultLinkWeightBeatsTheThesisValue) {
   const Diagnostics& b = thesis.reports.back().diagnostics;
   EXPECT_LT(a.objective, 0.5 * b.objective);
   EXPECT_LT(a.stitch_gap_max, b.stitch_gap_max);
-  for (const auto& r : by_default.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+  for (const auto& r : by_default.reports)
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
 }
 
 // $.coarse.concurrent_coarse (default on): the next iteration's coarse step runs beside this
-// iteration's fine round (CoarseLevel::run_beside), with the results of the steps one after another,
-// bit for bit; every iteration but the first takes a step computed ahead. With link targets on the
-// coarse mesh (link weight > 0) nothing is computed ahead.
+// iteration's fine round (CoarseLevel::run_beside), with the results of the steps one after
+// another, bit for bit; every iteration but the first takes a step computed ahead. With link
+// targets on the coarse mesh (link weight > 0) nothing is computed ahead.
 TEST(CoarseMode, TheCoarseStepComputedAheadChangesNoResult) {
   auto run = [](RunConfig config, bool concurrent, int* taken_ahead) {
     config.coarse.concurrent_coarse = concurrent;
@@ -138,7 +146,8 @@ TEST(CoarseMode, TheCoarseStepComputedAheadChangesNoResult) {
   RunConfig config = short_run();
   ASSERT_TRUE(config.coarse.concurrent_coarse);  // the default
   int ahead_steps = 0, sequential_steps = 0;
-  const CoarseRun ahead = run(config, true, &ahead_steps), sequential = run(config, false, &sequential_steps);
+  const CoarseRun ahead = run(config, true, &ahead_steps),
+                  sequential = run(config, false, &sequential_steps);
   ASSERT_FALSE(ahead.result.summary.failed()) << ahead.result.summary.failure;
   EXPECT_EQ(ahead_steps, 14);
   EXPECT_EQ(sequential_steps, 0);
@@ -161,12 +170,14 @@ TEST(CoarseMode, SameResultWhateverTheThreadCount) {
 TEST(CoarseMode, NeedsTheCoarseMesh) {
   MeshOptions no_coarse;
   no_coarse.build_coarse = false;
-  const DogModel fine_only = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {20, 20}, no_coarse);
+  const DogModel fine_only = build_dog_model(
+      read_crease_pattern(test::dataset("four_corner_arcs.svg")), {20, 20}, no_coarse);
   RunConfig config = short_run();
   DogProblem problem(fine_only.fine, fine_only.fine_topology, config.weights);
   const Scenario scenario = make_scenario(config, fine_only.fine);
   for (ModeKind mode : {ModeKind::kCoarse, ModeKind::kTwoLevel})
-    EXPECT_THROW(make_mode(mode, problem, scenario, config, &fine_only), UsageError) << enum_name(mode);
+    EXPECT_THROW(make_mode(mode, problem, scenario, config, &fine_only), UsageError)
+        << enum_name(mode);
 }
 
 // A target on a fine vertex without a coarse twin is carried to the coarse mesh through the

@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "geometry/input/pattern_file.h"
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "solver/experiments/pace.h"
 #include "solver/session/session.h"
 #include "tests/solver/session_fixture.h"
@@ -17,17 +17,21 @@
 namespace sdog {
 namespace {
 
-const DogModel& model() { return test::session_model(); }
+const DogModel& model() {
+  return test::session_model();
+}
 
-Eigen::Vector3d vertex_of(const Dofs& x, int v) { return x.segment<3>(3 * v); }
+Eigen::Vector3d vertex_of(const Dofs& x, int v) {
+  return x.segment<3>(3 * v);
+}
 
 struct Followed {
   bool failed = false;
   bool converged = false;
   int iterations = 0;
   int partial_iterations = 0;  ///< that got only part of the way to the targets (continuation)
-  double distance = 0;       ///< of the dragged corner to its target at the end
-  double held_distance = 0;  ///< of the held corner to its target at the end
+  double distance = 0;         ///< of the dragged corner to its target at the end
+  double held_distance = 0;    ///< of the held corner to its target at the end
   double dog_max = 0;
   double stitch_gap_max = 0;
   double worst_dog_max = 0;  ///< over every iteration
@@ -73,7 +77,8 @@ Followed follow(const Eigen::Vector3d& move, bool converge, int max_iterations,
 // and converges; one SQP step per iteration does not get there in as many iterations.
 TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
   const Eigen::MatrixX3d& rest = model().fine.V;
-  const Eigen::Vector3d move = 0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
+  const Eigen::Vector3d move =
+      0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
   const Followed f = follow(move, true, 400);
   ASSERT_FALSE(f.failed);
   EXPECT_TRUE(f.converged) << "after " << f.iterations << " iterations";
@@ -93,9 +98,11 @@ TEST(Continuation, FollowsATargetSetFarAwayUntilConverged) {
 // tolerance, and every iteration still ends within it.
 TEST(Continuation, LooseSubstepsSaveFactorizationsAndEveryIterationEndsFeasible) {
   const Eigen::MatrixX3d& rest = model().fine.V;
-  const Eigen::Vector3d move = 0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
+  const Eigen::Vector3d move =
+      0.8 * (rest.row(0) - rest.row(rest.rows() - 1)).transpose() + Eigen::Vector3d(0, 0, 4);
   const double tolerance = RunConfig{}.standard.sqp.constraint_tolerance;
-  EXPECT_GT(RunConfig{}.standard.substep_constraint_tolerance, 100 * tolerance);  // the default is loose
+  EXPECT_GT(RunConfig{}.standard.substep_constraint_tolerance,
+            100 * tolerance);  // the default is loose
   const Followed loose = follow(move, true, 400);
   const Followed tight = follow(move, true, 400, tolerance);
   for (const Followed* f : {&loose, &tight}) {
@@ -131,7 +138,8 @@ TEST(Continuation, AnUnreachableTargetConvergesAsCloseAsTheSheetAllows) {
 TEST(Continuation, HeldIterationsThatCycleCountAsConverged) {
   SDOG_REQUIRE_SHARED();
   const DogModel m = build_dog_model(
-      read_crease_pattern(test::reference_patterns_dir() + "/parallel_curves_4.svg"), parse_resolution("43x31"));
+      read_crease_pattern(test::reference_patterns_dir() + "/parallel_curves_4.svg"),
+      parse_resolution("43x31"));
   const PaceResult r = run_pace(m, RunConfig{}, 1, 40);
   ASSERT_TRUE(r.failure.empty()) << r.failure;
   ASSERT_TRUE(r.time_to_shape_s.has_value()) << "no held iteration converged in " << r.iterations;

@@ -41,7 +41,8 @@ std::vector<StitchingCase> every_dataset_run() {
     for (ScenarioKind s : {ScenarioKind::kCorners, ScenarioKind::kFold})
       // Folded at 21x21, crossing_wave_pleats's four crossings cannot be stitched within the bar
       // (gap about 4e-4): the fold corpus test folds it at 41x41 and 61x61.
-      if (s != ScenarioKind::kFold || p.find("crossing_wave_pleats") == std::string::npos) cases.push_back({p, s});
+      if (s != ScenarioKind::kFold || p.find("crossing_wave_pleats") == std::string::npos)
+        cases.push_back({p, s});
   return cases;
 }
 
@@ -50,8 +51,8 @@ class ExactStitching : public testing::TestWithParam<StitchingCase> {};
 TEST_P(ExactStitching, HoldsAfterEveryIterationAndClosesAtTheEnd) {
   // diagonal_fold's crease runs through grid vertices at square resolutions (no fold sites).
   const bool diagonal = GetParam().pattern.find("diagonal_fold") != std::string::npos;
-  const DogModel model = build_dog_model(read_crease_pattern(GetParam().pattern), diagonal ? Resolution{21, 23}
-                                                                                           : Resolution{21, 21});
+  const DogModel model = build_dog_model(read_crease_pattern(GetParam().pattern),
+                                         diagonal ? Resolution{21, 23} : Resolution{21, 21});
   ASSERT_FALSE(model.fine.stitching.pairs.empty());
   RunConfig config = test::short_run(30, 5);
   config.scenario = GetParam().scenario;
@@ -72,12 +73,14 @@ TEST_P(ExactStitching, HoldsAfterEveryIterationAndClosesAtTheEnd) {
   EXPECT_NEAR(folded, rest, (junctions ? 0.05 : 0.01) * rest);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryDataset, ExactStitching, testing::ValuesIn(every_dataset_run()), case_name);
+INSTANTIATE_TEST_SUITE_P(EveryDataset, ExactStitching, testing::ValuesIn(every_dataset_run()),
+                         case_name);
 
 // The same drag with the thesis preset leaves the patches apart at the creases (the soft term
 // trades gap against bending), far above the exact bar.
 TEST(ExactStitching, TheThesisPresetStitchesSoftly) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   const test::RunResult exact = test::run_mode("standard", model, test::short_run(30, 5));
   const test::RunResult soft = test::run_mode("standard", model, test::thesis_run(30, 5));
   ASSERT_FALSE(exact.summary.failed()) << exact.summary.failure;
@@ -89,7 +92,8 @@ TEST(ExactStitching, TheThesisPresetStitchesSoftly) {
 // The last iteration's polish stops at its factorisation budget: each factorisation more in the
 // budget is one more in the last iteration, until the polish needs no more.
 TEST(PolishBudget, BoundsTheLastIterationsFactorizations) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   auto last_factorizations = [&](int budget) {
     RunConfig config = test::short_run(20, 0);
     config.standard.sqp.polish_factorizations = budget;
@@ -108,7 +112,8 @@ TEST(PolishBudget, BoundsTheLastIterationsFactorizations) {
 // steps; with soft stitching, or with the fraction set, it does (the ordinary iterations only: the
 // last iteration's projection may always finish with local steps).
 TEST(LocalRestoration, TheStandardModeWithExactStitchingTakesNone) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   auto local_steps = [&](const RunConfig& config) {
     const test::RunResult r = test::run_mode("standard", model, config);
     EXPECT_FALSE(r.summary.failed()) << r.summary.failure;

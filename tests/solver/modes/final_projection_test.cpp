@@ -6,9 +6,9 @@
 
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "solver/terms/crease_geometry.h"
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/final_projection.h"
+#include "solver/problem/diagnostics.h"
+#include "solver/terms/crease_geometry.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 
@@ -16,7 +16,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 
@@ -125,7 +126,8 @@ Finish after(const char* name, RunConfig config, int k) {
 }
 
 // The last iteration of a run in the patch modes is an ordinary iteration and the projection: the
-// same objective and folds as the same iteration in a longer run, and DOG below the final tolerance.
+// same objective and folds as the same iteration in a longer run, and DOG below the final
+// tolerance.
 TEST(FinalProjection, TheLastIterationOfThePatchModesKeepsTheResult) {
   RunConfig config = test::short_run(60, 20);
   config.twolevel.standard_finish = 0;  // twolevel's own last iteration, not its standard finish
@@ -136,7 +138,8 @@ TEST(FinalProjection, TheLastIterationOfThePatchModesKeepsTheResult) {
     const Finish ordinary = after(name, longer, 80);
     EXPECT_LT(last.diagnostics.dog_max, config.standard.sqp.final_constraint_tolerance) << name;
     EXPECT_GT(ordinary.diagnostics.dog_max, config.standard.sqp.final_constraint_tolerance) << name;
-    EXPECT_NEAR(last.diagnostics.objective, ordinary.diagnostics.objective, 1e-2 * ordinary.diagnostics.objective)
+    EXPECT_NEAR(last.diagnostics.objective, ordinary.diagnostics.objective,
+                1e-2 * ordinary.diagnostics.objective)
         << name;
     EXPECT_EQ(last.unfolded, ordinary.unfolded) << name;
   }

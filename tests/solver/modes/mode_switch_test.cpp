@@ -1,6 +1,6 @@
-// Switching modes in the middle of a run (switch_mode, the switches of a RunSetup): every mode takes
-// over the state another one left without a jump and keeps the DOG constraints; the coarse modes
-// derive their coarse mesh from the state they take over.
+// Switching modes in the middle of a run (switch_mode, the switches of a RunSetup): every mode
+// takes over the state another one left without a jump and keeps the DOG constraints; the coarse
+// modes derive their coarse mesh from the state they take over.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -15,7 +15,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 
@@ -33,7 +34,8 @@ SwitchedRun run_with_switches(const RunConfig& config, ModeKind first) {
     std::vector<double>* step;
     void on_iteration(const IterationReport& r, const Dofs& x) override {
       test::Recorder::on_iteration(r, x);
-      step->push_back((x - *previous).lpNorm<Eigen::Infinity>());  // coordinates: a bound on vertex moves
+      step->push_back(
+          (x - *previous).lpNorm<Eigen::Infinity>());  // coordinates: a bound on vertex moves
       *previous = x;
     }
   } recorder;
@@ -50,8 +52,9 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   RunConfig config = test::short_run(100, 30);
   // The step sizes are compared with the standard mode's one step per iteration of the drag.
   config.standard.converge = false;
-  config.switches = {{16, ModeKind::kTwoLevel}, {31, ModeKind::kCoarse},    {46, ModeKind::kSubsolvers},
-                     {61, ModeKind::kVsAdmm},   {71, ModeKind::kJAdmm},     {76, ModeKind::kProxJAdmm},
+  config.switches = {{16, ModeKind::kTwoLevel},   {31, ModeKind::kCoarse},
+                     {46, ModeKind::kSubsolvers}, {61, ModeKind::kVsAdmm},
+                     {71, ModeKind::kJAdmm},      {76, ModeKind::kProxJAdmm},
                      {81, ModeKind::kStandard}};
   const SwitchedRun s = run_with_switches(config, ModeKind::kStandard);
   ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
@@ -61,7 +64,8 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   std::string current = "standard";
   size_t next = 0;
   for (int k = 1; k <= 130; ++k) {
-    if (next < config.switches.size() && config.switches[next].iteration == k) current = enum_name(config.switches[next++].mode);
+    if (next < config.switches.size() && config.switches[next].iteration == k)
+      current = enum_name(config.switches[next++].mode);
     expected_mode[k] = current;
   }
   for (const auto& r : s.result.reports) {
@@ -74,11 +78,12 @@ TEST(ModeSwitch, EveryModeTakesOverWithoutAJump) {
   for (int k = 2; k <= 15; ++k) typical = std::max(typical, s.step[k - 1]);
   for (const ModeSwitch& sw : config.switches)
     EXPECT_LT(s.step[sw.iteration - 1], 4 * typical)
-        << "iteration " << sw.iteration << " (" << enum_name(sw.mode) << " takes over): " << s.step[sw.iteration - 1]
-        << " against " << typical;
+        << "iteration " << sw.iteration << " (" << enum_name(sw.mode)
+        << " takes over): " << s.step[sw.iteration - 1] << " against " << typical;
 
   // The standard mode's last iteration polishes the constraints as in a run of its own. (It does
-  // not refold creases the patch modes left unfolded: see StandardKeepsTheConstraintsWhenItCannotRefold.)
+  // not refold creases the patch modes left unfolded: see
+  // StandardKeepsTheConstraintsWhenItCannotRefold.)
   EXPECT_LT(s.result.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_TRUE(std::isfinite(s.result.reports.back().diagnostics.terms[kBending]));
 }
@@ -94,7 +99,8 @@ TEST(ModeSwitch, StandardRefoldsASheetHandedOverUnfolded) {
   ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
   const auto& reports = s.result.reports;
   ASSERT_EQ(reports.size(), 35u);
-  ASSERT_FALSE(reports[8].step.folded) << "the case this test is about: a sheet handed over unfolded";
+  ASSERT_FALSE(reports[8].step.folded)
+      << "the case this test is about: a sheet handed over unfolded";
   EXPECT_GT(reports[9].step.work.fold_retries, 0);
   int folded = 0;
   for (size_t k = 9; k < reports.size(); ++k) {
@@ -120,7 +126,8 @@ TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
   config.standard.converge = false;
   config.standard.max_fold_bias = 1e14;
   config.switches = {{10, ModeKind::kStandard}};
-  config.twolevel.standard_finish = 0;  // two-level iterations up to the switch (a finish would start at 6)
+  config.twolevel.standard_finish =
+      0;  // two-level iterations up to the switch (a finish would start at 6)
   const SwitchedRun s = run_with_switches(config, ModeKind::kTwoLevel);
   ASSERT_FALSE(s.result.summary.failed()) << s.result.summary.failure;
   const auto& reports = s.result.reports;
@@ -135,13 +142,14 @@ TEST(ModeSwitch, StandardKeepsTheConstraintsWhenItCannotRefold) {
     if (r.step.folded || r.step.work.fold_retries == 0) continue;
     ++exhausted;
     // The objective is at the base fold-bias weight again: of the order of the handed-over sheet's.
-    EXPECT_LT(r.diagnostics.objective, 10 * before.diagnostics.objective) << "iteration " << r.iteration;
+    EXPECT_LT(r.diagnostics.objective, 10 * before.diagnostics.objective)
+        << "iteration " << r.iteration;
   }
   EXPECT_GT(exhausted, 0) << "no iteration exhausted the escalation: the test no longer covers it";
 }
 
-// The coarse modes derive the coarse mesh from the state they take over: a switch into twolevel at a
-// deformed state continues smoothly, and a coarse run can start from a given state (flatten).
+// The coarse modes derive the coarse mesh from the state they take over: a switch into twolevel at
+// a deformed state continues smoothly, and a coarse run can start from a given state (flatten).
 TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
   RunConfig config = test::short_run(60, 10);
   config.standard.converge = false;  // as above
@@ -153,14 +161,16 @@ TEST(ModeSwitch, CoarseModesStartFromTheStateTheyTakeOver) {
   double before = 0;
   for (int k = 30; k <= 40; ++k) before = std::max(before, s.step[k - 1]);
   EXPECT_LT(s.step[40], 3 * before) << s.step[40] << " against " << before;
-  for (const auto& r : s.result.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+  for (const auto& r : s.result.reports)
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
 
   RunConfig flatten = test::short_run(8, 2);
   flatten.scenario = ScenarioKind::kFlatten;
   flatten.fold_angle = 30;
   const test::RunResult r = test::run_mode("coarse", model(), flatten);
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
-  for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+  for (const auto& rep : r.reports)
+    EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
 }
 
 }  // namespace

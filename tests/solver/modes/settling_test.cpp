@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "geometry/input/pattern_file.h"
-#include "geometry/pattern/crease_pattern.h"
 #include "geometry/mesh/dog_model.h"
+#include "geometry/pattern/crease_pattern.h"
 #include "solver/experiments/pace.h"
 #include "solver/modes/settling_plan.h"
 #include "solver/session/session.h"
@@ -40,8 +40,9 @@ void expect_converged_and_folded(const PaceResult& r, const std::string& name) {
 // not settle (the same objective and factorisations with settling on or off).
 TEST(Settling, KeepsTheLowerOfTheDragsFoldAndTheStraightFold) {
   SDOG_REQUIRE_SHARED();
-  const DogModel m = build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/1_curve.svg"),
-                                     parse_resolution("43x31"));
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::reference_patterns_dir() + "/1_curve.svg"),
+                      parse_resolution("43x31"));
   const PaceResult drag = run_pace(m, settling(false), 50, 200);
   const PaceResult settled = run_pace(m, settling(true), 50, 200);
   const PaceResult straight = run_pace(m, settling(false), 1, 200);
@@ -55,8 +56,10 @@ TEST(Settling, KeepsTheLowerOfTheDragsFoldAndTheStraightFold) {
   // The comparison is made at the final constraint tolerance, as the run ends: within 1e-4 of the
   // lower state's objective (the straight fold finished inside the drag's run), far closer than
   // the two states are.
-  EXPECT_NEAR(settled.objective, std::min(drag.objective, straight.objective), 1e-4 * straight.objective);
-  EXPECT_GT(settled.factorizations, drag.factorizations) << "the straight fold took no factorisation";
+  EXPECT_NEAR(settled.objective, std::min(drag.objective, straight.objective),
+              1e-4 * straight.objective);
+  EXPECT_GT(settled.factorizations, drag.factorizations)
+      << "the straight fold took no factorisation";
   EXPECT_LE(settled.positions, 2 * drag.positions);
   EXPECT_EQ(straight_settling.objective, straight.objective);
   EXPECT_EQ(straight_settling.factorizations, straight.factorizations);
@@ -111,13 +114,18 @@ TEST(Settling, TheStudioSettlesFromTheSessionsStart) {
   ASSERT_TRUE(settled.converged);
   ASSERT_TRUE(own.converged);
   ASSERT_TRUE(straight.converged);
-  const auto count = [](const Dragged& d, const char* s) { return std::count(d.settling.begin(), d.settling.end(), s); };
+  const auto count = [](const Dragged& d, const char* s) {
+    return std::count(d.settling.begin(), d.settling.end(), s);
+  };
   EXPECT_GE(count(settled, settling_stage::kRunning), 1);
   EXPECT_EQ(count(settled, settling_stage::kKept) + count(settled, settling_stage::kReplaced), 1);
-  EXPECT_TRUE(settled.settling.back() == settling_stage::kKept || settled.settling.back() == settling_stage::kReplaced)
+  EXPECT_TRUE(settled.settling.back() == settling_stage::kKept ||
+              settled.settling.back() == settling_stage::kReplaced)
       << "the iteration that settles reports the shape converged";
   for (const Dragged* d : {&own, &straight})
-    EXPECT_EQ(count(*d, settling_stage::kRunning) + count(*d, settling_stage::kKept) + count(*d, settling_stage::kReplaced), 0);
+    EXPECT_EQ(count(*d, settling_stage::kRunning) + count(*d, settling_stage::kKept) +
+                  count(*d, settling_stage::kReplaced),
+              0);
   // The three moves and the move at once reach different folds; the session ends on the lower
   // one (moved by the projection to the final constraint tolerance, far less than the folds
   // lie apart).
@@ -126,7 +134,8 @@ TEST(Settling, TheStudioSettlesFromTheSessionsStart) {
   const Dragged& lower = straight.objective < own.objective ? straight : own;
   EXPECT_LT((settled.x - lower.x).lpNorm<Eigen::Infinity>(), 0.2 * apart);
   EXPECT_LT(settled.objective, std::max(own.objective, straight.objective));
-  EXPECT_LT((settled.corner - own.corner).norm(), 0.5) << "the corner stays at the last mouse position";
+  EXPECT_LT((settled.corner - own.corner).norm(), 0.5)
+      << "the corner stays at the last mouse position";
 }
 
 }  // namespace

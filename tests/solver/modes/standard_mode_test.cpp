@@ -7,13 +7,13 @@
 
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
 #include "solver/modes/standard_mode.h"
-#include "solver/sqp/sqp_solver.h"
 #include "solver/problem/crease_angles.h"
+#include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
 #include "solver/run/run_config.h"
+#include "solver/sqp/sqp_solver.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 
@@ -23,7 +23,9 @@ namespace {
 using test::Recorder;
 using test::RunResult;
 
-RunResult run(const DogModel& model, const RunConfig& config) { return test::run_mode("standard", model, config); }
+RunResult run(const DogModel& model, const RunConfig& config) {
+  return test::run_mode("standard", model, config);
+}
 
 // The bars of a run: DOG constraints below 1e-4 after every iteration and 1e-6 at the end,
 // folded at the end.
@@ -43,7 +45,8 @@ void expect_constraint_bars(const RunResult& r, int iterations) {
 }
 
 TEST(StandardMode, CornersProtocolOnAProjectPattern) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config = test::thesis_config();
   config.iterations = 80;
   config.hold = 20;
@@ -64,8 +67,10 @@ TEST(StandardMode, CornersProtocolOnAProjectPattern) {
 // finishes it. Here the polish is starved (no exact-Hessian
 // steps, two restoration steps) so that it must stop short on a small case.
 TEST(StandardMode, AShortPolishIsFinishedByTheProjection) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
-  RunConfig config = test::thesis_run(25, 5);  // the last iterations are held: comparable objectives
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  RunConfig config =
+      test::thesis_run(25, 5);  // the last iterations are held: comparable objectives
   config.standard.sqp.polish_steps = 0;
   config.standard.sqp.max_restoration_steps = 1;
   const RunResult r = run(model, config);
@@ -77,11 +82,13 @@ TEST(StandardMode, AShortPolishIsFinishedByTheProjection) {
   EXPECT_LT(last.diagnostics.dog_max, final_tolerance);
   EXPECT_GT(last.step.work.restoration_steps, 2);  // more than the polish's own two
   EXPECT_TRUE(last.step.folded);
-  EXPECT_NEAR(last.diagnostics.objective, r.reports[28].diagnostics.objective, 0.02 * r.reports[28].diagnostics.objective);
+  EXPECT_NEAR(last.diagnostics.objective, r.reports[28].diagnostics.objective,
+              0.02 * r.reports[28].diagnostics.objective);
 }
 
 TEST(StandardMode, FoldScenarioReachesTheDihedralAngle) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config = test::thesis_config();
   config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
@@ -103,7 +110,8 @@ TEST(StandardMode, FoldScenarioReachesTheDihedralAngle) {
 }
 
 TEST(StandardMode, MountainIsTheMirrorImageOfValley) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
   config.iterations = 15;
@@ -126,7 +134,8 @@ TEST(StandardMode, MountainIsTheMirrorImageOfValley) {
 }
 
 TEST(StandardMode, NonFiniteTargetsFailAndRollBack) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   Scenario scenario = make_scenario(config, model.fine);
   ASSERT_FALSE(scenario.positions.empty());
@@ -149,7 +158,8 @@ TEST(StandardMode, NonFiniteTargetsFailAndRollBack) {
 // rho and shift, fail in a row) is taken back and retried with a shorter step: the run goes on,
 // ends converged and folded the drawn way, and counts the recovered passes.
 TEST(StandardMode, AFailedFactorizationIsRecovered) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
@@ -180,7 +190,8 @@ TEST(StandardMode, AFailedFactorizationIsRecovered) {
 }
 
 TEST(StandardMode, RepeatedRunsAreIdentical) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {15, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {15, 15});
   RunConfig config;
   config.iterations = 20;
   config.hold = 5;

@@ -73,7 +73,8 @@ TEST(HeldProgress, ConvergesAfterFiveHeldIterationsWithoutProgress) {
   held.reset();
   EXPECT_TRUE(held.lowers(98.95)) << "moved targets start the count again";
   EXPECT_TRUE(held.lowers(0.5)) << "a large decrease is progress";
-  for (int k = 1; k < HeldProgress::kHeldWithoutProgress; ++k) EXPECT_TRUE(held.lowers(0.4995)) << k;
+  for (int k = 1; k < HeldProgress::kHeldWithoutProgress; ++k)
+    EXPECT_TRUE(held.lowers(0.4995)) << k;
   EXPECT_FALSE(held.lowers(0.4995)) << "below 1 the margin is absolute (1e-3)";
 }
 
@@ -108,12 +109,16 @@ TEST(SettlingPlan, SettlesAfterASecondGoalOrFromAGivenOriginElsewhere) {
 
 TEST(SettlingPlan, TheStraightFoldWinsWhenItIsFoldedAndAgreesBetterOrIsLower) {
   const SettledFold run{true, 2, 10.0};
-  EXPECT_FALSE(straight_fold_wins(run, {false, 0, 1.0}, 0.01)) << "an unfolded straight fold never wins";
-  EXPECT_TRUE(straight_fold_wins(run, {true, 1, 20.0}, 0.01)) << "fewer sites against their targets";
+  EXPECT_FALSE(straight_fold_wins(run, {false, 0, 1.0}, 0.01))
+      << "an unfolded straight fold never wins";
+  EXPECT_TRUE(straight_fold_wins(run, {true, 1, 20.0}, 0.01))
+      << "fewer sites against their targets";
   EXPECT_FALSE(straight_fold_wins(run, {true, 3, 1.0}, 0.01)) << "more sites against their targets";
-  EXPECT_TRUE(straight_fold_wins(run, {true, 2, 9.9}, 0.01)) << "as many, lower by more than the margin";
+  EXPECT_TRUE(straight_fold_wins(run, {true, 2, 9.9}, 0.01))
+      << "as many, lower by more than the margin";
   EXPECT_FALSE(straight_fold_wins(run, {true, 2, 9.995}, 0.01)) << "within the margin";
-  EXPECT_TRUE(straight_fold_wins({false, 2, 1.0}, {true, 2, 20.0}, 0.01)) << "the run's own fold is unfolded";
+  EXPECT_TRUE(straight_fold_wins({false, 2, 1.0}, {true, 2, 20.0}, 0.01))
+      << "the run's own fold is unfolded";
 }
 
 }  // namespace

@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
-#include "solver/problem/diagnostics.h"
 #include "solver/modes/mode_factory.h"
+#include "solver/problem/diagnostics.h"
 #include "solver/run/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
@@ -23,7 +23,8 @@ Result run_subsolvers(const DogModel& model, const RunConfig& config, int thread
 }
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {15, 15});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {15, 15});
   return m;
 }
 
@@ -35,7 +36,8 @@ TEST(SubsolversMode, KeepsTheDogConstraintsAndReportsEveryPatch) {
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
   // Block Jacobi lags behind a fast drag (the thesis's finding); while the targets are held the
   // dragged corner keeps catching up.
-  EXPECT_LT(r.reports.back().diagnostics.terms[kPositions], 0.9 * r.reports[19].diagnostics.terms[kPositions]);
+  EXPECT_LT(r.reports.back().diagnostics.terms[kPositions],
+            0.9 * r.reports[19].diagnostics.terms[kPositions]);
 }
 
 TEST(SubsolversMode, CeresBackendKeepsTheDogConstraints) {
@@ -45,7 +47,8 @@ TEST(SubsolversMode, CeresBackendKeepsTheDogConstraints) {
   config.subsolvers.backend = PatchBackend::kCeres;
   const Result r = run_subsolvers(model(), config, 2);
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
-  for (const auto& rep : r.reports) EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
+  for (const auto& rep : r.reports)
+    EXPECT_LT(rep.diagnostics.dog_max, 1e-4) << "iteration " << rep.iteration;
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-6);
   EXPECT_GT(r.reports.back().diagnostics.terms[kBending], 1e-3);  // it moved
 }
@@ -59,7 +62,8 @@ TEST(SubsolversMode, StitchingTargetsPullThePatchesTogether) {
   const Result without = run_subsolvers(model(), config, 2);
   ASSERT_FALSE(with.summary.failed());
   ASSERT_FALSE(without.summary.failed());
-  EXPECT_LT(with.reports.back().diagnostics.stitch_gap_max, 0.5 * without.reports.back().diagnostics.stitch_gap_max);
+  EXPECT_LT(with.reports.back().diagnostics.stitch_gap_max,
+            0.5 * without.reports.back().diagnostics.stitch_gap_max);
 }
 
 TEST(SubsolversMode, SameResultWhateverTheThreadCount) {
@@ -91,7 +95,9 @@ TEST(SubsolversMode, ColourSweepKeepsTheGuarantees) {
   EXPECT_NE(config.subsolvers.validate(), "");
 }
 
-TEST(SubsolversMode, FollowsAngleConstraints) { test::expect_follows_angles("subsolvers", model()); }
+TEST(SubsolversMode, FollowsAngleConstraints) {
+  test::expect_follows_angles("subsolvers", model());
+}
 
 // With the fold bias kept across patches and every one-sided stitching target weighted like the
 // whole stitching term, the standard solution stays put (with the thesis's half weight the gap

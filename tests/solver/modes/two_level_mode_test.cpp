@@ -11,9 +11,9 @@
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
 #include "solver/modes/mode_factory.h"
-#include "solver/run/run.h"
 #include "solver/modes/subsolvers_mode.h"
 #include "solver/modes/two_level_mode.h"
+#include "solver/run/run.h"
 #include "tests/solver/run_recorder.h"
 #include "tests/test_support.h"
 
@@ -21,7 +21,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 
@@ -36,14 +37,17 @@ test::RunResult run(const std::string& mode, const RunConfig& config, int thread
   return test::run_mode(mode, model(), config);
 }
 
-TEST(TwoLevelMode, FollowsAngleConstraints) { test::expect_follows_angles("twolevel", model()); }
+TEST(TwoLevelMode, FollowsAngleConstraints) {
+  test::expect_follows_angles("twolevel", model());
+}
 
 TEST(TwoLevelMode, KeepsTheFineDogConstraintsAndReportsEveryPatch) {
   const test::RunResult r = run("twolevel", no_finish(test::short_run(12, 3)), 2);
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   test::expect_dog_and_patch_reports(r, model().fine.patch_count());
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-5);
-  EXPECT_GT(r.reports.back().step.work.factorizations, model().fine.patch_count());  // the coarse step's too
+  EXPECT_GT(r.reports.back().step.work.factorizations,
+            model().fine.patch_count());  // the coarse step's too
 }
 
 // Block Jacobi hands the drag on by one patch per iteration: the dragged corner's patch tears away
@@ -65,26 +69,29 @@ TEST(TwoLevelMode, TheCoarseCorrectionKeepsUpWithADrag) {
 // the earlier default) the correction fed the fine motion back to the fine mesh and the run
 // diverged after about 40 iterations (1_curve 31x21: 2.0 at iteration 26, 101 at 300).
 TEST(TwoLevelMode, FlattensAFoldedSheet) {
-  static const DogModel curve = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {31, 21});
+  static const DogModel curve =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {31, 21});
   RunConfig config = no_finish(RunConfig());
   config.scenario = ScenarioKind::kFlatten;
   config.iterations = 0;
   config.hold = 150;
-  if (const char* w = std::getenv("SDOG_TEST_TWOLEVEL_LINK")) config.twolevel.link_weight = std::atof(w);
+  if (const char* w = std::getenv("SDOG_TEST_TWOLEVEL_LINK"))
+    config.twolevel.link_weight = std::atof(w);
   const test::RunResult r = test::run_mode("twolevel", curve, config);
   ASSERT_FALSE(r.summary.failed()) << r.summary.failure;
   const double early = r.reports[19].diagnostics.objective;
   double worst = 0;
-  for (size_t k = 20; k < r.reports.size(); ++k) worst = std::max(worst, r.reports[k].diagnostics.objective);
+  for (size_t k = 20; k < r.reports.size(); ++k)
+    worst = std::max(worst, r.reports[k].diagnostics.objective);
   EXPECT_LT(worst, 1.1 * early);
   EXPECT_LT(r.reports.back().diagnostics.objective, 0.5 * r.reports.front().diagnostics.objective);
   EXPECT_LT(r.reports.back().diagnostics.dog_max, 1e-4);
 }
 
-// $.twolevel.fold_sharpness (default 100): a softer fold bias in the coarse step and the patches. At the
-// standard's k = 1000 the correction tips fine fold sites across the crease's osculating plane,
-// where the tanh has no slope left and the patch rounds cannot bring them back; at k = 100 they
-// refold. The run's objective still measures the fold bias with k = 1000.
+// $.twolevel.fold_sharpness (default 100): a softer fold bias in the coarse step and the patches.
+// At the standard's k = 1000 the correction tips fine fold sites across the crease's osculating
+// plane, where the tanh has no slope left and the patch rounds cannot bring them back; at k = 100
+// they refold. The run's objective still measures the fold bias with k = 1000.
 TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
   RunConfig config = no_finish(test::short_run(60, 20));
   ASSERT_EQ(config.twolevel.fold_sharpness, 100);  // the default
@@ -97,7 +104,8 @@ TEST(TwoLevelMode, SofterFoldBiasRefoldsTheSites) {
   const Diagnostics& b = sharp.reports.back().diagnostics;
   EXPECT_LT(a.terms[kFoldBias], 0.5 * b.terms[kFoldBias]);
   EXPECT_LT(a.objective, 0.5 * b.objective);
-  for (const auto& r : soft.reports) EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
+  for (const auto& r : soft.reports)
+    EXPECT_LT(r.diagnostics.dog_max, 1e-4) << "iteration " << r.iteration;
   EXPECT_LT(a.dog_max, 1e-6);
   config.twolevel.fold_sharpness = 0;
   EXPECT_FALSE(config.twolevel.validate().empty());
@@ -158,7 +166,8 @@ TEST(TwoLevelMode, TheCoarseStepComputedAheadChangesNoResult) {
   }
   // With the standard finish (its last 10 of 18 iterations): ahead up to the finish only.
   config.twolevel.standard_finish = 10;
-  const SteppedRun finished = run_stepwise(config, true), finished_sequential = run_stepwise(config, false);
+  const SteppedRun finished = run_stepwise(config, true),
+                   finished_sequential = run_stepwise(config, false);
   EXPECT_EQ(finished.taken_ahead, 7);
   EXPECT_TRUE(finished.fine.back() == finished_sequential.fine.back());
   // With link targets the coarse step reads the fine state: nothing is computed ahead.
@@ -190,21 +199,23 @@ TEST(TwoLevelMode, ACoarseStepEveryOtherIteration) {
   const test::RunResult jacobi = run("subsolvers", config, 2);
   ASSERT_FALSE(every2.summary.failed()) << every2.summary.failure;
   EXPECT_TRUE(every2.reports.back().diagnostics.dog_max < 1e-5);
-  EXPECT_LT(every2.reports.back().diagnostics.stitch_gap_max, 0.5 * jacobi.reports.back().diagnostics.stitch_gap_max);
+  EXPECT_LT(every2.reports.back().diagnostics.stitch_gap_max,
+            0.5 * jacobi.reports.back().diagnostics.stitch_gap_max);
 }
 
-// The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a run are
-// standard iterations on the fine sheet (no patch solves, the coarse mesh stays), the last one an
-// ordinary iteration and the projection. Held longer than block Jacobi can settle, the finish ends
-// nearer the standard mode's objective than the plain two-level iteration, folded and on the
-// constraints.
+// The standard finish ($.twolevel.standard_finish, default 30; 10 here): the last iterations of a
+// run are standard iterations on the fine sheet (no patch solves, the coarse mesh stays), the last
+// one an ordinary iteration and the projection. Held longer than block Jacobi can settle, the
+// finish ends nearer the standard mode's objective than the plain two-level iteration, folded and
+// on the constraints.
 TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
   RunConfig config = test::thesis_run(60, 20);  // the finish measured against the thesis's solver
   config.twolevel.standard_finish = 10;
   const test::RunResult finished = run("twolevel", config, 2);
   const test::RunResult plain = run("twolevel", no_finish(config), 2);
   const test::RunResult standard = run("standard", config, 2);
-  for (const auto* r : {&finished, &plain, &standard}) ASSERT_FALSE(r->summary.failed()) << r->summary.failure;
+  for (const auto* r : {&finished, &plain, &standard})
+    ASSERT_FALSE(r->summary.failed()) << r->summary.failure;
   ASSERT_EQ(finished.reports.size(), 80u);
   for (const auto& r : finished.reports) {
     EXPECT_EQ(r.step.patches.empty(), r.iteration > 70) << "iteration " << r.iteration;
@@ -212,10 +223,12 @@ TEST(TwoLevelMode, TheStandardFinishComputesTheLastIterations) {
   }
   // Up to iteration 70 the runs are the same.
   EXPECT_EQ(finished.reports[69].diagnostics.objective, plain.reports[69].diagnostics.objective);
-  const double f = finished.reports.back().diagnostics.objective, p = plain.reports.back().diagnostics.objective,
+  const double f = finished.reports.back().diagnostics.objective,
+               p = plain.reports.back().diagnostics.objective,
                s = standard.reports.back().diagnostics.objective;
   // (Here 9.6 against 16.2 plain, the standard 2.40: ten iterations do not refold every site.)
-  EXPECT_LT(std::abs(f - s), std::abs(p - s)) << "finish " << f << ", plain " << p << ", standard " << s;
+  EXPECT_LT(std::abs(f - s), std::abs(p - s))
+      << "finish " << f << ", plain " << p << ", standard " << s;
   EXPECT_LT(finished.reports.back().diagnostics.dog_max, 5e-7);
   EXPECT_TRUE(finished.reports.back().step.folded);
 }
@@ -237,9 +250,11 @@ TEST(TwoLevelMode, TheFinishRetriesFoldsUpToItsCap) {
       if (rep.iteration < first_finishing || rep.step.folded) continue;
       ++unfolded;
       // An iteration that ends unfolded has used every retry the cap allows.
-      EXPECT_EQ(rep.step.work.fold_retries, most) << "cap " << cap << ", iteration " << rep.iteration;
+      EXPECT_EQ(rep.step.work.fold_retries, most)
+          << "cap " << cap << ", iteration " << rep.iteration;
     }
-    EXPECT_GT(unfolded, 0) << "cap " << cap << ": the case should have finishing iterations that end unfolded";
+    EXPECT_GT(unfolded, 0) << "cap " << cap
+                           << ": the case should have finishing iterations that end unfolded";
     EXPECT_LT(r.reports.back().diagnostics.dog_max, 5e-7) << "cap " << cap;
   }
 }

@@ -26,16 +26,22 @@ Errors rest_errors(const DogModel& model) {
     const int n = static_cast<int>(coarse_points.size());
     EXPECT_EQ(stencils[c].size(), model.map.curves[c].size());
     for (size_t k = 0; k < stencils[c].size(); ++k) {
-      const Eigen::Vector3d fine = crease_point_mean(model.fine, model.fine.V, model.fine.stitching.curves[c].points[k]);
+      const Eigen::Vector3d fine =
+          crease_point_mean(model.fine, model.fine.V, model.fine.stitching.curves[c].points[k]);
       const auto& cp = model.map.curves[c][k];
       const Eigen::Vector3d chord =
-          cp.coarse >= 0 ? crease_point_mean(model.coarse, model.coarse.V, coarse_points[cp.coarse])
-                         : Eigen::Vector3d((1 - cp.fraction) * crease_point_mean(model.coarse, model.coarse.V, coarse_points[cp.segment]) +
-                                           cp.fraction * crease_point_mean(model.coarse, model.coarse.V, coarse_points[(cp.segment + 1) % n]));
+          cp.coarse >= 0
+              ? crease_point_mean(model.coarse, model.coarse.V, coarse_points[cp.coarse])
+              : Eigen::Vector3d(
+                    (1 - cp.fraction) *
+                        crease_point_mean(model.coarse, model.coarse.V, coarse_points[cp.segment]) +
+                    cp.fraction * crease_point_mean(model.coarse, model.coarse.V,
+                                                    coarse_points[(cp.segment + 1) % n]));
       double sum = 0;
       for (int i = 0; i < stencils[c][k].count; ++i) sum += stencils[c][k].weights[i];
       EXPECT_NEAR(sum, 1.0, 1e-12);
-      e.cubic = std::max(e.cubic, (interpolate(model.coarse, model.coarse.V, stencils[c][k]) - fine).norm());
+      e.cubic = std::max(e.cubic,
+                         (interpolate(model.coarse, model.coarse.V, stencils[c][k]) - fine).norm());
       e.chord = std::max(e.chord, (chord - fine).norm());
       ++e.points;
     }
@@ -55,9 +61,11 @@ TEST(CurveInterpolation, ReproducesTheFineCreaseAtRestFarBetterThanChords) {
 }
 
 TEST(CurveInterpolation, IsExactAtCoarsePointsAndFollowsARigidMotion) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   const auto stencils = coarse_curve_stencils(model);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::RowVector3d shift(3, -1, 2);
   const Eigen::MatrixX3d moved_coarse = (model.coarse.V * R.transpose()).rowwise() + shift;
   const Eigen::MatrixX3d moved_fine = (model.fine.V * R.transpose()).rowwise() + shift;
@@ -65,7 +73,8 @@ TEST(CurveInterpolation, IsExactAtCoarsePointsAndFollowsARigidMotion) {
   for (size_t c = 0; c < stencils.size(); ++c)
     for (size_t k = 0; k < stencils[c].size(); ++k) {
       const auto& cp = model.map.curves[c][k];
-      const Eigen::Vector3d fine = crease_point_mean(model.fine, moved_fine, model.fine.stitching.curves[c].points[k]);
+      const Eigen::Vector3d fine =
+          crease_point_mean(model.fine, moved_fine, model.fine.stitching.curves[c].points[k]);
       const double err = (interpolate(model.coarse, moved_coarse, stencils[c][k]) - fine).norm();
       if (cp.coarse >= 0) {
         EXPECT_EQ(stencils[c][k].count, 1);

@@ -13,7 +13,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   return m;
 }
 
@@ -29,7 +30,8 @@ TEST(Restriction, IsExactForAffineMotionsOfTheFlatSheet) {
   int coarse_only = 0;
   for (int c = 0; c < m.coarse.vertex_count(); ++c) coarse_only += m.map.coarse_to_fine[c] < 0;
   ASSERT_GT(coarse_only, 0) << "the test needs coarse-only vertices";
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   Eigen::Matrix3d shear = R;
   shear(0, 1) += 0.3;
   for (const Eigen::Matrix3d& A : {R, shear}) {
@@ -49,7 +51,8 @@ TEST(Restriction, CopiesTheLinkVertices) {
     const int f = m.map.coarse_to_fine[c];
     if (f < 0) continue;
     ++links;
-    EXPECT_EQ(Eigen::Vector3d(vertex_of(coarse, c)), Eigen::Vector3d(vertex_of(fine, f))) << "coarse vertex " << c;
+    EXPECT_EQ(Eigen::Vector3d(vertex_of(coarse, c)), Eigen::Vector3d(vertex_of(fine, f)))
+        << "coarse vertex " << c;
   }
   EXPECT_GT(links, m.coarse.vertex_count() / 2);
   EXPECT_TRUE(coarse.allFinite());

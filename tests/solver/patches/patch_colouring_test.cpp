@@ -36,11 +36,13 @@ TEST_P(PatchColouring, NeighboursGetDifferentColours) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Datasets, PatchColouring,
-                         ::testing::Values("four_corner_arcs.svg", "crossing_creases.svg", "four_parallel_curves.svg"));
+                         ::testing::Values("four_corner_arcs.svg", "crossing_creases.svg",
+                                           "four_parallel_curves.svg"));
 
 TEST(PatchColouring, FourCornerArcsNeedsTwoColours) {
   // The central patch against the four corner patches.
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   const std::vector<int> colour = colour_patches(m.fine);
   EXPECT_EQ(*std::max_element(colour.begin(), colour.end()), 1);
 }

@@ -28,7 +28,8 @@ Dofs folded(const DogModel& model, double theta) {
     const int p = mesh.vertex_patch[v];
     // The patch whose vertices include the sheet's left edge owns the left side.
     const bool left = mesh.V(mesh.patch_begin[p], 0) == 0;
-    const double along = left ? 4.5 - mesh.V(v, 0) : mesh.V(v, 0) - 4.5;  // from the crease into the patch
+    const double along =
+        left ? 4.5 - mesh.V(v, 0) : mesh.V(v, 0) - 4.5;  // from the crease into the patch
     x[3 * v] = left ? 4.5 - along * std::cos(theta) : 4.5 + along * std::cos(theta);
     x[3 * v + 2] = along * std::sin(theta);
   }
@@ -46,7 +47,8 @@ RunConfig fold_config(double angle, int iterations, int hold) {
 }
 
 TEST(CreaseAngles, SignedFoldAngleOfAStraightCrease) {
-  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const DogModel model =
+      build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
   const FoldAngles angles(model.fine);
   ASSERT_GT(angles.sites().size(), 5u);
   for (size_t k = 0; k < angles.sites().size(); ++k) {
@@ -60,9 +62,11 @@ TEST(CreaseAngles, SignedFoldAngleOfAStraightCrease) {
 // creases.csv: a header and one row per fold site, with the site's crease, assignment, place,
 // target and the angle reached (60 degrees on the valley folded by 2 x 30 degrees).
 TEST(CreaseAngles, CreasesCsvHasOneRowPerFoldSite) {
-  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const DogModel model =
+      build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
   const FoldAngles angles(model.fine);
-  const std::string csv = creases_csv(model.fine, fold_scenario(model.fine, 75), folded(model, M_PI / 6));
+  const std::string csv =
+      creases_csv(model.fine, fold_scenario(model.fine, 75), folded(model, M_PI / 6));
   std::istringstream in(csv);
   std::string line;
   std::getline(in, line);
@@ -85,7 +89,8 @@ TEST(CreaseAngles, CreasesCsvHasOneRowPerFoldSite) {
 // its target only: the mirror image of a fold and the supplement of an angle above 90 degrees are
 // no minimum.
 TEST(CreaseAngles, TheAngleTermTellsValleyFromMountainAndAnglesAbove90) {
-  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const DogModel model =
+      build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
   const auto sites = fold_sites(model.fine);
   ASSERT_GT(sites.size(), 5u);
   DihedralAngleTerm term;
@@ -104,7 +109,8 @@ TEST(CreaseAngles, TheAngleTermTellsValleyFromMountainAndAnglesAbove90) {
       EXPECT_NEAR(term.measure(b, p), 2 * half, 1e-9) << "block " << b << ", fold " << 2 * half;
     }
     EXPECT_LT(residual_norm(b, folded(model, M_PI / 6)), 1e-12);
-    EXPECT_GT(residual_norm(b, folded(model, -M_PI / 6)), 0.5);  // the mirror: sin^2(alpha) |e^{i60} - e^{-i60}|
+    EXPECT_GT(residual_norm(b, folded(model, -M_PI / 6)),
+              0.5);                  // the mirror: sin^2(alpha) |e^{i60} - e^{-i60}|
     term.set_target(b, 0.8 * M_PI);  // 144 degrees, not its supplement 36
     EXPECT_LT(residual_norm(b, folded(model, 0.4 * M_PI)), 1e-12);
     EXPECT_GT(residual_norm(b, folded(model, 0.1 * M_PI)), 0.5);
@@ -132,7 +138,8 @@ TEST(CreaseAngles, EveryFoldSiteReadsFlatAtRest) {
 // Both directions of the corner arcs (three unassigned arcs, one valley) fold every site the
 // asked way, the crease ends in slivers at the sheet's corners included.
 TEST(CreaseAngles, CornerArcsFoldBothWaysToTheirEnds) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("four_corner_arcs.svg")), {21, 21});
   for (const double angle : {60.0, -60.0}) {
     RunSetup setup(model, ModeKind::kStandard, fold_config(angle, 60, 20));
     ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);
@@ -149,7 +156,8 @@ TEST(CreaseAngles, CornerArcsFoldBothWaysToTheirEnds) {
 
 TEST(CreaseAngles, CurvedPleatsFoldAsDrawn) {
   // Alternating red mountains and blue valleys: every fold site reaches its assignment's sign.
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {41, 41});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {41, 41});
   RunSetup setup(model, ModeKind::kStandard, fold_config(60, 40, 20));
   ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);
   const FoldAngles angles(model.fine);
@@ -157,7 +165,8 @@ TEST(CreaseAngles, CurvedPleatsFoldAsDrawn) {
   for (size_t k = 0; k < angles.sites().size(); ++k) {
     const auto& curve = model.fine.stitching.curves[angles.sites()[k].curve];
     ASSERT_NE(curve.fold, Fold::kUnassigned);
-    EXPECT_NEAR(angles.at(k, setup.positions()), 60 * fold_sign(curve.fold), 3) << "site " << k << " of " << curve.id;
+    EXPECT_NEAR(angles.at(k, setup.positions()), 60 * fold_sign(curve.fold), 3)
+        << "site " << k << " of " << curve.id;
   }
 }
 
@@ -165,7 +174,8 @@ TEST(CreaseAngles, CurvedPleatsFoldAsDrawn) {
 // sites within kFoldTipRadius of it are counted apart from the others, and every site is counted
 // once.
 TEST(CreaseAngles, SitesNextToAFoldTipAreCountedApart) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("v_pleat.fold")), {21, 21});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("v_pleat.fold")), {21, 21});
   ASSERT_EQ(model.fine.fold_tips.size(), 1u);
   RunSetup setup(model, ModeKind::kStandard, fold_config(60, 10, 10));
   ASSERT_EQ(setup.run({}).termination, Termination::kCompleted);

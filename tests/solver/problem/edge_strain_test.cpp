@@ -25,7 +25,8 @@ Dofs right_side(const DogModel& model, int right, double theta, double scale) {
 }
 
 TEST(EdgeStrain, NamesTheWorstEdgeItsSignAndItsPatch) {
-  const DogModel model = build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
+  const DogModel model =
+      build_dog_model(test::rectangle_pattern(100, 100, {{{45, 0}, {45, 100}}}), {11, 11});
   const DogMesh& mesh = model.fine;
   ASSERT_EQ(mesh.patch_count(), 2);
   const int right = mesh.V(mesh.patch_begin[0], 0) == 0 ? 1 : 0;
@@ -44,7 +45,8 @@ TEST(EdgeStrain, NamesTheWorstEdgeItsSignAndItsPatch) {
   EXPECT_LT(folded.edge_strain_max, 1e-12);
   EXPECT_LT(folded.sheet_strain_max, 1e-12);
 
-  // Every edge of the right patch along x is 1.2 (0.7) times its rest length; the others keep theirs.
+  // Every edge of the right patch along x is 1.2 (0.7) times its rest length; the others keep
+  // theirs.
   const Diagnostics longer = diagnose(problem, right_side(model, right, 0.5, 1.2));
   EXPECT_NEAR(longer.sheet_strain_max, 0.2, 1e-12);
   EXPECT_NEAR(longer.edge_strain_max, 0.2, 1e-12);

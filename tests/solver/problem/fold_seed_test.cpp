@@ -11,7 +11,8 @@ namespace sdog {
 namespace {
 
 TEST(FoldSeed, ValleyTiltsUpAndMountainDown) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   const std::vector<bool> inside = inside_own_patch(model.fine);
   const Dofs flat = to_dofs(model.fine.V);
   const Dofs valley = fold_seed(model.fine, {1.0});

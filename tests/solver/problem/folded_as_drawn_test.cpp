@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
-#include "geometry/input/svg_pattern.h"
-#include "geometry/mesh/dog_model.h"
 #include "geometry/input/fold_reader.h"
+#include "geometry/input/svg_pattern.h"
 #include "geometry/input/svg_reader.h"
+#include "geometry/mesh/dog_model.h"
 #include "solver/problem/crease_angles.h"
 #include "solver/run/crease_settings.h"
 #include "solver/run/run_setup.h"
@@ -18,11 +18,13 @@ namespace {
 // the attributes that draw crease k's assignment.
 template <class Style>
 std::string pleats_svg(Style style) {
-  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
-                    "<rect x=\"0\" y=\"0\" width=\"100\" height=\"100\" fill=\"none\" stroke=\"#000000\"/>";
+  std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<rect x=\"0\" y=\"0\" width=\"100\" height=\"100\" fill=\"none\" stroke=\"#000000\"/>";
   const char* lines[] = {"25,0 30,50 25,100", "50,0 55,50 50,100", "75,0 80,50 75,100"};
   for (int k = 0; k < 3; ++k)
-    svg += "<polyline id=\"p" + std::to_string(k) + "\" points=\"" + lines[k] + "\" fill=\"none\" " + style(k) + "/>";
+    svg += "<polyline id=\"p" + std::to_string(k) + "\" points=\"" + lines[k] +
+           "\" fill=\"none\" " + style(k) + "/>";
   return svg + "</svg>";
 }
 
@@ -56,12 +58,15 @@ RunConfig fold_config() {
 }
 
 TEST(FoldedAsDrawn, ColoursDashesAndAttributesGiveTheSameFold) {
-  const DogModel colours = model_of(pleats_svg([](int k) { return std::string(k == 1 ? "stroke=\"#0000ff\"" : "stroke=\"#ff0000\""); }));
+  const DogModel colours = model_of(pleats_svg(
+      [](int k) { return std::string(k == 1 ? "stroke=\"#0000ff\"" : "stroke=\"#ff0000\""); }));
   const DogModel dashes = model_of(pleats_svg([](int k) {
-    return std::string(k == 1 ? "stroke=\"#222222\" stroke-dasharray=\"4 3\"" : "stroke=\"#222222\" stroke-dasharray=\"8 2 1 2\"");
+    return std::string(k == 1 ? "stroke=\"#222222\" stroke-dasharray=\"4 3\""
+                              : "stroke=\"#222222\" stroke-dasharray=\"8 2 1 2\"");
   }));
   const DogModel attributes = model_of(pleats_svg([](int k) {
-    return std::string(k == 1 ? "stroke=\"#888888\" data-fold=\"valley\"" : "stroke=\"#888888\" data-fold=\"mountain\"");
+    return std::string(k == 1 ? "stroke=\"#888888\" data-fold=\"valley\""
+                              : "stroke=\"#888888\" data-fold=\"mountain\"");
   }));
   const DogModel fold_file = build_dog_model(parse_fold(kPleatsFold, "pleats.fold"), {21, 21});
   ASSERT_EQ(colours.fine.stitching.curves.size(), 3u);
@@ -82,7 +87,10 @@ TEST(FoldedAsDrawn, ColoursDashesAndAttributesGiveTheSameFold) {
   // The pleats: each fold site's angle has its crease's sign.
   const FoldAngles angles(colours.fine);
   for (size_t k = 0; k < angles.sites().size(); ++k)
-    EXPECT_GT(angles.at(k, x) * fold_sign(colours.fine.stitching.curves[angles.sites()[k].curve].fold), 10) << k;
+    EXPECT_GT(
+        angles.at(k, x) * fold_sign(colours.fine.stitching.curves[angles.sites()[k].curve].fold),
+        10)
+        << k;
 }
 
 TEST(FoldedAsDrawn, TheConfigurationSetsAssignmentAndAngleByIdOrIndex) {
@@ -117,7 +125,8 @@ TEST(FoldedAsDrawn, TheConfigurationSetsAssignmentAndAngleByIdOrIndex) {
     apply_crease_settings({missing}, model);
     FAIL() << "no error for an unknown id";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("$.creases[2].id: no crease"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("$.creases[2].id: no crease"), std::string::npos)
+        << e.what();
   }
 }
 

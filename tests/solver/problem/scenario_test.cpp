@@ -17,7 +17,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   return m;
 }
 
@@ -51,7 +52,8 @@ TEST(Scenario, TargetsMoveLinearlyThenHold) {
   ASSERT_EQ(problem.positions.block_count(), 2);
   EXPECT_EQ(problem.positions.target(1), s.positions[1].start);  // installed at t = 0
   s.apply(problem, 0.5);
-  EXPECT_TRUE(problem.positions.target(1).isApprox(0.5 * (s.positions[1].start + s.positions[1].end)));
+  EXPECT_TRUE(
+      problem.positions.target(1).isApprox(0.5 * (s.positions[1].start + s.positions[1].end)));
 }
 
 TEST(Scenario, TheFoldScenarioAsksForTheAngleAtEveryFoldSite) {
@@ -82,7 +84,8 @@ TEST(Scenario, TheFoldScenarioAsksForTheAngleAtEveryFoldSite) {
     EXPECT_LE(problem.angles.alpha(b), M_PI / 2);
   }
   s.apply(problem, 1);
-  for (int b = 0; b < problem.angles.block_count(); ++b) EXPECT_DOUBLE_EQ(problem.angles.target(b), M_PI / 3);
+  for (int b = 0; b < problem.angles.block_count(); ++b)
+    EXPECT_DOUBLE_EQ(problem.angles.target(b), M_PI / 3);
   // A start state tilted towards the fold (the flat sheet is a symmetric point).
   EXPECT_GT((s.start(mesh) - problem.rest()).lpNorm<Eigen::Infinity>(), 0);
 }

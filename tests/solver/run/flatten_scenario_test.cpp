@@ -21,8 +21,8 @@ const DogModel& model() {
   return m;
 }
 
-// The flatten scenario of the thesis preset (its start state costs a fold run: built once). Its soft
-// stitching leaves gaps at the creases for the ADMM modes to close.
+// The flatten scenario of the thesis preset (its start state costs a fold run: built once). Its
+// soft stitching leaves gaps at the creases for the ADMM modes to close.
 const Scenario& flatten() {
   static const Scenario s = [] {
     RunConfig config = test::thesis_config();

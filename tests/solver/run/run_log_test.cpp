@@ -18,7 +18,8 @@ std::vector<std::string> fields(const std::string& line) {
   return out;
 }
 
-std::string field(const std::string& row, const std::vector<std::string>& columns, const std::string& name) {
+std::string field(const std::string& row, const std::vector<std::string>& columns,
+                  const std::string& name) {
   const auto f = fields(row);
   for (size_t i = 0; i < columns.size(); ++i)
     if (columns[i] == name) return i < f.size() ? f[i] : "(missing)";

@@ -11,7 +11,8 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {13, 9});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {13, 9});
   return m;
 }
 
@@ -21,7 +22,8 @@ TEST(RunSetup, RefusesWhatCannotRunBeforeAnyIteration) {
   EXPECT_THROW(RunSetup(model(), ModeKind::kStandard, config), UsageError);
   MeshOptions fine_only;
   fine_only.build_coarse = false;
-  const DogModel even = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {14, 10}, fine_only);
+  const DogModel even =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {14, 10}, fine_only);
   EXPECT_THROW(RunSetup(even, ModeKind::kCoarse, RunConfig()), UsageError);
   RunConfig switching;
   switching.switches = {{5, ModeKind::kTwoLevel}};
@@ -36,7 +38,8 @@ TEST(RunSetup, RefusesWhatCannotRunBeforeAnyIteration) {
     RunSetup setup(model(), ModeKind::kStandard, bad_vertex);
     ADD_FAILURE() << "a vertex that does not exist was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("c.json: $.positions[0].vertex"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("c.json: $.positions[0].vertex"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -17,15 +17,18 @@ namespace sdog {
 namespace {
 
 const DogModel& model() {
-  static const DogModel m = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {13, 9});
+  static const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {13, 9});
   return m;
 }
 
 // A mode that records what it is told, sets the targets of its time (as every mode does) and moves
-// one coordinate a little; fails or throws a vertex far off its neighbours (diverges) when asked to.
+// one coordinate a little; fails or throws a vertex far off its neighbours (diverges) when asked
+// to.
 class ProbeMode : public Mode {
  public:
-  ProbeMode(DogProblem& problem, const Scenario& scenario) : problem_(problem), scenario_(scenario) {}
+  ProbeMode(DogProblem& problem, const Scenario& scenario)
+      : problem_(problem), scenario_(scenario) {}
   ModeKind kind() const override { return ModeKind::kStandard; }
   StepReport iterate(const IterationContext& ctx, Dofs& x) override {
     contexts.push_back(ctx);
@@ -37,7 +40,8 @@ class ProbeMode : public Mode {
       return r;
     }
     x[2] += 0.01;
-    if (static_cast<int>(contexts.size()) == diverge_at) x[x.size() / 2 / 3 * 3] += 0.5;  // a middle vertex
+    if (static_cast<int>(contexts.size()) == diverge_at)
+      x[x.size() / 2 / 3 * 3] += 0.5;  // a middle vertex
     r.work.steps = 1;
     if (cancel_after > 0 && static_cast<int>(contexts.size()) == cancel_after) cancel->store(true);
     return r;
@@ -96,8 +100,9 @@ TEST(Run, DiagnosticsAreMeasuredOnTheFineProblemWithTheFinalTargetsToo) {
   run.scenario.apply(final_targets, 1.0);
   EXPECT_EQ(r.objective_final_targets, weighted_objective(final_targets, run.x));
   EXPECT_GT(r.objective_final_targets, r.diagnostics.objective);
-  EXPECT_EQ(run.problem.positions.target(1), run.scenario.positions[1].start +
-                                                   0.25 * (run.scenario.positions[1].end - run.scenario.positions[1].start));
+  EXPECT_EQ(run.problem.positions.target(1),
+            run.scenario.positions[1].start +
+                0.25 * (run.scenario.positions[1].end - run.scenario.positions[1].start));
 }
 
 TEST(Run, AFailedIterationEndsTheRunAndNamesIt) {
@@ -129,7 +134,8 @@ TEST(Run, ADivergedIterationFailsAndLeavesThePositions) {
   ProbeMode single(one.problem, one.scenario);
   single.diverge_at = 1;
   const Dofs x0 = one.x;
-  const IterationReport r = run_iteration(single, one.problem, one.scenario, one.x, 1, IterationContext::kOpenEnded);
+  const IterationReport r =
+      run_iteration(single, one.problem, one.scenario, one.x, 1, IterationContext::kOpenEnded);
   EXPECT_TRUE(r.step.failed);
   EXPECT_TRUE(one.x == x0);
 }

@@ -6,21 +6,23 @@
 #include <filesystem>
 #include <fstream>
 
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
 #include "solver/problem/scenario.h"
 #include "solver/run/run_setup.h"
-#include "solver/terms/fold_angles.h"
 #include "solver/session/session.h"
 #include "solver/session/workspace.h"
+#include "solver/terms/fold_angles.h"
 #include "tests/solver/session_fixture.h"
 #include "tests/test_support.h"
 
 namespace sdog {
 namespace {
 
-const DogModel& model() { return test::session_model(); }
+const DogModel& model() {
+  return test::session_model();
+}
 using test::interactive;
 
 TEST(Session, StepsTheBaseScenario) {
@@ -168,7 +170,8 @@ TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
   EXPECT_LT(with.problem().angles.block_count(), 2);
   // The constrained crease point bends: its sheet leaves the plane.
   double lift = 0;
-  for (int v = 0; v < model().fine.vertex_count(); ++v) lift = std::max(lift, std::abs(with.positions()[3 * v + 2]));
+  for (int v = 0; v < model().fine.vertex_count(); ++v)
+    lift = std::max(lift, std::abs(with.positions()[3 * v + 2]));
   EXPECT_GT(lift, 0.5);
   with.remove_angle(0);
   EXPECT_TRUE(with.scenario().angles.empty());
@@ -179,7 +182,8 @@ TEST(Session, AngleConstraintFoldsItsCreasePointAndCanBeRemoved) {
 }
 
 TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
-  // The configuration's crease settings apply to the session's copy of the model, not the given one.
+  // The configuration's crease settings apply to the session's copy of the model, not the given
+  // one.
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
   config.creases.push_back({"test", 1, std::nullopt, Fold::kMountain, 45.0});
@@ -190,7 +194,9 @@ TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
   const Fold drawn = model().fine.stitching.curves[0].fold;
   const Fold flipped = drawn == Fold::kMountain ? Fold::kValley : Fold::kMountain;
   // The fold scenario's targets on crease 0 follow its assignment and angle.
-  auto target_of = [&](int curve) { return crease_fold_target(s.model().fine, curve, config.fold_angle); };
+  auto target_of = [&](int curve) {
+    return crease_fold_target(s.model().fine, curve, config.fold_angle);
+  };
   s.set_creases({0}, flipped, std::nullopt);
   s.set_creases({0}, std::nullopt, 30.0);
   EXPECT_EQ(s.model().fine.stitching.curves[0].fold, flipped);
@@ -226,7 +232,8 @@ TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
 // The fold amount (the studio's slider) folds the sheet to a share of every crease's angle and back
 // to flat; at 100% the session ends on the same side as `sdog run` with the same settings.
 TEST(Session, TheFoldAmountFoldsAndUnfoldsTheSheetOnTheRunsSide) {
-  const DogModel m = build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {21, 21});
+  const DogModel m =
+      build_dog_model(read_crease_pattern(test::dataset("curved_pleats.svg")), {21, 21});
   RunConfig config;
   config.scenario = ScenarioKind::kFold;
   config.fold_angle = 60;
@@ -262,7 +269,8 @@ TEST(Session, TheFoldAmountFoldsAndUnfoldsTheSheetOnTheRunsSide) {
   ASSERT_FALSE(full.empty());
   for (size_t k = 0; k < full.size(); ++k) {
     EXPECT_NEAR(full[k], 1.0, 0.1) << "site " << k;
-    EXPECT_GT(full[k] * by_run[k], 0) << "site " << k << ": the session and the run fold it different ways";
+    EXPECT_GT(full[k] * by_run[k], 0)
+        << "site " << k << ": the session and the run fold it different ways";
   }
   s.set_fold_percent(50);
   EXPECT_EQ(s.config().fold_percent, 50);
@@ -270,7 +278,8 @@ TEST(Session, TheFoldAmountFoldsAndUnfoldsTheSheetOnTheRunsSide) {
   for (double share : shares(s.positions())) EXPECT_NEAR(share, 0.5, 0.1);
   s.set_fold_percent(0);
   converge(s);
-  for (size_t k = 0; k < angles.sites().size(); ++k) EXPECT_LT(std::abs(angles.at(k, s.positions())), 3) << k;
+  for (size_t k = 0; k < angles.sites().size(); ++k)
+    EXPECT_LT(std::abs(angles.at(k, s.positions())), 3) << k;
   EXPECT_THROW(s.set_fold_percent(101), InputError);
   EXPECT_THROW(s.set_fold_percent(-1), InputError);
 }

@@ -14,7 +14,9 @@
 namespace sdog {
 namespace {
 
-const DogModel& model() { return test::session_model(); }
+const DogModel& model() {
+  return test::session_model();
+}
 using test::interactive;
 
 TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
@@ -27,9 +29,12 @@ TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   for (int k = 0; k < 3; ++k) ASSERT_FALSE(s.step().step.failed);
   const std::string dir = test::temp_dir("workspace");
   const nlohmann::json camera = {{"position", {1, 2, 3}}, {"focal_point", {0, 0, 0}}};
-  save_workspace(workspace_of(s, "../somewhere/four_corner_arcs.svg", "21x21", camera), dir + "/w.json");
+  save_workspace(workspace_of(s, "../somewhere/four_corner_arcs.svg", "21x21", camera),
+                 dir + "/w.json");
   const Workspace w = load_workspace(dir + "/w.json");
-  EXPECT_EQ(w.pattern, (std::filesystem::path(dir) / "../somewhere/four_corner_arcs.svg").lexically_normal().string());
+  EXPECT_EQ(w.pattern, (std::filesystem::path(dir) / "../somewhere/four_corner_arcs.svg")
+                           .lexically_normal()
+                           .string());
   EXPECT_EQ(w.resolution, "21x21");
   EXPECT_EQ(w.mode, "standard");
   EXPECT_EQ(w.iteration, 3);
@@ -49,7 +54,8 @@ TEST(Workspace, SavedAndLoadedBackGivesTheSameSession) {
   // session's solver starts with zero multipliers).
   s.set_mode(ModeKind::kStandard);
   const IterationReport a = s.step(), b = back.step();
-  EXPECT_NEAR(a.diagnostics.objective, b.diagnostics.objective, 1e-9 * (1 + a.diagnostics.objective));
+  EXPECT_NEAR(a.diagnostics.objective, b.diagnostics.objective,
+              1e-9 * (1 + a.diagnostics.objective));
   EXPECT_THROW(back.set_positions(Dofs::Zero(6), 0), InputError);
 }
 
@@ -66,11 +72,14 @@ TEST(Workspace, BadFilesAreErrorsNamingThePath) {
   };
   EXPECT_NE(error_of("{").find("not valid JSON"), std::string::npos);
   EXPECT_NE(error_of(R"({"format": "x"})").find("$.format"), std::string::npos);
-  const std::string head = R"({"format": "sdog-workspace", "version": 1, "pattern": "p.svg", "resolution": "21x21", "mode": "standard", )";
-  EXPECT_NE(error_of(head + R"("handles": [{"vertex": 1, "target": [1, 2]}]})").find("$.handles[0].target"),
+  const std::string head =
+      R"({"format": "sdog-workspace", "version": 1, "pattern": "p.svg", "resolution": "21x21", "mode": "standard", )";
+  EXPECT_NE(error_of(head + R"("handles": [{"vertex": 1, "target": [1, 2]}]})")
+                .find("$.handles[0].target"),
             std::string::npos);
   EXPECT_NE(error_of(head + R"("colour": 1})").find("$.colour"), std::string::npos);
-  EXPECT_NE(error_of(head + R"("config": {"weights": {"bending": -1}}})").find("bending"), std::string::npos);
+  EXPECT_NE(error_of(head + R"("config": {"weights": {"bending": -1}}})").find("bending"),
+            std::string::npos);
   EXPECT_EQ(error_of(head + R"("positions": []})"), "no error");
   EXPECT_THROW(save_workspace(Workspace{}, "/proc/forbidden/w.json"), OutputError);
 }

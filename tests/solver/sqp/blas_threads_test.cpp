@@ -9,8 +9,8 @@
 #include <set>
 #include <thread>
 
-#include "solver/sqp/blas_threads.h"
 #include "solver/patches/patch_stepper.h"
+#include "solver/sqp/blas_threads.h"
 #include "tests/solver/probe_patch.h"
 
 namespace sdog {
@@ -24,7 +24,8 @@ TEST(BlasThreads, OpenMpRegionsRunOnTheCallingThread) {
   // active-level limit keeps on the calling thread.
   auto get_levels = reinterpret_cast<GetInt>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
   auto set_levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-  if (!get_levels || !set_levels) GTEST_SKIP() << "no OpenMP runtime loaded (CHOLMOD built without OpenMP)";
+  if (!get_levels || !set_levels)
+    GTEST_SKIP() << "no OpenMP runtime loaded (CHOLMOD built without OpenMP)";
   set_levels(4);
   ASSERT_EQ(get_levels(), 4);
   set_blas_threads(2);
@@ -58,7 +59,8 @@ TEST(BlasThreads, PatchStepsRunOpenMpRegionsOnTheirOwnThread) {
   Dofs x = Dofs::Zero(3);
   tbb::task_arena arena(2);
   arena.execute([&] { step_patches(patches, x, false); });
-  ASSERT_GE(threads.size(), 2u) << "the patches did not run on two threads, so this test checks nothing";
+  ASSERT_GE(threads.size(), 2u)
+      << "the patches did not run on two threads, so this test checks nothing";
   EXPECT_EQ(levels, std::set<int>{0});
 }
 

@@ -52,7 +52,8 @@ TEST(SymmetricBlockMatrix, AddDenseAndAddGramPlaceEveryEntry) {
   EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1.0);
   // Only the lower triangle is stored.
   const Dense stored = M.lower();
-  EXPECT_EQ(stored.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(stored.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().cwiseAbs().maxCoeff(),
+            0.0);
 }
 
 }  // namespace

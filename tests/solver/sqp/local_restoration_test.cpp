@@ -16,7 +16,8 @@ namespace sdog {
 namespace {
 
 TEST(LocalRestoration, MovesOnlyTheNeighbourhoodOfTheViolatedRows) {
-  const DogModel model = build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
+  const DogModel model =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {21, 15});
   const DogProblem problem(model.fine, model.fine_topology);
   const int n = model.fine.vertex_count();
   SqpSolver solver(n, problem.objective_terms(), problem.dog, SqpOptions());
@@ -34,14 +35,16 @@ TEST(LocalRestoration, MovesOnlyTheNeighbourhoodOfTheViolatedRows) {
   EXPECT_TRUE(std::binary_search(near.begin(), near.end(), lifted));
   EXPECT_LT(static_cast<int>(near.size()), n / 4);
   // More rings reach further.
-  EXPECT_GT(LocalRestoration(n, problem.dog, 2).neighbourhood(lin.c, tolerance).size(), near.size());
+  EXPECT_GT(LocalRestoration(n, problem.dog, 2).neighbourhood(lin.c, tolerance).size(),
+            near.size());
   EXPECT_TRUE(local.neighbourhood(Eigen::VectorXd::Zero(lin.c.size()), tolerance).empty());
 
   Eigen::VectorXd d;
   ASSERT_TRUE(local.step(near, lin.c, lin.J, K, 1e6, 1e-8, d));
   for (int v = 0; v < n; ++v)
     if (!std::binary_search(near.begin(), near.end(), v)) {
-      EXPECT_EQ(d.segment<3>(3 * v).norm(), 0) << "vertex " << v << " outside the neighbourhood moved";
+      EXPECT_EQ(d.segment<3>(3 * v).norm(), 0)
+          << "vertex " << v << " outside the neighbourhood moved";
     }
   const Eigen::VectorXd after = solver.constraint_values(x + d);
   EXPECT_LT(after.squaredNorm(), 0.5 * lin.c.squaredNorm());

@@ -31,7 +31,9 @@ struct SmallProblem {
     terms[kFoldBias].weight = 0;
     return SqpSolver(model.fine.vertex_count(), terms, problem.dog, options);
   }
-  double dog_max(SqpSolver& s, const Dofs& x) { return s.constraint_values(x).lpNorm<Eigen::Infinity>(); }
+  double dog_max(SqpSolver& s, const Dofs& x) {
+    return s.constraint_values(x).lpNorm<Eigen::Infinity>();
+  }
 };
 
 TEST(SqpSolver, AnIterationLowersTheObjectiveAndRestoresTheConstraints) {
@@ -80,7 +82,8 @@ TEST(SqpSolver, RestorationAloneMovesAStateOntoTheConstraints) {
   SmallProblem p;
   SqpSolver s = p.solver();
   Dofs x = p.problem.rest();
-  for (Eigen::Index i = 2; i < x.size(); i += 3) x[i] += 0.05 * std::sin(0.7 * static_cast<double>(i));
+  for (Eigen::Index i = 2; i < x.size(); i += 3)
+    x[i] += 0.05 * std::sin(0.7 * static_cast<double>(i));
   const double before = p.dog_max(s, x);
   ASSERT_GT(before, 10 * p.options.constraint_tolerance);
   const double objective = s.objective(x);

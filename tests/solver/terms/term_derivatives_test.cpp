@@ -9,15 +9,15 @@
 
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "solver/terms/bending.h"
 #include "solver/patches/ceres/ceres_cost.h"
+#include "solver/patches/patch_term.h"
+#include "solver/terms/bending.h"
 #include "solver/terms/crease_geometry.h"
-#include "solver/terms/dog_constraints.h"
 #include "solver/terms/dihedral_angles.h"
+#include "solver/terms/dog_constraints.h"
 #include "solver/terms/fold_bias.h"
 #include "solver/terms/isometry.h"
 #include "solver/terms/linear_point_term.h"
-#include "solver/patches/patch_term.h"
 #include "solver/terms/stacked_term.h"
 #include "tests/test_support.h"
 
@@ -40,7 +40,8 @@ const Fixture& fixture() {
 // An angle constraint at every fold site, with targets of both signs.
 void add_crease_angles(const Fixture& f, DihedralAngleTerm& t) {
   int k = 0;
-  for (const auto& site : fold_sites(f.model.fine)) t.add(dihedral_site(f.model.fine, site), (k++ % 2 ? 1.2 : -2.5));
+  for (const auto& site : fold_sites(f.model.fine))
+    t.add(dihedral_site(f.model.fine, site), (k++ % 2 ? 1.2 : -2.5));
 }
 
 // A random non-flat configuration: the rest state moved in plane and lifted out of it.
@@ -134,7 +135,8 @@ void check_jacobians(const TermT& t, const Dofs& x, double h = 1e-5, int max_blo
     gather_block(t, b, x, p.data());
     std::vector<const double*> params;
     for (auto& q : p) params.push_back(q.data());
-    std::vector<std::vector<double>> blocks(t.block_size(b), std::vector<double>(3 * t.residual_count(b)));
+    std::vector<std::vector<double>> blocks(t.block_size(b),
+                                            std::vector<double>(3 * t.residual_count(b)));
     std::vector<double*> jac;
     for (auto& bl : blocks) jac.push_back(bl.data());
     Eigen::VectorXd r(t.residual_count(b));
@@ -142,7 +144,9 @@ void check_jacobians(const TermT& t, const Dofs& x, double h = 1e-5, int max_blo
     EXPECT_NEAR(r.norm(), 2 * residuals(t, b, p).norm(), 1e-12 * (1 + r.norm()));
     for (int j = 0; j < t.block_size(b); ++j)
       for (int i = 0; i < t.residual_count(b); ++i)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(jac[j][3 * i + c], 2 * J(i, 3 * j + c), 1e-12 * (1 + std::abs(J(i, 3 * j + c))));
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(jac[j][3 * i + c], 2 * J(i, 3 * j + c),
+                      1e-12 * (1 + std::abs(J(i, 3 * j + c))));
   }
 }
 
@@ -179,7 +183,8 @@ void check_second_order(const Term& t, const Dofs& x, int max_blocks = 100) {
         H_fd.col(3 * j + c) = (4 * central(h / 2) - central(h)) / 3;
       }
     EXPECT_LT(relative_error(H, H_fd), 1e-6) << t.name() << " block " << b;
-    EXPECT_LT(relative_error(H, Matrix(H.transpose())), 1e-14) << t.name() << " block " << b << " not symmetric";
+    EXPECT_LT(relative_error(H, Matrix(H.transpose())), 1e-14)
+        << t.name() << " block " << b << " not symmetric";
   }
 }
 
@@ -277,11 +282,15 @@ TEST(TermDerivatives, SplitPatchBlocksMatchFiniteDifferences) {
       for (int j = 0; j < view.block_size(b); ++j) {
         const int v = view.block_vertices(b)[j] + begin;
         const int* whole_vertices = angles.block_vertices(src);
-        const int slot = static_cast<int>(std::find(whole_vertices, whole_vertices + angles.block_size(src), v) - whole_vertices);
+        const int slot = static_cast<int>(
+            std::find(whole_vertices, whole_vertices + angles.block_size(src), v) - whole_vertices);
         ASSERT_LT(slot, angles.block_size(src));
-        EXPECT_LT(relative_error(Matrix(J.middleCols(3 * j, 3)), Matrix(J_whole.middleCols(3 * slot, 3))), 1e-15);
+        EXPECT_LT(
+            relative_error(Matrix(J.middleCols(3 * j, 3)), Matrix(J_whole.middleCols(3 * slot, 3))),
+            1e-15);
       }
-      EXPECT_LT(relative_error(J, numeric_jacobian(view, b, local, 1e-5)), 1e-6) << "patch " << patch << " block " << b;
+      EXPECT_LT(relative_error(J, numeric_jacobian(view, b, local, 1e-5)), 1e-6)
+          << "patch " << patch << " block " << b;
     }
     if (view.split_block_count() > 0 && view.has_second_order()) check_second_order(view, local);
   }
@@ -355,7 +364,8 @@ TEST(TermDerivatives, DogConstraintValuesAloneEqualThoseComputedWithTheJacobian)
     Matrix J(t.residual_count(b), 3 * t.block_size(b));
     t.evaluate(b, p.data(), with_jacobian.data(), J.data());
     const Eigen::VectorXd alone = residuals(t, b, p);
-    for (int i = 0; i < t.residual_count(b); ++i, ++rows) EXPECT_EQ(alone[i], with_jacobian[i]) << "block " << b;
+    for (int i = 0; i < t.residual_count(b); ++i, ++rows)
+      EXPECT_EQ(alone[i], with_jacobian[i]) << "block " << b;
   }
   EXPECT_EQ(rows, t.row_count());
 }

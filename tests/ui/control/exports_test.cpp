@@ -33,9 +33,11 @@ TEST(Exports, WritesTheSurfaceAsThePathSaysAndAppendsObjOtherwise) {
   const std::string ply = export_surface(model, state, vis::Layer::kBending, dir + "/sheet.PLY");
   EXPECT_EQ(ply, dir + "/sheet.PLY");
   EXPECT_EQ(lines_starting(ply, "ply"), 1);
-  EXPECT_EQ(export_surface(model, state, vis::Layer::kPatches, dir + "/new/folder/s.obj"), dir + "/new/folder/s.obj")
+  EXPECT_EQ(export_surface(model, state, vis::Layer::kPatches, dir + "/new/folder/s.obj"),
+            dir + "/new/folder/s.obj")
       << "missing folders are made";
-  EXPECT_THROW(export_surface(model, state, vis::Layer::kPatches, obj + "/s.obj"), OutputError) << "under a file";
+  EXPECT_THROW(export_surface(model, state, vis::Layer::kPatches, obj + "/s.obj"), OutputError)
+      << "under a file";
   EXPECT_FALSE(fs::exists(dir + "/sheet.obj/s.obj"));
   EXPECT_EQ(with_extension("a/b", "png"), "a/b.png");
   EXPECT_EQ(with_extension("a.b/c.jpg", "png"), "a.b/c.jpg");
@@ -49,17 +51,21 @@ TEST(Recorder, RecordsDueStatesAsFramesAndSaysWhereTheyWent) {
   options.every = 2;
   Recorder recorder(test::arcs_model(), dir, options);
   for (int iteration = 0; iteration <= 4; ++iteration)
-    if (recorder.due(iteration)) recorder.record(test::arcs_standard_state(), iteration, 0.25 * iteration, {});
+    if (recorder.due(iteration))
+      recorder.record(test::arcs_standard_state(), iteration, 0.25 * iteration, {});
   EXPECT_EQ(recorder.frame_count(), 3) << "iterations 0, 2 and 4";
   EXPECT_TRUE(fs::exists(dir + "/frame_0002.vtu"));
   EXPECT_FALSE(fs::exists(dir + "/frame_0000.png"));
   EXPECT_EQ(lines_starting(dir + "/frames.csv", ""), 4) << "a header and three frames";
-  EXPECT_EQ(recording_indicator(recorder).rfind("\u25CF REC 3 frames, ", 0), 0u) << recording_indicator(recorder);
+  EXPECT_EQ(recording_indicator(recorder).rfind("\u25CF REC 3 frames, ", 0), 0u)
+      << recording_indicator(recorder);
   const std::string summary = recording_summary(recorder, "/there");
   EXPECT_EQ(summary.rfind("recording stopped: 3 frames (", 0), 0u) << summary;
-  EXPECT_NE(summary.find(" in /there (frames.csv lists their iterations)"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(" in /there (frames.csv lists their iterations)"), std::string::npos)
+      << summary;
   options.vtu = false;
-  EXPECT_THROW(Recorder(test::arcs_model(), dir + "/nothing", options), UsageError) << "nothing chosen";
+  EXPECT_THROW(Recorder(test::arcs_model(), dir + "/nothing", options), UsageError)
+      << "nothing chosen";
 }
 
 }  // namespace

@@ -54,9 +54,11 @@ TEST(CreaseEdit, SaysWhatTheEditDoesOrWhyItCannot) {
   EXPECT_EQ(crease_edit_message({0, 3}, Fold::kValley, std::nullopt, ScenarioKind::kCorners),
             "2 crease(s) set to valley - Creases > Fold folds with the assignments");
   EXPECT_EQ(crease_edit_message({1}, std::nullopt, 45.5, ScenarioKind::kFold),
-            "1 crease(s) set to 45.5 degrees - the fold goes on from the current shape (Creases > Fold starts "
+            "1 crease(s) set to 45.5 degrees - the fold goes on from the current shape (Creases > "
+            "Fold starts "
             "again from flat)");
-  EXPECT_THROW(crease_edit_message({}, Fold::kMountain, std::nullopt, ScenarioKind::kFold), UsageError);
+  EXPECT_THROW(crease_edit_message({}, Fold::kMountain, std::nullopt, ScenarioKind::kFold),
+               UsageError);
   EXPECT_THROW(crease_edit_message({1}, std::nullopt, 181, ScenarioKind::kFold), UsageError);
   EXPECT_THROW(crease_edit_message({1}, std::nullopt, -1, ScenarioKind::kFold), UsageError);
 }

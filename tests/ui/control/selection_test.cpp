@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "ui/control/screen_pick.h"
 #include "tests/ui/vis/scene_fixture.h"
+#include "ui/control/screen_pick.h"
 
 namespace sdog::control {
 namespace {
@@ -30,7 +30,8 @@ TEST(ScreenPick, TheNearestWithinReachAndTheFrontOneOfAPlace) {
   EXPECT_EQ(nearest_on_screen(display, 19, 10, 5), 2) << "the front one of the same place";
   EXPECT_EQ(nearest_on_screen(display, 40, 10, 5), -1) << "none within reach";
   EXPECT_EQ(nearest_on_screen(display.bottomRows(1), 0, 0, 100), -1) << "behind the camera";
-  EXPECT_EQ(inside_rectangle(display, 25, 15, 15, 5), (std::vector<int>{1, 2})) << "any two corners";
+  EXPECT_EQ(inside_rectangle(display, 25, 15, 15, 5), (std::vector<int>{1, 2}))
+      << "any two corners";
 }
 
 TEST(Selection, AddsEachVertexOnceAndSwitchesBetweenVerticesAndCreases) {
@@ -65,13 +66,15 @@ TEST(Selection, AClickPicksTheCreaseThroughTheNearestCreasePointElseTheNearestVe
   EXPECT_EQ(crease.crease, 1);
   EXPECT_EQ(crease.crease_point, point);
   EXPECT_EQ(crease.vertex, -1);
-  EXPECT_NE(crease.message.find("crease 1 picked at crease point " + std::to_string(point)), std::string::npos);
+  EXPECT_NE(crease.message.find("crease 1 picked at crease point " + std::to_string(point)),
+            std::string::npos);
   Selection s;
   s.apply(crease, static_cast<int>(fine.stitching.curves.size()));
   EXPECT_EQ(s.creases(), (std::vector<int>{1}));
   EXPECT_EQ(s.picked_crease_point(), point);
 
-  EXPECT_EQ(pick_at(fine, crease_points, vertices, 110, 100).crease, -1) << "10 pixels: beyond the crease reach";
+  EXPECT_EQ(pick_at(fine, crease_points, vertices, 110, 100).crease, -1)
+      << "10 pixels: beyond the crease reach";
   const ClickPick vertex = pick_at(fine, Eigen::MatrixX3d(0, 3), vertices, 305, 300);
   EXPECT_EQ(vertex.vertex, 17) << "the crease layer off: vertices only";
   EXPECT_EQ(vertex.message, "vertex 17 picked (Edit > Make handle: H)");

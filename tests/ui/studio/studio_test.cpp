@@ -4,26 +4,9 @@
 // surface, a frame series and a workspace written and read back, a run configuration dropped for
 // another pattern, a frame saved by sdog run shown as sdog render draws it, and the command line's
 // --screenshot, also of a saved frame.
-#include <QAction>
-#include <QApplication>
-#include <QDir>
-#include <QCheckBox>
-#include <QComboBox>
-#include <QDoubleSpinBox>
-#include <QPushButton>
-#include <QSpinBox>
-#include <QFile>
-#include <QFileInfo>
-#include <QImage>
-#include <QProcess>
-#include <QRegularExpression>
-#include <QSignalSpy>
-#include <QSurfaceFormat>
-#include <QTemporaryDir>
 #include <QVTKOpenGLNativeWidget.h>
-#include <QtTest>
-#include <cmath>
-#include <memory>
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -31,12 +14,29 @@
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkActor.h>
-#include <vtkActorCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+#include <memory>
 
 #include "app/blas_kernels.h"
 #include "app/saved_state.h"
@@ -60,7 +60,8 @@ namespace {
 
 const QString kPattern = QString(SDOG_DATASETS_DIR) + "/four_corner_arcs.svg";
 constexpr int kWait = 120000;  // ms: the machine may be busy
-// Pictures of the same state: at most kPixels pixels differ by more than kLevel (0-255) in a channel.
+// Pictures of the same state: at most kPixels pixels differ by more than kLevel (0-255) in a
+// channel.
 constexpr int kLevel = 2, kPixels = 16;
 
 }  // namespace
@@ -97,9 +98,10 @@ class StudioTest : public QObject {
   static QString saved_run(const QTemporaryDir& dir) {
     const QString run = dir.filePath("run");
     QProcess sdog;
-    sdog.start(SDOG_EXE, {"run", kPattern, "--res", "21x21", "--iters", "20", "--hold", "5", "--frames-every", "10",
-                          "-q", "--out", run});
-    if (!sdog.waitForFinished(kWait) || sdog.exitCode() != 0) qWarning() << sdog.readAllStandardError();
+    sdog.start(SDOG_EXE, {"run", kPattern, "--res", "21x21", "--iters", "20", "--hold", "5",
+                          "--frames-every", "10", "-q", "--out", run});
+    if (!sdog.waitForFinished(kWait) || sdog.exitCode() != 0)
+      qWarning() << sdog.readAllStandardError();
     return run;
   }
   /// `sdog render` with `args`; false (after a warning with its messages) when it fails.
@@ -111,8 +113,12 @@ class StudioTest : public QObject {
     return done;
   }
   /// The session's assignment and angle of crease k in the last state shown.
-  static sdog::Fold fold_of(const MainWindow& w, int k) { return w.snapshot()->state.crease_folds.at(k); }
-  static std::optional<double> angle_of(const MainWindow& w, int k) { return w.snapshot()->crease_angles.at(k); }
+  static sdog::Fold fold_of(const MainWindow& w, int k) {
+    return w.snapshot()->state.crease_folds.at(k);
+  }
+  static std::optional<double> angle_of(const MainWindow& w, int k) {
+    return w.snapshot()->crease_angles.at(k);
+  }
   /// Clicks crease k where the view draws the middle of it, as the mouse does (the flat view, the
   /// crease-curves overlay on).
   void click_crease(int k) {
@@ -133,8 +139,9 @@ class StudioTest : public QObject {
     answer_ = -1;
     window_ = std::make_unique<MainWindow>("about");
     window_->set_error_sink([this](const QString& m) { errors_ << m; });
-    window_->set_question_sink(
-        [this](const QString&, const QStringList& answers) { return answer_ >= 0 ? answer_ : int(answers.size()) - 1; });
+    window_->set_question_sink([this](const QString&, const QStringList& answers) {
+      return answer_ >= 0 ? answer_ : int(answers.size()) - 1;
+    });
     window_->resize(900, 600);
     window_->show();
   }
@@ -142,7 +149,8 @@ class StudioTest : public QObject {
 
   void opens_a_pattern_and_reports_bad_ones() {
     open();
-    QCOMPARE(window_->snapshot()->state.fine.rows(), Eigen::Index(window_->model()->fine.vertex_count()));
+    QCOMPARE(window_->snapshot()->state.fine.rows(),
+             Eigen::Index(window_->model()->fine.vertex_count()));
     QCOMPARE(window_->snapshot()->iteration, 0);
     QVERIFY(errors_.isEmpty());
     QVERIFY(!window_->open_pattern("/no/such/pattern.svg", "21x21"));
@@ -159,8 +167,10 @@ class StudioTest : public QObject {
     // "auto" (the command line's default): 41 grid lines along the longer side, as sdog's.
     QVERIFY(window_->open_pattern(kPattern, "auto"));
     QCOMPARE(std::max(window_->model()->fine.nx(), window_->model()->fine.ny()), 41);
-    QVERIFY2(window_->windowTitle().contains(QString("%1x%2").arg(window_->model()->fine.nx()).arg(window_->model()->fine.ny())),
-             qPrintable(window_->windowTitle()));
+    QVERIFY2(
+        window_->windowTitle().contains(
+            QString("%1x%2").arg(window_->model()->fine.nx()).arg(window_->model()->fine.ny())),
+        qPrintable(window_->windowTitle()));
     QVERIFY(window_->model()->has_coarse);
   }
 
@@ -280,8 +290,8 @@ class StudioTest : public QObject {
     QVERIFY(errors_.isEmpty());
   }
 
-  // VTK's own key bindings are off in the 3D view: 3 (stereo), w and s (wireframe, surface), e (exit),
-  // f (fly to), j and t (joystick, trackball), r (reset), p (pick) and u change nothing.
+  // VTK's own key bindings are off in the 3D view: 3 (stereo), w and s (wireframe, surface), e
+  // (exit), f (fly to), j and t (joystick, trackball), r (reset), p (pick) and u change nothing.
   void ignores_vtks_own_keys() {
     open();
     window_->reset_camera();
@@ -290,7 +300,8 @@ class StudioTest : public QObject {
       std::vector<int> out;
       vtkActorCollection* actors = renderer->GetActors();
       actors->InitTraversal();
-      while (vtkActor* a = actors->GetNextActor()) out.push_back(a->GetVisibility() * 10 + a->GetProperty()->GetRepresentation());
+      while (vtkActor* a = actors->GetNextActor())
+        out.push_back(a->GetVisibility() * 10 + a->GetProperty()->GetRepresentation());
       return out;
     };
     const std::vector<int> before = representations();
@@ -305,7 +316,9 @@ class StudioTest : public QObject {
       QVERIFY2(!renderer->GetRenderWindow()->GetStereoRender(), sym);
       QVERIFY2(representations() == before, sym);
       const vis::CameraPose now = vis::camera_pose(renderer->GetActiveCamera());
-      QVERIFY2((now.position - camera.position).norm() < 1e-9 && (now.focal_point - camera.focal_point).norm() < 1e-9, sym);
+      QVERIFY2((now.position - camera.position).norm() < 1e-9 &&
+                   (now.focal_point - camera.focal_point).norm() < 1e-9,
+               sym);
       QVERIFY2(window_->isVisible(), sym);
     }
     QVERIFY(errors_.isEmpty());
@@ -326,14 +339,17 @@ class StudioTest : public QObject {
     // Pointing at a vertex shows it in the inspector; a click without moving picks it.
     const Eigen::Vector3d at = sdog::studio::to_display(window_->renderer(), p);
     event(at, false, vtkCommand::MouseMoveEvent);
-    QVERIFY2(window_->inspector_text().contains("under the mouse"), qPrintable(window_->inspector_text()));
-    event(Eigen::Vector3d(1, 1, 0), false, vtkCommand::MouseMoveEvent);  // the corner: nothing there
+    QVERIFY2(window_->inspector_text().contains("under the mouse"),
+             qPrintable(window_->inspector_text()));
+    event(Eigen::Vector3d(1, 1, 0), false,
+          vtkCommand::MouseMoveEvent);  // the corner: nothing there
     QVERIFY(!window_->inspector_text().contains("fine vertex"));
     event(at, false, vtkCommand::LeftButtonPressEvent);
     event(at, false, vtkCommand::LeftButtonReleaseEvent);
     const int picked = window_->selected_vertex();
     QVERIFY(picked >= 0);
-    QVERIFY((window_->snapshot()->state.fine.row(picked).transpose() - p).norm() < 1e-9);  // v or a copy of it
+    QVERIFY((window_->snapshot()->state.fine.row(picked).transpose() - p).norm() <
+            1e-9);  // v or a copy of it
     QVERIFY(window_->inspector_text().contains("<i>picked</i>"));
     window_->add_handle(v);
     QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(1), kWait);
@@ -342,10 +358,12 @@ class StudioTest : public QObject {
     event(at, true, vtkCommand::LeftButtonPressEvent);
     event(to, true, vtkCommand::MouseMoveEvent);
     event(to, true, vtkCommand::LeftButtonReleaseEvent);
-    QTRY_VERIFY_WITH_TIMEOUT((window_->snapshot()->constraints.handles[0].target - p).norm() > 0.1, kWait);
-    const Eigen::Vector3d moved =
-        sdog::studio::to_display(window_->renderer(), window_->snapshot()->constraints.handles[0].target);
-    QVERIFY2((moved.head<2>() - to.head<2>()).norm() < 1.5, qPrintable(QString("%1 %2").arg(moved.x()).arg(moved.y())));
+    QTRY_VERIFY_WITH_TIMEOUT((window_->snapshot()->constraints.handles[0].target - p).norm() > 0.1,
+                             kWait);
+    const Eigen::Vector3d moved = sdog::studio::to_display(
+        window_->renderer(), window_->snapshot()->constraints.handles[0].target);
+    QVERIFY2((moved.head<2>() - to.head<2>()).norm() < 1.5,
+             qPrintable(QString("%1 %2").arg(moved.x()).arg(moved.y())));
     QVERIFY(window_->snapshot()->can_undo);
     QVERIFY(errors_.isEmpty());
   }
@@ -363,17 +381,21 @@ class StudioTest : public QObject {
     };
     // Ctrl + drag: the vertices drawn inside the band are selected (checked one by one here).
     const int centre = window_->model()->fine.vertex_count() / 2;
-    const Eigen::Vector3d c = sdog::studio::to_display(window_->renderer(), fine.row(centre).transpose());
+    const Eigen::Vector3d c =
+        sdog::studio::to_display(window_->renderer(), fine.row(centre).transpose());
     // Whole pixels: the mouse's positions are.
     const int* view = window_->renderer()->GetSize();
     const double w = std::round(0.1 * view[0]), h = std::round(0.1 * view[1]);
-    const double x0 = std::round(c.x()) - w / 2, y0 = std::round(c.y()) - h / 3, x1 = x0 + w, y1 = y0 + h;
+    const double x0 = std::round(c.x()) - w / 2, y0 = std::round(c.y()) - h / 3, x1 = x0 + w,
+                 y1 = y0 + h;
     std::vector<int> inside;
     for (int v = 0; v < fine.rows(); ++v) {
-      const Eigen::Vector3d d = sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
+      const Eigen::Vector3d d =
+          sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
       if (d.x() >= x0 && d.x() <= x1 && d.y() >= y0 && d.y() <= y1) inside.push_back(v);
     }
-    QVERIFY2(inside.size() >= 4 && inside.size() < size_t(fine.rows()) / 4, qPrintable(QString::number(inside.size())));
+    QVERIFY2(inside.size() >= 4 && inside.size() < size_t(fine.rows()) / 4,
+             qPrintable(QString::number(inside.size())));
     event(x1, y1, true, false, vtkCommand::LeftButtonPressEvent);  // from the top right corner
     event(x0 + 10, y0 + 10, true, false, vtkCommand::MouseMoveEvent);
     event(x0, y0, true, false, vtkCommand::MouseMoveEvent);
@@ -381,7 +403,8 @@ class StudioTest : public QObject {
     QCOMPARE(window_->selection(), inside);
     // With Shift as well the band adds to the selection.
     const int corner = fine.rows() - 1;
-    const Eigen::Vector3d k = sdog::studio::to_display(window_->renderer(), fine.row(corner).transpose());
+    const Eigen::Vector3d k =
+        sdog::studio::to_display(window_->renderer(), fine.row(corner).transpose());
     event(k.x() - 3, k.y() - 3, true, true, vtkCommand::LeftButtonPressEvent);
     event(k.x() + 3, k.y() + 3, true, true, vtkCommand::LeftButtonReleaseEvent);
     QVERIFY(window_->selection().size() > inside.size());
@@ -415,7 +438,8 @@ class StudioTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(target_off(end) < 1.5, kWait);
     // The drag is one edit: one undo puts the target back, the next removes the handles.
     window_->undo();
-    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[handle].target == rest, kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles[handle].target == rest,
+                             kWait);
     window_->undo();
     QTRY_COMPARE_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size(), size_t(0), kWait);
     QVERIFY(errors_.isEmpty());
@@ -446,13 +470,15 @@ class StudioTest : public QObject {
     QApplication::processEvents();
     const auto& fine = window_->snapshot()->state.fine;
     const int v = window_->model()->fine.vertex_count() / 2;
-    const Eigen::Vector3d d = sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
+    const Eigen::Vector3d d =
+        sdog::studio::to_display(window_->renderer(), fine.row(v).transpose());
     const int picked = sdog::studio::pick_point(window_->renderer(), fine, d.x(), d.y(), 2);
     QVERIFY(picked >= 0);
     QVERIFY((fine.row(picked) - fine.row(v)).norm() < 1e-9);  // v or a copy of it on a crease
     window_->select_vertex(v);
-    QVERIFY2(window_->inspector_text().contains("fine vertex</b></td><td>" + QString::number(v) + "<"),
-             qPrintable(window_->inspector_text()));
+    QVERIFY2(
+        window_->inspector_text().contains("fine vertex</b></td><td>" + QString::number(v) + "<"),
+        qPrintable(window_->inspector_text()));
     QVERIFY(window_->inspector_text().contains("coarse twin"));
     QVERIFY(window_->inspector_text().contains("DOG residual"));
   }
@@ -462,13 +488,16 @@ class StudioTest : public QObject {
     const int k = 0;
     const sdog::Fold drawn = fold_of(*window_, k);
     const std::optional<double> drawn_angle = angle_of(*window_, k);
-    const sdog::Fold flipped = drawn == sdog::Fold::kMountain ? sdog::Fold::kValley : sdog::Fold::kMountain;
+    const sdog::Fold flipped =
+        drawn == sdog::Fold::kMountain ? sdog::Fold::kValley : sdog::Fold::kMountain;
     click_crease(k);
     QCOMPARE(window_->selected_creases(), std::vector<int>{k});
     const auto& picked_curve = window_->model()->fine.stitching.curves[k].points;
-    QVERIFY(std::find(picked_curve.begin(), picked_curve.end(), window_->picked_crease_point()) != picked_curve.end());
+    QVERIFY(std::find(picked_curve.begin(), picked_curve.end(), window_->picked_crease_point()) !=
+            picked_curve.end());
     QVERIFY2(window_->inspector_text().contains("crease 0"), qPrintable(window_->inspector_text()));
-    QVERIFY2(window_->inspector_text().contains("four_corner_arcs.svg:"), qPrintable(window_->inspector_text()));
+    QVERIFY2(window_->inspector_text().contains("four_corner_arcs.svg:"),
+             qPrintable(window_->inspector_text()));
     QVERIFY(window_->status_text().contains("crease 0 picked"));
 
     window_->set_crease_fold(flipped);
@@ -480,7 +509,10 @@ class StudioTest : public QObject {
     // The run configuration carries the edit; the crease-curves overlay colours the crease.
     QVERIFY(!window_->run_config().creases.empty());
     QCOMPARE(window_->run_config().creases.back().curve, std::optional<int>(k));
-    vtkDataArray* codes = window_->scene()->layer_data(vis::Layer::kCreaseCurves)->GetCellData()->GetArray("assignment");
+    vtkDataArray* codes = window_->scene()
+                              ->layer_data(vis::Layer::kCreaseCurves)
+                              ->GetCellData()
+                              ->GetArray("assignment");
     QVERIFY(codes != nullptr);
     QCOMPARE(static_cast<int>(codes->GetTuple1(k)), static_cast<int>(flipped));
 
@@ -497,7 +529,8 @@ class StudioTest : public QObject {
       QCOMPARE(site.target_degrees > 0, flipped == sdog::Fold::kValley);  // valleys positive
     }
     QVERIFY(sites > 0);
-    QVERIFY(window_->snapshot()->state.fine.col(2).cwiseAbs().maxCoeff() > 1e-6);  // off the flat sheet
+    QVERIFY(window_->snapshot()->state.fine.col(2).cwiseAbs().maxCoeff() >
+            1e-6);  // off the flat sheet
 
     // Undo takes back the angle, then the assignment; redo brings both back.
     window_->undo();
@@ -508,7 +541,8 @@ class StudioTest : public QObject {
     QCOMPARE(angle_of(*window_, k), drawn_angle);
     window_->redo();
     window_->redo();
-    QTRY_VERIFY_WITH_TIMEOUT(fold_of(*window_, k) == flipped && angle_of(*window_, k) == 60.0, kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(fold_of(*window_, k) == flipped && angle_of(*window_, k) == 60.0,
+                             kWait);
 
     // A workspace keeps the assignment.
     QTemporaryDir dir;
@@ -532,21 +566,25 @@ class StudioTest : public QObject {
     const QString config = dir.filePath("run.json");
     QFile file(config);
     QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({"scenario": "fold", "creases": [{"curve": 0, "fold": "mountain", "angle": 45}]})");
+    file.write(
+        R"({"scenario": "fold", "creases": [{"curve": 0, "fold": "mountain", "angle": 45}]})");
     file.close();
     QVERIFY(window_->load_run_config(config));
-    QTRY_VERIFY_WITH_TIMEOUT(fold_of(*window_, 0) == sdog::Fold::kMountain && angle_of(*window_, 0) == 45.0, kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        fold_of(*window_, 0) == sdog::Fold::kMountain && angle_of(*window_, 0) == 45.0, kWait);
     // The same pattern at another resolution keeps it ...
     QVERIFY(window_->change_resolution("23x23"));
     QCOMPARE(window_->run_config().creases.size(), size_t(1));
-    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() && fold_of(*window_, 0) == sdog::Fold::kMountain, kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() && fold_of(*window_, 0) == sdog::Fold::kMountain,
+                             kWait);
     // ... another pattern does not, and the status bar says so.
     const QString other = QString(SDOG_DATASETS_DIR) + "/one_curve.svg";
     QVERIFY(window_->open_pattern(other, "21x21"));
     QVERIFY(window_->run_config().creases.empty());
     QCOMPARE(window_->run_config().scenario, sdog::ScenarioKind::kCorners);
-    QVERIFY2(window_->status_text().contains("run.json") && window_->status_text().contains("dropped"),
-             qPrintable(window_->status_text()));
+    QVERIFY2(
+        window_->status_text().contains("run.json") && window_->status_text().contains("dropped"),
+        qPrintable(window_->status_text()));
     // Crease assignments set in the studio belong to their pattern as well.
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
     click_crease(0);
@@ -554,8 +592,9 @@ class StudioTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(!window_->run_config().creases.empty(), kWait);
     QVERIFY(window_->open_pattern(kPattern, "21x21"));
     QVERIFY(window_->run_config().creases.empty());
-    QVERIFY2(window_->status_text().contains("crease assignments set for one_curve.svg are dropped"),
-             qPrintable(window_->status_text()));
+    QVERIFY2(
+        window_->status_text().contains("crease assignments set for one_curve.svg are dropped"),
+        qPrintable(window_->status_text()));
     QVERIFY(errors_.isEmpty());
   }
 
@@ -586,9 +625,10 @@ class StudioTest : public QObject {
     auto* sweep = qobject_cast<QComboBox*>(form->field("patch sweep"));
     auto* sharpness = qobject_cast<QDoubleSpinBox*>(form->field("twolevel fold sharpness"));
     auto* concurrent = qobject_cast<QCheckBox*>(form->field("twolevel concurrent coarse step"));
-    auto* coarse_concurrent = qobject_cast<QCheckBox*>(form->field("coarse concurrent coarse step"));
-    QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && sharpness && concurrent &&
-            coarse_concurrent && !form->field("no such field"));
+    auto* coarse_concurrent =
+        qobject_cast<QCheckBox*>(form->field("coarse concurrent coarse step"));
+    QVERIFY(isometry && kkt && hold && rho && links && backend && sweep && sharpness &&
+            concurrent && coarse_concurrent && !form->field("no such field"));
     QCOMPARE(sharpness->value(), window_->run_config().twolevel.fold_sharpness);
     QCOMPARE(concurrent->isChecked(), window_->run_config().twolevel.concurrent_coarse);
     QCOMPARE(coarse_concurrent->isChecked(), window_->run_config().coarse.concurrent_coarse);
@@ -691,12 +731,14 @@ class StudioTest : public QObject {
     vtkDataArray* rgb = reader->GetOutput()->GetPointData()->GetArray("RGB");
     QVERIFY(rgb != nullptr);
     const sdog::DogModel& m = *window_->model();
-    const sdog::TrimmedSurface surface = sdog::trimmed_surface(m.fine, window_->snapshot()->state.fine);
-    const auto colours =
-        vis::surface_colours(vis::Layer::kDogResidual, surface, vis::frame_arrays(m, window_->snapshot()->state.fields));
+    const sdog::TrimmedSurface surface =
+        sdog::trimmed_surface(m.fine, window_->snapshot()->state.fine);
+    const auto colours = vis::surface_colours(
+        vis::Layer::kDogResidual, surface, vis::frame_arrays(m, window_->snapshot()->state.fields));
     QCOMPARE(rgb->GetNumberOfTuples(), static_cast<vtkIdType>(colours.size()));
     for (size_t v = 0; v < colours.size(); ++v)
-      for (int k = 0; k < 3; ++k) QCOMPARE(rgb->GetComponent(static_cast<vtkIdType>(v), k), double(colours[v][k]));
+      for (int k = 0; k < 3; ++k)
+        QCOMPARE(rgb->GetComponent(static_cast<vtkIdType>(v), k), double(colours[v][k]));
     QVERIFY(errors_.isEmpty());
     QVERIFY(!window_->export_surface("/proc/no/such/dir/shape.obj"));
     QCOMPARE(errors_.size(), 1);
@@ -717,7 +759,8 @@ class StudioTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kWait);
     QCOMPARE(written[0][1].toInt(), 4);  // frame_0000 (the start) to frame_0003
     for (int k = 0; k <= 3; ++k) {
-      QVERIFY(QFileInfo(QString("%1/frame_%2.vtu").arg(frames).arg(k, 4, 10, QChar('0'))).size() > 1000);
+      QVERIFY(QFileInfo(QString("%1/frame_%2.vtu").arg(frames).arg(k, 4, 10, QChar('0'))).size() >
+              1000);
       QVERIFY(!QImage(QString("%1/frame_%2.png").arg(frames).arg(k, 4, 10, QChar('0'))).isNull());
     }
     QVERIFY(QFileInfo(frames + "/frames.pvd").size() > 100);
@@ -767,28 +810,36 @@ class StudioTest : public QObject {
     request.given = [](const std::string&) { return false; };
     const sdog::cli::SavedState saved = sdog::cli::load_saved_state(request);
     auto model = std::make_shared<const sdog::DogModel>(sdog::cli::saved_state_model(saved));
-    QVERIFY(window_->open_state(model, sdog::cli::saved_workspace(saved, *model, std::nullopt), run + "/run.json"));
+    QVERIFY(window_->open_state(model, sdog::cli::saved_workspace(saved, *model, std::nullopt),
+                                run + "/run.json"));
     QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot() != nullptr, kWait);
     QCOMPARE(iteration(), 10);  // half way: the handles' targets are those of t = 0.5
     QCOMPARE(window_->snapshot()->mode, std::string("standard"));
     for (vis::Layer l : enum_values<vis::Layer>()) window_->set_layer(l, false);
-    for (vis::Layer l : {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kCreaseCurves}) window_->set_layer(l, true);
+    for (vis::Layer l : {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kCreaseCurves})
+      window_->set_layer(l, true);
     window_->set_view(vis::View::kThreeD);
     const QString camera = dir.filePath("camera.json"), studio = dir.filePath("studio.png");
     QVERIFY(window_->save_camera(camera));
     QVERIFY(window_->export_screenshot(studio, {640, 400}, false));
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join("\n")));
 
-    const QStringList same = {"--overlay", "dog-residual,handles,crease-curves", "--view", "3d", "--size", "640x400",
-                              "--camera", camera, "--caption", ""};
+    const QStringList same = {"--overlay", "dog-residual,handles,crease-curves",
+                              "--view",    "3d",
+                              "--size",    "640x400",
+                              "--camera",  camera,
+                              "--caption", ""};
     const QString drawn = dir.filePath("render.png"), other = dir.filePath("other.png");
     QVERIFY(sdog_render(QStringList{"--frame", frame, "--out", drawn} + same));
     QVERIFY(sdog_render(QStringList{"--frame", run + "/frame_0020.vtu", "--out", other} + same));
     const auto expected = sdog::test::read_png(studio.toStdString());
-    const long differ = sdog::test::differing_pixels(sdog::test::read_png(drawn.toStdString()), expected, kLevel);
+    const long differ =
+        sdog::test::differing_pixels(sdog::test::read_png(drawn.toStdString()), expected, kLevel);
     QVERIFY2(differ >= 0 && differ <= kPixels,
-             qPrintable(QString("sdog render differs from the studio's export in %1 pixels").arg(differ)));
-    QVERIFY(sdog::test::differing_pixels(sdog::test::read_png(other.toStdString()), expected, kLevel) > 1000);
+             qPrintable(
+                 QString("sdog render differs from the studio's export in %1 pixels").arg(differ)));
+    QVERIFY(sdog::test::differing_pixels(sdog::test::read_png(other.toStdString()), expected,
+                                         kLevel) > 1000);
   }
 
   // docs/reference/studio.md lists the shortcut of every action of the window, as Qt writes it.
@@ -802,7 +853,8 @@ class StudioTest : public QObject {
         const QString text = key.toString(QKeySequence::PortableText);
         ++shortcuts;
         QVERIFY2(page.contains("`" + text + "`"),
-                 qPrintable("the shortcut " + text + " of " + action->text() + " is not in docs/reference/studio.md"));
+                 qPrintable("the shortcut " + text + " of " + action->text() +
+                            " is not in docs/reference/studio.md"));
       }
     }
     QVERIFY(shortcuts > 20);
@@ -812,8 +864,8 @@ class StudioTest : public QObject {
     QTemporaryDir dir;
     const QString png = dir.filePath("studio.png");
     QProcess studio;
-    studio.start(SDOG_STUDIO_EXE, {"--screenshot", png, kPattern, "--res", "21x21", "--size", "800x500", "--overlay",
-                                   "dog-residual,handles", "--iters", "2"});
+    studio.start(SDOG_STUDIO_EXE, {"--screenshot", png, kPattern, "--res", "21x21", "--size",
+                                   "800x500", "--overlay", "dog-residual,handles", "--iters", "2"});
     QVERIFY(studio.waitForFinished(kWait));
     QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
     const QImage image(png);
@@ -826,26 +878,29 @@ class StudioTest : public QObject {
     QVERIFY(!QFileInfo::exists(dir.filePath("bad.png")));
   }
 
-  // sdog-studio --frame and --run: the saved state's screenshot, and bad input refused with one line
-  // naming the file (exit 1) or the options (exit 2), nothing written.
+  // sdog-studio --frame and --run: the saved state's screenshot, and bad input refused with one
+  // line naming the file (exit 1) or the options (exit 2), nothing written.
   void command_line_opens_a_saved_frame() {
     QTemporaryDir dir;
     const QString run = saved_run(dir);
     const QStringList shot = {"--size", "800x500", "--overlay", "dog-residual,handles"};
     QProcess studio;
     studio.start(SDOG_STUDIO_EXE, QStringList{"--frame", run + "/frame_0010.vtu", "--screenshot",
-                                              dir.filePath("frame.png")} + shot);
+                                              dir.filePath("frame.png")} +
+                                      shot);
     QVERIFY(studio.waitForFinished(kWait));
     QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
     QCOMPARE(QImage(dir.filePath("frame.png")).size(), QSize(800, 500));
-    studio.start(SDOG_STUDIO_EXE, QStringList{"--run", run, "--screenshot", dir.filePath("last.png")} + shot);
+    studio.start(SDOG_STUDIO_EXE,
+                 QStringList{"--run", run, "--screenshot", dir.filePath("last.png")} + shot);
     QVERIFY(studio.waitForFinished(kWait));
     QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
     QVERIFY(QImage(dir.filePath("last.png")) != QImage(dir.filePath("frame.png")));
 
     const QList<std::pair<QStringList, QString>> bad = {
         {{"--frame", dir.filePath("none.vtu")}, dir.filePath("none.vtu") + ": no such file"},
-        {{"--run", run, "--iteration", "15"}, "no frame of iteration 15; the saved iterations are 0 to 20 every 10, and 25"},
+        {{"--run", run, "--iteration", "15"},
+         "no frame of iteration 15; the saved iterations are 0 to 20 every 10, and 25"},
         {{"--frame", run + "/frame_0010.vtu", "--res", "25x25"}, "is not a frame of"}};
     for (const auto& [args, message] : bad) {
       studio.start(SDOG_STUDIO_EXE, args + QStringList{"--screenshot", dir.filePath("bad.png")});
@@ -865,7 +920,8 @@ class StudioTest : public QObject {
   // section, not checked here: timing is not a unit test's business).
   void command_line_frame_rate() {
     QProcess studio;
-    studio.start(SDOG_STUDIO_EXE, {"--measure-fps", "1", kPattern, "--res", "21x21", "--size", "800x500"});
+    studio.start(SDOG_STUDIO_EXE,
+                 {"--measure-fps", "1", kPattern, "--res", "21x21", "--size", "800x500"});
     QVERIFY(studio.waitForFinished(kWait));
     const QString out = studio.readAllStandardOutput();
     QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
@@ -884,7 +940,8 @@ class StudioTest : public QObject {
     QVERIFY(bad.readAllStandardError().contains("needs PATTERN"));
     // Without a display: one message instead of Qt's abort; --help needs none.
     QProcessEnvironment no_display = QProcessEnvironment::systemEnvironment();
-    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) no_display.remove(name);
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+      no_display.remove(name);
     QProcess headless;
     headless.setProcessEnvironment(no_display);
     headless.start(SDOG_STUDIO_EXE, {kPattern});

@@ -4,28 +4,28 @@
 // are numbered consecutively and exist while it runs, a scenario corner dragged like a handle,
 // undo entries that name their edit, the chart's marks and "done", the wireframe's default by
 // mesh size, and the shortcuts and mouse actions listed in Help and in the docs.
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
-#include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 #include <cmath>
 #include <memory>
-#include <vtkCamera.h>
-#include <vtkCommand.h>
-#include <vtkRenderWindowInteractor.h>
-#include <vtkRenderer.h>
 
 #include "app/blas_kernels.h"
 #include "ui/studio/click_drag_style.h"
@@ -45,7 +45,9 @@ const QString kPattern = QString(SDOG_DATASETS_DIR) + "/four_corner_arcs.svg";
 constexpr int kWait = 120000;  // ms: the machine may be busy
 
 /// Whether a pixel is the view's white background.
-bool background(QRgb p) { return qRed(p) >= 250 && qGreen(p) >= 250 && qBlue(p) >= 250; }
+bool background(QRgb p) {
+  return qRed(p) >= 250 && qGreen(p) >= 250 && qBlue(p) >= 250;
+}
 
 /// The largest share of the drawing area's width or height (the view left of the legend column)
 /// that the projected points span, and whether all of them lie inside the view.
@@ -130,7 +132,8 @@ class WorkdayTest : public QObject {
     QCOMPARE(questions_.size(), 1);
     QVERIFY(questions_[0].contains("iteration 3"));
     QCOMPARE(window_->run_config().weights.isometry, 500.0);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->status_text().contains("applied to the shape of iteration 3"), kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->status_text().contains("applied to the shape of iteration 3"),
+                             kWait);
     QTest::qWait(300);
     QCOMPARE(iteration(), 3);
     QVERIFY((window_->snapshot()->state.fine - shape).norm() < 1e-12);
@@ -271,22 +274,26 @@ class WorkdayTest : public QObject {
     QCOMPARE(dialog.size().width, 640);
     QCOMPARE(dialog.size().height, 400);
     QVERIFY(dialog.transparent());
-    QVERIFY(window_->export_screenshot(dialog.path(), dialog.size(), dialog.transparent(), dialog.frame()));
+    QVERIFY(window_->export_screenshot(dialog.path(), dialog.size(), dialog.transparent(),
+                                       dialog.frame()));
     const QImage framed(dir.filePath("shot.png"));
     QCOMPARE(framed.size(), QSize(640, 400));
     QVERIFY(window_->status_text().contains(dir.filePath("shot.png")));
     dialog.framing_field()->setCurrentIndex(1);
     QVERIFY(!dialog.frame());
-    QVERIFY(window_->export_screenshot(dir.filePath("as_is.png"), dialog.size(), true, dialog.frame()));
+    QVERIFY(
+        window_->export_screenshot(dir.filePath("as_is.png"), dialog.size(), true, dialog.frame()));
     // The sheet's extent in each picture (opaque pixels left of the legend column).
     auto extent = [](const QImage& image) {
       int lo_x = image.width(), hi_x = -1, lo_y = image.height(), hi_y = -1;
       for (int y = 0; y < image.height(); ++y)
         for (int x = 0; x < int(0.72 * image.width()); ++x)
           if (qAlpha(image.pixel(x, y)) > 0) {
-            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y),
+            hi_y = std::max(hi_y, y);
           }
-      return std::max((hi_x - lo_x) / (0.75 * image.width()), (hi_y - lo_y) / double(image.height()));
+      return std::max((hi_x - lo_x) / (0.75 * image.width()),
+                      (hi_y - lo_y) / double(image.height()));
     };
     const double filled = extent(framed), small = extent(QImage(dir.filePath("as_is.png")));
     QVERIFY2(filled > 0.75, qPrintable(QString::number(filled)));
@@ -310,11 +317,13 @@ class WorkdayTest : public QObject {
     window_->play();
     auto check_files = [&](const QString& when, int n) {
       for (int k = 0; k < n; ++k)
-        for (const QString& name : {QString("frame_%1.png"), QString("frame_%1.vtu"), QString("surface_%1.vtp")}) {
+        for (const QString& name :
+             {QString("frame_%1.png"), QString("frame_%1.vtu"), QString("surface_%1.vtp")}) {
           const QString file = frames + "/" + name.arg(k, 4, 10, QChar('0'));
           QVERIFY2(QFileInfo(file).size() > 100, qPrintable(when + ": " + file));
         }
-      QVERIFY2(!QFileInfo::exists(frames + QString("/frame_%1.png").arg(n, 4, 10, QChar('0'))), qPrintable(when));
+      QVERIFY2(!QFileInfo::exists(frames + QString("/frame_%1.png").arg(n, 4, 10, QChar('0'))),
+               qPrintable(when));
       QFile csv(frames + "/frames.csv");
       QVERIFY(csv.open(QIODevice::ReadOnly));
       const QStringList rows = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
@@ -330,7 +339,8 @@ class WorkdayTest : public QObject {
     };
     QTRY_VERIFY_WITH_TIMEOUT(window_->frames_recorded() >= 4, kWait);
     check_files("while recording", window_->frames_recorded());
-    QVERIFY2(window_->recording_indicator().contains("REC"), qPrintable(window_->recording_indicator()));
+    QVERIFY2(window_->recording_indicator().contains("REC"),
+             qPrintable(window_->recording_indicator()));
     QVERIFY(window_->recording_indicator().contains(QString::number(window_->frames_recorded())));
     while (clock.elapsed() < 10000 && window_->playing()) QTest::qWait(100);
     window_->pause();
@@ -399,16 +409,19 @@ class WorkdayTest : public QObject {
     double camera_after[3];
     window_->renderer()->GetActiveCamera()->GetPosition(camera_after);
     QCOMPARE(camera_after[0], camera_before[0]);  // the drag did not pan
-    QTRY_VERIFY_WITH_TIMEOUT(window_->snapshot()->constraints.handles.size() == 1 &&
-                                 (window_->snapshot()->constraints.handles[0].target - drawn[0].target).norm() > 0.1,
-                             kWait);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->snapshot()->constraints.handles.size() == 1 &&
+            (window_->snapshot()->constraints.handles[0].target - drawn[0].target).norm() > 0.1,
+        kWait);
     const auto& handle = window_->snapshot()->constraints.handles[0];
     QCOMPARE(handle.vertex, vertex);
     const Eigen::Vector3d dropped = sdog::studio::to_display(window_->renderer(), handle.target);
-    QVERIFY2((dropped.head<2>() - to.head<2>()).norm() < 1.5, qPrintable(QString("%1 %2").arg(dropped.x()).arg(dropped.y())));
+    QVERIFY2((dropped.head<2>() - to.head<2>()).norm() < 1.5,
+             qPrintable(QString("%1 %2").arg(dropped.x()).arg(dropped.y())));
     // Still one target per corner.
     int on_vertex = 0;
-    for (const auto& h : window_->snapshot()->state.constraints.handles) on_vertex += h.vertex == vertex;
+    for (const auto& h : window_->snapshot()->state.constraints.handles)
+      on_vertex += h.vertex == vertex;
     QCOMPARE(on_vertex, 1);
     steps(5);
     const Eigen::Vector3d moved = window_->snapshot()->state.fine.row(vertex).transpose();
@@ -451,7 +464,8 @@ class WorkdayTest : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(window_->status_text().contains("done"), kWait);
     QTRY_VERIFY_WITH_TIMEOUT(!window_->playing(), kWait);
     QStringList marks;
-    for (const auto& m : window_->chart()->marks()) marks << QString("%1 %2").arg(m.iteration).arg(m.label);
+    for (const auto& m : window_->chart()->marks())
+      marks << QString("%1 %2").arg(m.iteration).arg(m.label);
     QVERIFY2(marks.contains("2 mode vsadmm"), qPrintable(marks.join("; ")));
     QVERIFY2(marks.filter("mode standard").size() == 1, qPrintable(marks.join("; ")));
     QVERIFY2(marks.contains("6 scenario end"), qPrintable(marks.join("; ")));
@@ -485,22 +499,26 @@ class WorkdayTest : public QObject {
     for (const QAction* a : window_->findChildren<QAction*>())
       for (const QKeySequence& key : a->shortcuts()) {
         ++shortcuts;
-        QVERIFY2(help.contains("<b>" + key.toString(QKeySequence::NativeText).toHtmlEscaped() + "</b>"),
-                 qPrintable(key.toString() + " of " + a->text()));
+        QVERIFY2(
+            help.contains("<b>" + key.toString(QKeySequence::NativeText).toHtmlEscaped() + "</b>"),
+            qPrintable(key.toString() + " of " + a->text()));
       }
     QVERIFY(shortcuts > 25);
-    for (const QString& name : {QString(SDOG_DOCS_DIR) + "/reference/studio.md", QString(SDOG_DOCS_DIR) + "/../README.md"}) {
+    for (const QString& name : {QString(SDOG_DOCS_DIR) + "/reference/studio.md",
+                                QString(SDOG_DOCS_DIR) + "/../README.md"}) {
       QFile file(name);
       QVERIFY(file.open(QIODevice::ReadOnly));
       const QString page = QString::fromUtf8(file.readAll());
       for (const auto& [action, effect] : sdog::studio::mouse_actions()) {
         QVERIFY2(help.contains(QString(action).toHtmlEscaped()), action);
-        QVERIFY2(page.contains(QString("| %1 |").arg(action)), qPrintable(name + " lacks the mouse action " + action));
+        QVERIFY2(page.contains(QString("| %1 |").arg(action)),
+                 qPrintable(name + " lacks the mouse action " + action));
       }
       for (const QAction* a : window_->findChildren<QAction*>())
         for (const QKeySequence& key : a->shortcuts()) {
           const QString text = key.toString(QKeySequence::PortableText);
-          QVERIFY2(page.contains("`" + text + "`"), qPrintable(name + " lacks the shortcut " + text + " of " + a->text()));
+          QVERIFY2(page.contains("`" + text + "`"),
+                   qPrintable(name + " lacks the shortcut " + text + " of " + a->text()));
         }
     }
   }

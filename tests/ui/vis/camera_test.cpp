@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "base/errors.h"
-#include "ui/vis/camera.h"
 #include "tests/ui/vis/scene_fixture.h"
+#include "ui/vis/camera.h"
 
 namespace sdog {
 namespace {
@@ -35,7 +35,8 @@ Eigen::Vector2d project(const vis::CameraPose& pose, const Eigen::Vector3d& p, d
   const Eigen::Vector3d up = back.cross(right);
   const Eigen::Vector3d rel = p - pose.position;
   const double depth = -rel.dot(back), t = std::tan(0.5 * pose.view_angle * M_PI / 180);
-  return {rel.dot(right) / (depth * t * aspect) - pose.window_center.x(), rel.dot(up) / (depth * t) - pose.window_center.y()};
+  return {rel.dot(right) / (depth * t * aspect) - pose.window_center.x(),
+          rel.dot(up) / (depth * t) - pose.window_center.y()};
 }
 
 TEST(Camera, TheThreeDCameraFitsEveryCornerTightly) {
@@ -43,10 +44,12 @@ TEST(Camera, TheThreeDCameraFitsEveryCornerTightly) {
   for (bool legends : {true, false}) {
     const double aspect = 1.6;
     const vis::CameraPose pose = vis::three_d_camera(b, aspect, legends);
-    const double right_edge = legends ? 2 * 0.75 - 1 : 1;  // the legend column starts at 0.75 of the width
+    const double right_edge =
+        legends ? 2 * 0.75 - 1 : 1;  // the legend column starts at 0.75 of the width
     double widest = 0, tallest = 0;
     for (int k = 0; k < 8; ++k) {
-      const Eigen::Vector2d q = project(pose, {b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]}, aspect);
+      const Eigen::Vector2d q =
+          project(pose, {b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)]}, aspect);
       EXPECT_GE(q.x(), -1) << k;
       EXPECT_LE(q.x(), right_edge + 1e-9) << k;
       EXPECT_GE(q.y(), -1) << k;
@@ -83,11 +86,13 @@ TEST(Camera, SavedCameraLoadsBackAndBadFilesSayWhy) {
     vis::load_camera(bad);
     FAIL() << "no exception";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(bad + ": $.focal_point: missing"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(bad + ": $.focal_point: missing"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(vis::load_camera(test::write_file(dir, "text.json", "not json")), InputError);
   EXPECT_THROW(vis::load_camera(dir + "/missing.json"), InputError);
-  EXPECT_THROW(vis::save_camera(pose, test::write_file(dir, "file", "x") + "/sub/camera.json"), OutputError);
+  EXPECT_THROW(vis::save_camera(pose, test::write_file(dir, "file", "x") + "/sub/camera.json"),
+               OutputError);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ inline int pixels_near(vtkImageData* img, const std::array<double, 3>& c) {
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       double d = 0;
-      for (int k = 0; k < 3; ++k) d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
+      for (int k = 0; k < 3; ++k)
+        d += std::abs(img->GetScalarComponentAsDouble(x, y, 0, k) - 255 * c[k]);
       count += d < 12;
     }
   return count;
@@ -65,7 +66,8 @@ inline long differing_pixels(vtkImageData* a, vtkImageData* b, int level = 0) {
     for (int x = 0; x < da[0]; ++x) {
       bool same = true;
       for (int k = 0; k < channels; ++k)
-        same = same && std::abs(a->GetScalarComponentAsDouble(x, y, 0, k) - b->GetScalarComponentAsDouble(x, y, 0, k)) <= level;
+        same = same && std::abs(a->GetScalarComponentAsDouble(x, y, 0, k) -
+                                b->GetScalarComponentAsDouble(x, y, 0, k)) <= level;
       count += !same;
     }
   return count;
@@ -116,7 +118,8 @@ inline std::string compare_with_baseline(const std::string& image, const std::st
   writer->SetInputConnection(diff->GetOutputPort());
   writer->Write();
   return "image differs from " + baseline + " (thresholded error " + std::to_string(error) + " > " +
-         std::to_string(limit) + "); the new image is kept as " + kept + ", the difference as " + diff_path;
+         std::to_string(limit) + "); the new image is kept as " + kept + ", the difference as " +
+         diff_path;
 }
 
 }  // namespace sdog::test

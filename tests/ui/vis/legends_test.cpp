@@ -3,12 +3,12 @@
 // sizes in every block; a readable patches legend for many patches; side-by-side titles that do
 // not run into each other.
 #include <gtest/gtest.h>
-#include <vtkLookupTable.h>
-#include <vtkScalarBarActor.h>
-#include <vtkSmartPointer.h>
 #include <vtkCamera.h>
+#include <vtkLookupTable.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
 #include <vtkTextProperty.h>
 
 #include <set>
@@ -25,7 +25,8 @@ namespace {
 struct Legends : ::testing::Test {
   vtkSmartPointer<vtkLookupTable> lut = vtkSmartPointer<vtkLookupTable>::New();
   Legend bar = Legend::scalar_bar("DOG residual (log10)", lut);
-  Legend types = Legend::categories("vertex type", {{"link", {0, 1, 0}}, {"crease point", {1, 0, 1}}});
+  Legend types =
+      Legend::categories("vertex type", {{"link", {0, 1, 0}}, {"crease point", {1, 0, 1}}});
   int title_font() const { return bar.bar()->GetTitleTextProperty()->GetFontSize(); }
 };
 
@@ -40,7 +41,8 @@ TEST_F(Legends, ShrinkSoThatTheWidestTitleFitsTheColumn) {
   const int f = title_font();
   EXPECT_LT(f, 20);
   EXPECT_LE(bar.title_width_pixels(f), (0.99 - kLegendColumnLeft) * width);
-  EXPECT_GT(bar.title_width_pixels(f + 1), (0.99 - kLegendColumnLeft) * width);  // no smaller than needed
+  EXPECT_GT(bar.title_width_pixels(f + 1),
+            (0.99 - kLegendColumnLeft) * width);  // no smaller than needed
 }
 
 TEST_F(Legends, ShrinkToTheViewportHeight) {
@@ -51,7 +53,8 @@ TEST_F(Legends, ShrinkToTheViewportHeight) {
 }
 
 TEST_F(Legends, EveryBlockHasTheSameTitleAndLabelSizes) {
-  Legend handles = Legend::categories("constraints", {{"handle", {1, 0.5, 0}}, {"target", {0, 0, 1}}});
+  Legend handles =
+      Legend::categories("constraints", {{"handle", {1, 0.5, 0}}, {"target", {0, 0, 1}}});
   for (const int width : {1600, 500}) {
     stack_legends({&bar, &types, &handles}, width, 1000, 20);
     const int title = title_font(), label = bar.bar()->GetLabelTextProperty()->GetFontSize();
@@ -68,7 +71,8 @@ TEST_F(Legends, EveryBlockHasTheSameTitleAndLabelSizes) {
 }
 
 TEST_F(Legends, ShrinkSoThatTheWidestEntryFitsTheColumn) {
-  Legend wide = Legend::categories("x", {{"an entry far wider than the column of legends", {1, 0, 0}}});
+  Legend wide =
+      Legend::categories("x", {{"an entry far wider than the column of legends", {1, 0, 0}}});
   const int width = 1000;
   stack_legends({&wide}, width, 1000, 20);
   const int f = wide.title()->GetTextProperty()->GetFontSize();
@@ -111,11 +115,15 @@ TEST(PanelTitles, DoNotOverlapInANarrowSideBySideView) {
     fine->GetBoundingBox(renderer, a);
     coarse->GetBoundingBox(renderer, b);
     const double fine_x = fine->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer)[0];
-    const double coarse_x = coarse->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer)[0];
+    const double coarse_x =
+        coarse->GetPositionCoordinate()->GetComputedDoubleDisplayValue(renderer)[0];
     EXPECT_GT(a[1] - a[0], 10);
-    EXPECT_LT(fine_x + a[1], coarse_x + b[0]) << size.width << "x" << size.height << ": the fine title ends at "
-                                              << fine_x + a[1] << ", the coarse one starts at " << coarse_x + b[0];
-    if (size.width == 1600) EXPECT_EQ(fine->GetTextProperty()->GetFontSize(), 20);  // room: not shrunk
+    EXPECT_LT(fine_x + a[1], coarse_x + b[0])
+        << size.width << "x" << size.height << ": the fine title ends at " << fine_x + a[1]
+        << ", the coarse one starts at " << coarse_x + b[0];
+    if (size.width == 1600) {
+      EXPECT_EQ(fine->GetTextProperty()->GetFontSize(), 20);  // room: not shrunk
+    }
   }
 }
 

@@ -24,7 +24,8 @@ int distinct_colours(vtkImageData* img) {
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       long key = 0;
-      for (int k = 0; k < 3; ++k) key = 256 * key + static_cast<long>(img->GetScalarComponentAsDouble(x, y, 0, k));
+      for (int k = 0; k < 3; ++k)
+        key = 256 * key + static_cast<long>(img->GetScalarComponentAsDouble(x, y, 0, k));
       colours.insert(key);
     }
   return static_cast<int>(colours.size());
@@ -56,7 +57,7 @@ TEST(LineChart, WritesAPngOfTheSizeWithEverySeriesColour) {
   EXPECT_EQ(dims[1], 500);
   for (const auto& s : chart.series) EXPECT_GT(pixels_near(img, *s.colour), 100) << s.name;
   EXPECT_GT(pixels_near(img, {1, 1, 1}), 900 * 500 / 2);  // white background
-  EXPECT_GT(distinct_colours(img), 8);                      // lines, text, antialiased glyphs
+  EXPECT_GT(distinct_colours(img), 8);                    // lines, text, antialiased glyphs
 }
 
 TEST(LineChart, DefaultColoursComeFromThePalette) {

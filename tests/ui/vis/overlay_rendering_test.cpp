@@ -28,7 +28,9 @@ struct OverlayCase {
   Run run;
 };
 
-std::ostream& operator<<(std::ostream& os, const OverlayCase& c) { return os << c.baseline; }
+std::ostream& operator<<(std::ostream& os, const OverlayCase& c) {
+  return os << c.baseline;
+}
 
 const vis::SceneState& state_of(Run run) {
   static const vis::SceneState rest = vis::rest_scene_state(test::arcs_model());
@@ -61,19 +63,39 @@ using vis::View;
 // Each overlay alone (plus crease curves where the picture needs them to be read), in the view
 // where it says the most.
 const OverlayCase kCases[] = {
-    {"overlay_vertex_types", {Layer::kVertexTypes, Layer::kCreaseCurves, Layer::kWireframe}, View::kSideBySide, false, Run::Rest},
+    {"overlay_vertex_types",
+     {Layer::kVertexTypes, Layer::kCreaseCurves, Layer::kWireframe},
+     View::kSideBySide,
+     false,
+     Run::Rest},
     {"overlay_links", {Layer::kLinks, Layer::kVertexTypes}, View::kThreeD, true, Run::TwoLevel},
     {"overlay_patches", {Layer::kPatches, Layer::kCreaseCurves}, View::kFlat, false, Run::Rest},
     {"overlay_dog_residual", {Layer::kDogResidual}, View::kThreeD, false, Run::Standard},
     {"overlay_edge_strain", {Layer::kEdgeStrain}, View::kThreeD, false, Run::Standard},
-    {"overlay_stitch_gap", {Layer::kStitchGap, Layer::kCreaseCurves}, View::kThreeD, false, Run::Standard},
+    {"overlay_stitch_gap",
+     {Layer::kStitchGap, Layer::kCreaseCurves},
+     View::kThreeD,
+     false,
+     Run::Standard},
     {"overlay_bending", {Layer::kBending}, View::kThreeD, false, Run::Standard},
-    {"overlay_handles", {Layer::kHandles, Layer::kWireframe}, View::kThreeD, false, Run::RestWithTargets},
+    {"overlay_handles",
+     {Layer::kHandles, Layer::kWireframe},
+     View::kThreeD,
+     false,
+     Run::RestWithTargets},
     {"overlay_crease_curves", {Layer::kCreaseCurves}, View::kThreeD, false, Run::Standard},
     {"overlay_wireframe", {Layer::kWireframe}, View::kThreeD, false, Run::Standard},
     {"overlay_patches_side_by_side", {Layer::kPatches}, View::kSideBySide, false, Run::Rest},
-    {"overlay_dog_residual_flat", {Layer::kDogResidual, Layer::kCreaseCurves}, View::kFlat, false, Run::Standard},
-    {"overlay_full_cells", {Layer::kFullCells, Layer::kPatches}, View::kThreeD, false, Run::Standard},
+    {"overlay_dog_residual_flat",
+     {Layer::kDogResidual, Layer::kCreaseCurves},
+     View::kFlat,
+     false,
+     Run::Standard},
+    {"overlay_full_cells",
+     {Layer::kFullCells, Layer::kPatches},
+     View::kThreeD,
+     false,
+     Run::Standard},
 };
 
 const OverlayCase& find_case(const std::string& baseline) {
@@ -97,7 +119,9 @@ TEST_P(OverlayRendering, MatchesItsBaselinePicture) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryOverlay, OverlayRendering, ::testing::ValuesIn(kCases),
-                         [](const auto& info) { return std::string(info.param.baseline).substr(8); });
+                         [](const auto& info) {
+                           return std::string(info.param.baseline).substr(8);
+                         });
 
 TEST(OverlayRendering, EveryOverlayHasABaselineCase) {
   for (Layer l : enum_values<vis::Layer>()) {
@@ -126,29 +150,40 @@ TEST(OverlayRendering, EveryLayerColourAppearsInThePicture) {
 // the new image and the difference are kept.
 TEST(OverlayRendering, WrongPictureFailsAndIsKept) {
   namespace fs = std::filesystem;
-  if (const char* update = std::getenv("SDOG_UPDATE_BASELINES"); update && std::string(update) == "1")
+  if (const char* update = std::getenv("SDOG_UPDATE_BASELINES");
+      update && std::string(update) == "1")
     GTEST_SKIP() << "SDOG_UPDATE_BASELINES=1: every comparison passes";
   const std::string dir = test::temp_dir("wrong_picture");
-  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_dog_residual.png", dir + "/overlay_dog_residual.png");
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_dog_residual.png",
+                dir + "/overlay_dog_residual.png");
   OverlayCase bending = find_case("overlay_bending");
-  const std::string msg = test::compare_with_baseline(render(bending, "bending.png"), "overlay_dog_residual", {}, dir);
+  const std::string msg =
+      test::compare_with_baseline(render(bending, "bending.png"), "overlay_dog_residual", {}, dir);
   EXPECT_FALSE(msg.empty());
   EXPECT_TRUE(fs::exists(dir + "/overlay_dog_residual.new.png"));
   EXPECT_TRUE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
 
-  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_handles.png", dir + "/overlay_handles.png");
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_handles.png",
+                dir + "/overlay_handles.png");
   OverlayCase no_handles = find_case("overlay_handles");
   no_handles.layers = {Layer::kWireframe};
-  EXPECT_FALSE(test::compare_with_baseline(render(no_handles, "no_handles.png"), "overlay_handles", {}, dir).empty());
+  EXPECT_FALSE(
+      test::compare_with_baseline(render(no_handles, "no_handles.png"), "overlay_handles", {}, dir)
+          .empty());
 
   // A thin layer missing (the crease lines and points of the vertex-type picture) is caught too.
-  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_stitch_gap.png", dir + "/overlay_stitch_gap.png");
+  fs::copy_file(std::string(SDOG_BASELINES_DIR) + "/overlay_stitch_gap.png",
+                dir + "/overlay_stitch_gap.png");
   OverlayCase no_creases = find_case("overlay_stitch_gap");
   no_creases.layers = {Layer::kStitchGap};
-  EXPECT_FALSE(test::compare_with_baseline(render(no_creases, "no_creases.png"), "overlay_stitch_gap", {}, dir).empty());
+  EXPECT_FALSE(test::compare_with_baseline(render(no_creases, "no_creases.png"),
+                                           "overlay_stitch_gap", {}, dir)
+                   .empty());
 
   // The same picture again passes and clears what a failure kept.
-  EXPECT_EQ(test::compare_with_baseline(render(find_case("overlay_dog_residual"), "residual.png"), "overlay_dog_residual", {}, dir), "");
+  EXPECT_EQ(test::compare_with_baseline(render(find_case("overlay_dog_residual"), "residual.png"),
+                                        "overlay_dog_residual", {}, dir),
+            "");
   EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.new.png"));
   EXPECT_FALSE(fs::exists(dir + "/overlay_dog_residual.diff.png"));
 }
@@ -172,10 +207,12 @@ TEST(OverlayRendering, ThePaperStyleMatchesItsBaselineAndDrawsNoLegend) {
   int dark = 0, x0 = dims[0], x1 = -1, y0 = dims[1], y1 = -1;
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
-      double r = img->GetScalarComponentAsDouble(x, y, 0, 0), g = img->GetScalarComponentAsDouble(x, y, 0, 1),
+      double r = img->GetScalarComponentAsDouble(x, y, 0, 0),
+             g = img->GetScalarComponentAsDouble(x, y, 0, 1),
              b = img->GetScalarComponentAsDouble(x, y, 0, 2);
       dark += r < 40 && g < 40 && b < 40;
-      if (r < 250 || g < 250 || b < 250) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      if (r < 250 || g < 250 || b < 250)
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   EXPECT_LT(dark, 20);
   EXPECT_GT(std::max(double(x1 - x0) / dims[0], double(y1 - y0) / dims[1]), 0.85);

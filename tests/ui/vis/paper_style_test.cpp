@@ -27,7 +27,8 @@ TEST(PaperStyle, EffectsParseOneAtATime) {
     vis::parse_paper_effects("glow");
     FAIL() << "no exception";
   } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown render effect 'glow'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unknown render effect 'glow'"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The model and states the scene tests draw, computed once per test executable:
-// four_corner_arcs.svg at 21x21 at rest (also with the run's constraints), after 40 iterations of the standard mode (corners
-// scenario plus a 60 degree fold of crease 0, so that handles and angle sites show), and after 40
-// iterations of the twolevel mode (a moving coarse mesh for the links).
+// four_corner_arcs.svg at 21x21 at rest (also with the run's constraints), after 40 iterations of
+// the standard mode (corners scenario plus a 60 degree fold of crease 0, so that handles and angle
+// sites show), and after 40 iterations of the twolevel mode (a moving coarse mesh for the links).
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
 #include "solver/run/run_config.h"
@@ -13,7 +13,8 @@
 namespace sdog::test {
 
 inline const DogModel& arcs_model() {
-  static const DogModel model = build_dog_model(read_crease_pattern(dataset("four_corner_arcs.svg")), {21, 21});
+  static const DogModel model =
+      build_dog_model(read_crease_pattern(dataset("four_corner_arcs.svg")), {21, 21});
   return model;
 }
 
@@ -39,11 +40,13 @@ inline vis::SceneState run_state(const DogModel& model, ModeKind mode, const Run
   RunSetup setup(model, mode, config);
   const RunSummary summary = setup.run({});
   EXPECT_FALSE(summary.failed()) << summary.failure;
-  return vis::scene_state(setup.problem(), setup.positions(), setup.mode().coarse_positions(), &setup.scenario(), 1);
+  return vis::scene_state(setup.problem(), setup.positions(), setup.mode().coarse_positions(),
+                          &setup.scenario(), 1);
 }
 
 inline const vis::SceneState& arcs_standard_state() {
-  static const vis::SceneState state = run_state(arcs_model(), ModeKind::kStandard, arcs_run_config());
+  static const vis::SceneState state =
+      run_state(arcs_model(), ModeKind::kStandard, arcs_run_config());
   return state;
 }
 
@@ -59,7 +62,7 @@ inline const vis::SceneState& arcs_rest_state_with_targets() {
 inline const vis::SceneState& arcs_twolevel_state() {
   static const vis::SceneState state = [] {
     RunConfig config = arcs_run_config();
-    config.angles.clear();  // the coarse level does not carry angle constraints
+    config.angles.clear();                // the coarse level does not carry angle constraints
     config.twolevel.standard_finish = 0;  // the coarse mesh moves to the end (the links picture)
     return run_state(arcs_model(), ModeKind::kTwoLevel, config);
   }();

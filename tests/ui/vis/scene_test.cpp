@@ -57,7 +57,8 @@ TEST_F(SceneTest, LinksLayerHasOneLinePerLinkVertexFromFineToCoarseTwin) {
       EXPECT_DOUBLE_EQ(a[d], s.fine(v, d));
       EXPECT_DOUBLE_EQ(b[d], s.coarse(c, d));
     }
-    moved = std::max(moved, (Eigen::Vector3d(a[0], a[1], a[2]) - Eigen::Vector3d(b[0], b[1], b[2])).norm());
+    moved = std::max(
+        moved, (Eigen::Vector3d(a[0], a[1], a[2]) - Eigen::Vector3d(b[0], b[1], b[2])).norm());
     ++k;
   }
   EXPECT_GT(moved, 1e-3) << "the twolevel run should leave fine and coarse twins apart";
@@ -80,7 +81,8 @@ TEST_F(SceneTest, LogResidualArrayIsLog10OfTheResiduals) {
   vis::Scene scene(m, renderer);
   const vis::SceneState& s = arcs_standard_state();
   scene.update(s);
-  vtkDataArray* log_r = scene.layer_data(vis::Layer::kDogResidual)->GetPointData()->GetArray("log10_dog_residual");
+  vtkDataArray* log_r =
+      scene.layer_data(vis::Layer::kDogResidual)->GetPointData()->GetArray("log10_dog_residual");
   ASSERT_NE(log_r, nullptr);
   ASSERT_EQ(log_r->GetNumberOfTuples(), m.fine.vertex_count());
   int above_floor = 0;
@@ -94,7 +96,8 @@ TEST_F(SceneTest, LogResidualArrayIsLog10OfTheResiduals) {
     }
   }
   EXPECT_GT(above_floor, m.fine.vertex_count() / 4) << "a run mid-way leaves residuals above 1e-10";
-  EXPECT_EQ(vis::log10_residuals({1e-3, 0, 1e-12, 2.0}), (std::vector<double>{-3, -10, -10, std::log10(2.0)}));
+  EXPECT_EQ(vis::log10_residuals({1e-3, 0, 1e-12, 2.0}),
+            (std::vector<double>{-3, -10, -10, std::log10(2.0)}));
 }
 
 TEST_F(SceneTest, StitchGapPerCreasePointIsTheDistanceBetweenCopies) {
@@ -112,7 +115,9 @@ TEST_F(SceneTest, StitchGapPerCreasePointIsTheDistanceBetweenCopies) {
     const auto& copies = m.fine.stitching.points[k].copies;
     double worst = 0;
     for (size_t i = 0; i + 1 < copies.size(); ++i)
-      worst = std::max(worst, (DogMesh::position(s.fine, copies[i]) - DogMesh::position(s.fine, copies[i + 1])).norm());
+      worst = std::max(
+          worst,
+          (DogMesh::position(s.fine, copies[i]) - DogMesh::position(s.fine, copies[i + 1])).norm());
     EXPECT_NEAR(s.fields.stitch_gap[k], worst, 1e-12) << k;
   }
   vis::Scene scene(m, renderer);
@@ -155,7 +160,8 @@ TEST_F(SceneTest, CreaseCurvesAreColouredByAssignment) {
   ASSERT_NE(code, nullptr);
   ASSERT_EQ(code->GetNumberOfTuples(), static_cast<vtkIdType>(curves.size()));
   for (size_t k = 0; k < curves.size(); ++k)  // without a state's own: the model's
-    EXPECT_EQ(static_cast<int>(code->GetTuple1(static_cast<vtkIdType>(k))), static_cast<int>(curves[k].fold));
+    EXPECT_EQ(static_cast<int>(code->GetTuple1(static_cast<vtkIdType>(k))),
+              static_cast<int>(curves[k].fold));
   // A state's assignments win: a red mountain, blue valleys.
   vis::SceneState s = arcs_standard_state();
   s.crease_folds.assign(curves.size(), Fold::kValley);
@@ -189,7 +195,8 @@ TEST_F(SceneTest, TurningOnAColourLayerTurnsTheOtherOff) {
   EXPECT_TRUE(scene.legend_prop(vis::Layer::kBending)->GetVisibility());
   scene.set_layer(vis::Layer::kBending, false);
   EXPECT_FALSE(scene.colour_layer().has_value());
-  EXPECT_EQ(scene.layers_on(), (std::vector<vis::Layer>{vis::Layer::kStitchGap, vis::Layer::kHandles}));
+  EXPECT_EQ(scene.layers_on(),
+            (std::vector<vis::Layer>{vis::Layer::kStitchGap, vis::Layer::kHandles}));
 }
 
 TEST_F(SceneTest, EveryLayerButWireframeAndFullCellsHasALegendShownWithIt) {
@@ -241,8 +248,9 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
     vtkActorCollection* actors = renderer->GetActors();
     actors->InitTraversal();
     while (vtkActor* a = actors->GetNextActor())
-      if (a->GetVisibility() && a->GetMapper() && (a->GetMapper()->GetInput() == trimmed ||
-                                                   a->GetMapper()->GetInput() == scene.layer_data(vis::Layer::kWireframe)))
+      if (a->GetVisibility() && a->GetMapper() &&
+          (a->GetMapper()->GetInput() == trimmed ||
+           a->GetMapper()->GetInput() == scene.layer_data(vis::Layer::kWireframe)))
         n += a->GetMapper()->GetInput() == trimmed ? 1 : 10;
     return n;
   };
@@ -256,12 +264,14 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
     actors->InitTraversal();
     while (vtkActor* a = actors->GetNextActor())
       if (a->GetVisibility() && a->GetMapper())
-        if (auto* poly = vtkPolyData::SafeDownCast(a->GetMapper()->GetInput())) n += poly->GetNumberOfLines();
+        if (auto* poly = vtkPolyData::SafeDownCast(a->GetMapper()->GetInput()))
+          n += poly->GetNumberOfLines();
     return n;
   };
   const vtkIdType lines_before = visible_lines();
   scene.set_layer(vis::Layer::kWireframe, true);
-  EXPECT_EQ(visible_surfaces(), 1);  // still the trimmed surface alone, with the quad edges as lines over it
+  EXPECT_EQ(visible_surfaces(),
+            1);  // still the trimmed surface alone, with the quad edges as lines over it
   // The fine quads' edges, each once.
   std::set<std::pair<int, int>> edges;
   for (int q = 0; q < m.fine.quad_count(); ++q)
@@ -275,7 +285,8 @@ TEST_F(SceneTest, TheTrimmedSurfaceCarriesTheColourArraysAndFullCellsSwapsIt) {
 TEST_F(SceneTest, UpdateKeepsTheActorsAndMovesThePoints) {
   const DogModel& m = arcs_model();
   vis::Scene scene(m, renderer, {vis::View::kThreeD, true});
-  for (vis::Layer l : {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kStitchGap, vis::Layer::kLinks})
+  for (vis::Layer l :
+       {vis::Layer::kDogResidual, vis::Layer::kHandles, vis::Layer::kStitchGap, vis::Layer::kLinks})
     scene.set_layer(l, true);
   const int actors = renderer->GetActors()->GetNumberOfItems();
   const int props2d = renderer->GetActors2D()->GetNumberOfItems();

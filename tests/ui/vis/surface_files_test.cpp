@@ -39,7 +39,9 @@ using test::arcs_standard_state;
 // at 21x21 grid lines a grid column is 400 / 20 sheet units wide.
 constexpr double kArcsSheet = 400, kArcsScale = 20.0 / 400;
 // A mesh coordinate along `axis` of four_corner_arcs in sheet units (its drawing's y runs down).
-double in_sheet_units(double mesh, int axis) { return mesh / kArcsScale + (axis == 1 ? -kArcsSheet : 0); }
+double in_sheet_units(double mesh, int axis) {
+  return mesh / kArcsScale + (axis == 1 ? -kArcsSheet : 0);
+}
 
 using test::read_poly;
 using test::triangle_area;
@@ -127,8 +129,10 @@ TEST_F(SurfaceFileTest, ObjReadsBackWithNormalsInSheetUnits) {
   double b[6];
   obj->GetBounds(b);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_NEAR(b[2 * k], in_sheet_units(surface.V.col(k).minCoeff(), k), 1e-6 * kArcsSheet) << "axis " << k;
-    EXPECT_NEAR(b[2 * k + 1], in_sheet_units(surface.V.col(k).maxCoeff(), k), 1e-6 * kArcsSheet) << "axis " << k;
+    EXPECT_NEAR(b[2 * k], in_sheet_units(surface.V.col(k).minCoeff(), k), 1e-6 * kArcsSheet)
+        << "axis " << k;
+    EXPECT_NEAR(b[2 * k + 1], in_sheet_units(surface.V.col(k).maxCoeff(), k), 1e-6 * kArcsSheet)
+        << "axis " << k;
   }
 }
 
@@ -150,7 +154,8 @@ TEST_F(SurfaceFileTest, PlyReadsBackWithNormalsAndPatchColours) {
     double p[3];
     ply->GetPoint(v, p);
     for (int k = 0; k < 3; ++k) {
-      ASSERT_NEAR(p[k], in_sheet_units(surface.V(v, k), k), 1e-6 * kArcsSheet) << "vertex " << v << " axis " << k;
+      ASSERT_NEAR(p[k], in_sheet_units(surface.V(v, k), k), 1e-6 * kArcsSheet)
+          << "vertex " << v << " axis " << k;
       ASSERT_NEAR(normals->GetComponent(v, k), surface.N(v, k), 1e-6) << "vertex " << v;
     }
     const vis::Rgb8 c = bytes(vis::patch_colour(surface.vertex_patch[v]));

@@ -12,9 +12,9 @@
 #include <filesystem>
 
 #include "base/atomic_output.h"
+#include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "base/errors.h"
 #include "tests/test_support.h"
 #include "ui/vis/model_files.h"
 
@@ -97,7 +97,9 @@ TEST(VtkFiles, DirectoryWhereNoFileCanBeMadeIsRefusedAtOnce) {
     OutputSet out("/proc");
     FAIL() << "/proc was accepted as an output directory";
   } catch (const OutputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/proc: the output directory is not writable"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/proc: the output directory is not writable"),
+              std::string::npos)
+        << e.what();
   }
 }
 

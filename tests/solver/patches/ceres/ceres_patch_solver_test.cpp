@@ -15,7 +15,8 @@ using test::PatchCase;
 std::vector<std::unique_ptr<PatchStepper>> ceres_solvers(const PatchCase& c) {
   std::vector<std::unique_ptr<PatchStepper>> out;
   for (int p = 0; p < c.model.fine.patch_count(); ++p)
-    out.push_back(std::make_unique<CeresPatchSolver>(c.model.fine, p, c.problem->objective_terms(), c.problem->dog));
+    out.push_back(std::make_unique<CeresPatchSolver>(c.model.fine, p, c.problem->objective_terms(),
+                                                     c.problem->dog));
   return out;
 }
 
@@ -24,7 +25,8 @@ TEST(CeresPatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   Dofs x = s.bent();
   const Dofs x0 = x;
   // The last patch holds the dragged corner: its objective is far from its minimum.
-  CeresPatchSolver last(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
+  CeresPatchSolver last(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(),
+                        s.problem->dog);
   const double before = last.objective(x);
   const PatchReport r = last.solve(x);
   EXPECT_TRUE(r.converged);
@@ -35,7 +37,8 @@ TEST(CeresPatchSolver, LowersThePatchObjectiveAndMeetsTheConstraintTolerance) {
   EXPECT_GE(r.outer, 1);
   EXPECT_GE(r.work.steps, 1);
   // Only the patch's own vertices moved.
-  const int begin = s.model.fine.patch_begin[last.patch()], end = s.model.fine.patch_begin[last.patch() + 1];
+  const int begin = s.model.fine.patch_begin[last.patch()],
+            end = s.model.fine.patch_begin[last.patch() + 1];
   for (int v = 0; v < s.model.fine.vertex_count(); ++v) {
     const bool moved = (vertex_of(x, v) - vertex_of(x0, v)).norm() > 0;
     if (v < begin || v >= end) {
@@ -84,7 +87,8 @@ TEST(CeresPatchSolver, WarmStartStaysFeasibleAndDoesNotClimb) {
 
 TEST(CeresPatchSolver, WeightChangesReachTheCeresProblem) {
   const PatchCase s("one_curve.svg", {15, 11});
-  CeresPatchSolver solver(s.model.fine, s.model.fine.patch_count() - 1, s.problem->objective_terms(), s.problem->dog);
+  CeresPatchSolver solver(s.model.fine, s.model.fine.patch_count() - 1,
+                          s.problem->objective_terms(), s.problem->dog);
   Dofs x = s.bent();
   const double before = solver.objective(x);
   solver.set_weight(kPositions, 0);
