@@ -45,7 +45,6 @@ struct BenchArgs : CaseGridArgs {
   int repeat = 3;
   int threads = 0;
   std::string csv;
-  std::string preset;
   std::string config;
   bool pace = false;
   bool fold = false;
@@ -124,6 +123,19 @@ RunConfig paced_config(const BenchArgs& a) {
   return config;
 }
 
+// Every pattern at every resolution of the pace and fold benchmarks, meshed (its warnings
+// printed).
+void for_each_case(const BenchArgs& a,
+                   const std::function<void(const std::string& pattern, const std::string& res,
+                                            const DogModel& model)>& each) {
+  for (const auto& pattern : a.patterns)
+    for (const auto& res : a.resolutions) {
+      const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
+      print_warnings(model);
+      each(pattern, res, model);
+    }
+}
+
 // Per pattern and resolution, the corners drag over each K, then held until converged.
 void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::string& csv_name) {
   if (a.patterns.empty() || a.resolutions.empty())
@@ -138,34 +150,31 @@ void bench_pace(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
               "total_s");
   std::string csv = csv_line(header);
   const bool tty = isatty(fileno(stderr));
-  for (const auto& pattern : a.patterns)
-    for (const auto& res : a.resolutions) {
-      const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
-      print_warnings(model);
-      std::vector<PaceResult> results;
-      for (int k : a.ks) {
-        if (tty) std::fprintf(stderr, "\r  %s %s: K = %d ...   ", pattern.c_str(), res.c_str(), k);
-        results.push_back(run_pace(model, config, k, a.max_hold));
-      }
-      if (tty) std::fprintf(stderr, "\r%70s\r", "");
-      const std::vector<double> ratios = objective_ratios(results);
-      const std::string name = std::filesystem::path(pattern).stem().string();
-      for (size_t i = 0; i < results.size(); ++i) {
-        const PaceResult& r = results[i];
-        const std::string shape = r.time_to_shape_s ? fixed(*r.time_to_shape_s, 2) : "-";
-        std::printf("%-18s %-6s %4d %10.5f %6.3f %8.1e %8.1e %6s %9.2e %6ld %8s %8.2f%s\n",
-                    name.c_str(), res.c_str(), r.k, r.objective, ratios[i], r.dog_max,
-                    r.stitch_gap_max, r.folded ? "yes" : "no", r.handle_distance, r.factorizations,
-                    shape.c_str(), r.total_s,
-                    r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
-        csv += csv_line({name, res, std::to_string(r.k), general(r.objective), general(ratios[i]),
-                         general(r.dog_max), general(r.stitch_gap_max), r.folded ? "1" : "0",
-                         general(r.handle_distance), std::to_string(r.factorizations),
-                         r.time_to_shape_s ? general(*r.time_to_shape_s) : "", general(r.total_s),
-                         std::to_string(r.iterations), r.failure});
-        std::fflush(stdout);
-      }
+  for_each_case(a, [&](const std::string& pattern, const std::string& res, const DogModel& model) {
+    std::vector<PaceResult> results;
+    for (int k : a.ks) {
+      if (tty) std::fprintf(stderr, "\r  %s %s: K = %d ...   ", pattern.c_str(), res.c_str(), k);
+      results.push_back(run_pace(model, config, k, a.max_hold));
     }
+    if (tty) std::fprintf(stderr, "\r%70s\r", "");
+    const std::vector<double> ratios = objective_ratios(results);
+    const std::string name = std::filesystem::path(pattern).stem().string();
+    for (size_t i = 0; i < results.size(); ++i) {
+      const PaceResult& r = results[i];
+      const std::string shape = r.time_to_shape_s ? fixed(*r.time_to_shape_s, 2) : "-";
+      std::printf("%-18s %-6s %4d %10.5f %6.3f %8.1e %8.1e %6s %9.2e %6ld %8s %8.2f%s\n",
+                  name.c_str(), res.c_str(), r.k, r.objective, ratios[i], r.dog_max,
+                  r.stitch_gap_max, r.folded ? "yes" : "no", r.handle_distance, r.factorizations,
+                  shape.c_str(), r.total_s,
+                  r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
+      csv += csv_line({name, res, std::to_string(r.k), general(r.objective), general(ratios[i]),
+                       general(r.dog_max), general(r.stitch_gap_max), r.folded ? "1" : "0",
+                       general(r.handle_distance), std::to_string(r.factorizations),
+                       r.time_to_shape_s ? general(*r.time_to_shape_s) : "", general(r.total_s),
+                       std::to_string(r.iterations), r.failure});
+      std::fflush(stdout);
+    }
+  });
   write_csv(out, csv_name, csv);
 }
 
@@ -187,54 +196,51 @@ void bench_fold(const BenchArgs& a, std::unique_ptr<OutputSet>& out, const std::
               "angle_err", "dog_max", "gap", "strain", "conv");
   std::string csv = csv_line(header);
   const bool tty = isatty(fileno(stderr));
-  for (const auto& pattern : a.patterns)
-    for (const auto& res : a.resolutions) {
-      const DogModel model = build_case_model({pattern, res, ModeKind::kStandard});
-      print_warnings(model);
-      const std::string name = std::filesystem::path(pattern).stem().string();
-      for (double angle : a.angles)
-        for (int k : ks) {
-          config.fold_angle = angle;
-          std::vector<PaceResult> runs;
-          std::vector<double> shape, total;
-          for (int i = 0; i < repeat; ++i) {
-            if (tty)
-              std::fprintf(stderr, "\r  %s %s %g degrees K = %d: run %d/%d ...   ", name.c_str(),
-                           res.c_str(), angle, k, i + 1, repeat);
-            runs.push_back(run_fold_pace(model, config, k, a.max_hold));
-            if (runs.back().time_to_shape_s) shape.push_back(*runs.back().time_to_shape_s);
-            total.push_back(runs.back().total_s);
-          }
-          if (tty) std::fprintf(stderr, "\r%90s\r", "");
-          const PaceResult& r = runs.front();
-          const AngleAgreement& m = r.angles;
-          const bool all_shaped = shape.size() == runs.size();
-          const std::string shape_s = all_shaped ? fixed(median_of(shape), 2) : "-";
-          const std::string agreement =
-              m.bent_sites > 0 ? fixed(100 * m.direction_agreement(), 1) + "%" : "-";
-          const std::string tip =
-              m.tip_sites > 0 ? std::to_string(m.tip_against) + "/" + std::to_string(m.tip_sites)
-                              : std::string("-");
-          std::printf(
-              "%-28s %-6s %6g %4d %8s %8.2f %6ld %9s %5d/%-5d %9s %9.2f %8.1e %8.1e %6.1f%% "
-              "%5s%s\n",
-              name.c_str(), res.c_str(), angle, k, shape_s.c_str(), median_of(total),
-              r.factorizations, agreement.c_str(), m.bent_sites, m.targeted_sites, tip.c_str(),
-              m.median_error, r.dog_max, r.stitch_gap_max, 100 * r.sheet_strain_max,
-              r.converged ? "yes" : "no",
-              r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
-          csv += csv_line({name, res, general(angle), std::to_string(k),
-                           all_shaped ? general(median_of(shape)) : "", general(median_of(total)),
-                           std::to_string(r.factorizations),
-                           m.bent_sites > 0 ? general(m.direction_agreement()) : "",
-                           std::to_string(m.bent_sites), std::to_string(m.targeted_sites),
-                           std::to_string(m.tip_sites), std::to_string(m.tip_against),
-                           general(m.median_error), general(r.dog_max), general(r.stitch_gap_max),
-                           general(r.sheet_strain_max), r.converged ? "1" : "0",
-                           std::to_string(r.iterations), r.failure});
-          std::fflush(stdout);
+  for_each_case(a, [&](const std::string& pattern, const std::string& res, const DogModel& model) {
+    const std::string name = std::filesystem::path(pattern).stem().string();
+    for (double angle : a.angles)
+      for (int k : ks) {
+        config.fold_angle = angle;
+        std::vector<PaceResult> runs;
+        std::vector<double> shape, total;
+        for (int i = 0; i < repeat; ++i) {
+          if (tty)
+            std::fprintf(stderr, "\r  %s %s %g degrees K = %d: run %d/%d ...   ", name.c_str(),
+                         res.c_str(), angle, k, i + 1, repeat);
+          runs.push_back(run_fold_pace(model, config, k, a.max_hold));
+          if (runs.back().time_to_shape_s) shape.push_back(*runs.back().time_to_shape_s);
+          total.push_back(runs.back().total_s);
         }
-    }
+        if (tty) std::fprintf(stderr, "\r%90s\r", "");
+        const PaceResult& r = runs.front();
+        const AngleAgreement& m = r.angles;
+        const bool all_shaped = shape.size() == runs.size();
+        const std::string shape_s = all_shaped ? fixed(median_of(shape), 2) : "-";
+        const std::string agreement =
+            m.bent_sites > 0 ? fixed(100 * m.direction_agreement(), 1) + "%" : "-";
+        const std::string tip =
+            m.tip_sites > 0 ? std::to_string(m.tip_against) + "/" + std::to_string(m.tip_sites)
+                            : std::string("-");
+        std::printf(
+            "%-28s %-6s %6g %4d %8s %8.2f %6ld %9s %5d/%-5d %9s %9.2f %8.1e %8.1e %6.1f%% "
+            "%5s%s\n",
+            name.c_str(), res.c_str(), angle, k, shape_s.c_str(), median_of(total),
+            r.factorizations, agreement.c_str(), m.bent_sites, m.targeted_sites, tip.c_str(),
+            m.median_error, r.dog_max, r.stitch_gap_max, 100 * r.sheet_strain_max,
+            r.converged ? "yes" : "no",
+            r.failure.empty() ? "" : ("  failed: " + r.failure).c_str());
+        csv += csv_line({name, res, general(angle), std::to_string(k),
+                         all_shaped ? general(median_of(shape)) : "", general(median_of(total)),
+                         std::to_string(r.factorizations),
+                         m.bent_sites > 0 ? general(m.direction_agreement()) : "",
+                         std::to_string(m.bent_sites), std::to_string(m.targeted_sites),
+                         std::to_string(m.tip_sites), std::to_string(m.tip_against),
+                         general(m.median_error), general(r.dog_max), general(r.stitch_gap_max),
+                         general(r.sheet_strain_max), r.converged ? "1" : "0",
+                         std::to_string(r.iterations), r.failure});
+        std::fflush(stdout);
+      }
+  });
   write_csv(out, csv_name, csv);
 }
 
@@ -305,14 +311,7 @@ void register_bench_command(CLI::App& app, Runner& runner) {
   cmd->add_option("--pattern", a->patterns, "crease pattern(s) (SVG or FOLD)");
   cmd->add_option("--res", a->resolutions, "resolution(s) XxY");
   cmd->add_option("--modes", a->modes, "solver mode(s)")->delimiter(',')->capture_default_str();
-  cmd->add_flag("--thesis-grid", a->thesis_grid,
-                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset "
-                "unless --preset "
-                "says otherwise");
-  add_preset_option(*cmd, a->preset);
-  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir,
-                  "folder of the thesis patterns for --thesis-grid")
-      ->capture_default_str();
+  add_case_grid_options(*cmd, *a);
   cmd->add_option("--iters", a->iterations,
                   "moving iterations of the protocol (hold: a fifth of that)")
       ->check(CLI::Range(1, 100000))

@@ -133,4 +133,14 @@ void add_schedule_options(CLI::App& cmd, ScheduleOptions& o) {
                    ->capture_default_str();
 }
 
+void add_case_grid_options(CLI::App& cmd, CaseGridArgs& a) {
+  cmd.add_flag("--thesis-grid", a.thesis_grid,
+               "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset "
+               "unless --preset says otherwise");
+  add_preset_option(cmd, a.preset);
+  cmd.add_option("--patterns-dir,--patterns", a.patterns_dir,
+                 "folder of the thesis patterns for --thesis-grid")
+      ->capture_default_str();
+}
+
 }  // namespace sdog::cli

@@ -41,7 +41,11 @@ struct CaseGridArgs {
   std::vector<std::string> resolutions;
   bool thesis_grid = false;
   std::string patterns_dir = "../shared/reference/patterns";
+  std::string preset;
 };
+
+/// Adds --thesis-grid, --preset and --patterns-dir.
+void add_case_grid_options(CLI::App& cmd, CaseGridArgs& a);
 
 /// Adds --preset NAME (the solver settings a run starts from: default or thesis).
 void add_preset_option(CLI::App& cmd, std::string& preset);

@@ -33,7 +33,6 @@ struct CompareArgs : CaseGridArgs {
   ScheduleOptions schedule;
   std::string scenario = "corners";
   std::string config;
-  std::string preset;
   CLI::Option* scenario_opt = nullptr;
   int threads = 0;
   int repeat = 1;
@@ -279,14 +278,7 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
                   "'all' or solver modes, comma separated (" + known_names<ModeKind>() + ")")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_flag("--thesis-grid", a->thesis_grid,
-                "the 16 cases of the thesis (4 patterns x 4 resolutions), with the thesis preset "
-                "unless --preset "
-                "says otherwise");
-  add_preset_option(*cmd, a->preset);
-  cmd->add_option("--patterns-dir,--patterns", a->patterns_dir,
-                  "folder of the thesis patterns for --thesis-grid")
-      ->capture_default_str();
+  add_case_grid_options(*cmd, *a);
   add_schedule_options(*cmd, a->schedule);
   a->scenario_opt =
       cmd->add_option("--scenario", a->scenario,
