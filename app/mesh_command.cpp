@@ -105,6 +105,7 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
     const Crease& c = m.clean.creases[k];
     os << "  crease " << k << "  " << c.origin << "  " << enum_name(c.fold);
     if (c.angle) os << ", " << format_number(*c.angle) << " degrees";
+    if (!c.layer.empty()) os << " (layer \"" << c.layer << "\")";
     os << "\n";
   }
   for (const auto& w : model_warnings(m)) os << "  warning:    " << w << "\n";

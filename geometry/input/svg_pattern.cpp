@@ -33,11 +33,14 @@ void drop_repeated_points(Polyline2& pts, bool closed) {
 struct OpenCurve {
   Polyline2 points;
   std::string origin;
+  bool cut = false;  ///< a cut line, not a black boundary curve
 };
 
 // Chains open boundary curves end to end into closed loops: each continues with the piece whose
-// nearer end is nearest its end, within tol (a gap is closed by the chain's straight step).
-std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol) {
+// nearer end is nearest its end, within tol. Ends within snap_tol of each other are one point (the
+// piece's first point is dropped: a step that small would fold the boundary back over itself where
+// pieces overlap by a hair); a wider gap is closed by the chain's straight step.
+std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol, double snap_tol) {
   std::vector<Polyline2> loops;
   while (!open.empty()) {
     OpenCurve current = std::move(open.front());
@@ -57,20 +60,27 @@ std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol)
       if (extended) {
         Polyline2& next = open[best].points;
         if (reversed) std::reverse(next.begin(), next.end());
-        current.points.insert(current.points.end(), next.begin() + (nearest == 0 ? 1 : 0),
+        current.points.insert(current.points.end(), next.begin() + (nearest <= snap_tol ? 1 : 0),
                               next.end());
+        current.cut = current.cut || open[best].cut;
         open.erase(open.begin() + static_cast<std::ptrdiff_t>(best));
       }
       if (!extended) {
-        throw InputError(current.origin +
-                         ": the sheet boundary (black) is not closed: it ends at " +
+        const std::string what = current.cut ? "this cut line" : "the sheet boundary (black)";
+        throw InputError(current.origin + ": " + what + " is not closed: it ends at " +
                          format_point(current.points.back()) + ", " +
                          format_number((current.points.front() - current.points.back()).norm()) +
                          " units from its start " + format_point(current.points.front()) +
-                         "; close the path (Z) or draw the boundary as one closed shape");
+                         "; close the path (Z) or draw the boundary as one closed shape" +
+                         (current.cut ? "; cut lines outline the sheet or cut holes out of it, "
+                                        "slits (cuts that end inside the sheet) are not read"
+                                      : ""));
       }
     }
     current.points.pop_back();  // the last point repeats the first one (within tolerance)
+    while (current.points.size() > 1 &&
+           (current.points.back() - current.points.front()).norm() <= snap_tol)
+      current.points.pop_back();
     loops.push_back(std::move(current.points));
   }
   return loops;
@@ -108,11 +118,6 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol)
       ++out.facet_lines;
       continue;
     }
-    if (reading.role == CurveRole::kCut)
-      throw InputError(
-          origin_of(drawing.source, c) +
-          ": a cut line (green): cuts are not supported, the sheet "
-          "must stay one piece along every crease; remove the cut or make it a crease");
     if (reading.role == CurveRole::kCrease) {
       out.creases.push_back(&c);
       out.readings.push_back(reading);
@@ -126,12 +131,12 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol)
       out.loops.push_back(std::move(pts));
       out.loop_origins.push_back(origin_of(drawing.source, c));
     } else {
-      open_boundary.push_back({pts, origin_of(drawing.source, c)});
+      open_boundary.push_back({pts, origin_of(drawing.source, c), reading.role == CurveRole::kCut});
     }
   }
   if (!open_boundary.empty()) {
     const std::string origin = open_boundary.front().origin;
-    for (auto& loop : chain_into_loops(std::move(open_boundary), join_tol)) {
+    for (auto& loop : chain_into_loops(std::move(open_boundary), join_tol, tol)) {
       drop_repeated_points(loop, true);
       out.loops.push_back(std::move(loop));
       out.loop_origins.push_back(origin);
@@ -189,6 +194,7 @@ void add_creases(const std::vector<const SvgCurve*>& curves,
     crease.angle = readings[k].angle;
     crease.id = c.id;
     crease.origin = origin_of(source, c);
+    crease.layer = readings[k].layer;
     k = append_continuations(curves, k, sheet_tol, crease);
     if (!crease.closed && crease.points.size() > 2 &&
         (crease.points.front() - crease.points.back()).norm() <= sheet_tol) {

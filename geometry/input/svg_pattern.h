@@ -10,7 +10,8 @@ namespace sdog {
 
 /// Sorts the drawing's curves into sheet boundary and creases. Boundary curves must form closed
 /// loops (open black curves, in any order and direction, are chained end to end, each to the
-/// nearest end within L/100; a gap becomes a straight step); the loop of
+/// nearest end within L/100; ends within `closed_fraction * L` become one point, a wider gap a
+/// straight step); the loop of
 /// largest area is the outer boundary, the others are holes and must lie inside it. Creases drawn
 /// as consecutive subpaths of one <path> that continue each other are joined; a crease whose ends
 /// meet within `closed_fraction * L` is closed. Throws InputError for an open or

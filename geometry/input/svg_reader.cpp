@@ -32,8 +32,9 @@ constexpr int kMaxNesting = 256;
 /// Properties resolved with precedence and inheritance (see svg_reader.h).
 struct InheritedStyle {
   std::optional<std::string> stroke, fill, dasharray, colour, stroke_opacity, data_fold, data_angle;
-  std::optional<double> opacity;  ///< product of the opacity of the element and its groups
-  Affine ctm;                     ///< maps the element's user space to the root's
+  std::optional<double> opacity;    ///< product of the opacity of the element and its groups
+  Affine ctm;                       ///< maps the element's user space to the root's
+  std::vector<std::string> groups;  ///< names of the enclosing groups, outermost first
 };
 
 /// An element's geometry before flattening, in its own user space.
@@ -306,11 +307,19 @@ class Reader {
           fail(child,
                "elements are nested more than " + std::to_string(kMaxNesting) + " levels deep");
         if (name == "svg") enter_nested_svg(child, style);
+        if (const std::string group = group_name(child); !group.empty())
+          style.groups.push_back(group);
         walk(child, style, depth + 1);
       } else {
         add_shape(child, name, style);
       }
     }
+  }
+
+  /// A group's name as editors show it: Inkscape's layer label, else its id.
+  static std::string group_name(const pugi::xml_node& node) {
+    if (const pugi::xml_attribute label = node.attribute("inkscape:label")) return label.value();
+    return node.attribute("id").value();
   }
 
   /// A nested <svg> only translates by (x, y); its own viewport scaling is not supported.
@@ -367,6 +376,7 @@ class Reader {
     }
     shape.meta.data_fold = style.data_fold;
     shape.meta.data_angle = style.data_angle;
+    shape.meta.groups = style.groups;
 
     if (name == "path") {
       const char* d = node.attribute("d").value();

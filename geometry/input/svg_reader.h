@@ -10,7 +10,8 @@
 // exports sometimes do this), and SVG's default fill is black.
 // A stroke-dasharray other than "none" marks the curve as dashed, and dash-dot when its dashes
 // differ in length; opacity, stroke-opacity and the data-fold and data-angle attributes are
-// passed on (geometry/input/fold_conventions.h reads the fold assignment from them).
+// passed on, as are the names of the enclosing groups (geometry/input/fold_conventions.h reads
+// the fold assignment from them).
 //
 // Coordinates: y points up. A point (x, y) of the SVG user space becomes (x, -y): the SVG y axis
 // is negated exactly, so the viewBox "x0 y0 w h" covers [x0, x0+w] x [-(y0+h), -y0].
@@ -75,6 +76,9 @@ struct SvgCurve {
   std::optional<double> opacity;
   /// data-fold and data-angle of the element or its nearest group that has them.
   std::optional<std::string> data_fold, data_angle;
+  /// The names of the enclosing groups (<g>, <a>, <switch>, nested <svg>), outermost first: a
+  /// group's inkscape:label, else its id; groups with neither are left out.
+  std::vector<std::string> groups;
   std::string element;  ///< tag name, e.g. "path"
   std::string id;       ///< the element's id attribute, or empty
   int line = 0;         ///< line of the element in the file (1-based), 0 if unknown

@@ -1,6 +1,7 @@
 #include "geometry/mesh/dog_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -123,11 +124,20 @@ void merge_close_points(const PatchLayout& layout, const DogMesh& mesh, int coar
   // kVertexCreaseDistance of the run's first, has nearly equal stitching rows that restoration
   // cannot meet together once the sheet bends (the gaps stall equal and opposite). The run is
   // taken as its middle point.
+  // On a fine mesh with a coarse twin (coarse_step > 1), points on a coarse grid line count as on
+  // one edge when they are on one coarse edge, so the fine mesh takes the same middle point as the
+  // coarse one and the coarse crease points stay fine crease points.
+  auto edge_key = [&](const GridEdgePoint& e) {
+    const int c = std::max(coarse_step, 1);
+    if (e.i0 == e.i1 && e.i0 % c == 0) return std::array<int, 5>{0, e.i0, e.j0 / c, 0, 0};
+    if (e.j0 == e.j1 && e.j0 % c == 0) return std::array<int, 5>{1, e.j0, e.i0 / c, 0, 0};
+    return std::array<int, 5>{2, e.i0, e.j0, e.i1, e.j1};
+  };
   auto same_place = [&](int a, int b) {
     const auto &p = points[a], &q = points[b];
-    return uses[a] == 1 && uses[b] == 1 && !p.edge.on_vertex() && p.patches.size() == 2 &&
-           p.patches == q.patches && p.edge.i0 == q.edge.i0 && p.edge.j0 == q.edge.j0 &&
-           p.edge.i1 == q.edge.i1 && p.edge.j1 == q.edge.j1 &&
+    return uses[a] == 1 && uses[b] == 1 && !p.edge.on_vertex() && !q.edge.on_vertex() &&
+           p.patches.size() == 2 && p.patches == q.patches &&
+           edge_key(p.edge) == edge_key(q.edge) &&
            (mesh.to_mesh(p.position) - mesh.to_mesh(q.position)).norm() < kVertexCreaseDistance;
   };
   for (auto& c : curves) {

@@ -201,6 +201,7 @@ void Cleaner::drop_degenerate_creases() {
 
 // Step 5: junctions and pins; align nearby junction coordinates.
 void Cleaner::align_junctions() {
+  for (int axis = 0; axis < 2; ++axis) align_boundary_ends(axis);
   const std::vector<Vec2> fixed = collect_junctions();
   for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed);
   pins_ = junctions_;
@@ -220,6 +221,42 @@ std::vector<Vec2> Cleaner::collect_junctions() {
       fixed.push_back(q);
   }
   return fixed;
+}
+
+// Crease ends on the boundary whose `axis` coordinates differ by a hair (all within kCornerFraction
+// L of the smallest), as in drawings whose vertices were rounded independently, move to
+// their mean: each would otherwise pin its own grid line beside the others'.
+void Cleaner::align_boundary_ends(int axis) {
+  const Box2& b = sheet_.bbox;
+  std::set<std::pair<double, double>> seen;
+  std::vector<Vec2> ends;
+  for (const auto& c : creases_) {
+    if (c.closed) continue;
+    for (const Vec2& q : {c.points.front(), c.points.back()})
+      if (sheet_side(q) == 0 && q.x() != b.xmin && q.x() != b.xmax && q.y() != b.ymin &&
+          q.y() != b.ymax && seen.insert({q.x(), q.y()}).second)
+        ends.push_back(q);
+  }
+  std::sort(ends.begin(), ends.end(),
+            [axis](const Vec2& p, const Vec2& q) { return p[axis] < q[axis]; });
+  const double tol = kCornerFraction * size_;
+  for (size_t s = 0; s < ends.size();) {
+    size_t e = s + 1;
+    while (e < ends.size() && ends[e][axis] - ends[s][axis] <= tol) ++e;
+    if (ends[e - 1][axis] != ends[s][axis]) {
+      double target = 0;
+      for (size_t i = s; i < e; ++i) target += ends[i][axis] / static_cast<double>(e - s);
+      for (size_t i = s; i < e; ++i) {
+        Vec2 moved = ends[i];
+        moved[axis] = target;
+        log("boundary point " + format_point(ends[i]) + " aligned in " + (axis == 0 ? "x" : "y") +
+            " to " + format_number(target));
+        replace_vertex(ends[i], moved);
+        for (auto& loop : loops_) std::replace(loop.begin(), loop.end(), ends[i], moved);
+      }
+    }
+    s = e;
+  }
 }
 
 // Aligns the `axis` coordinates of junctions that lie within snap_tol of each other (in chains).

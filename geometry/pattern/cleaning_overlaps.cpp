@@ -11,8 +11,6 @@
 namespace sdog::cleaning {
 namespace {
 
-// A segment lies along a polyline when its ends and midpoint are this close to it (fraction of L).
-constexpr double kAlongFraction = 1e-6;
 // Cells of the segment index per sheet size.
 constexpr int kCellsPerSide = 64;
 
@@ -79,7 +77,7 @@ std::vector<int> common_owners(const SegmentIndex& index, const Vec2& a, const V
 
 void Cleaner::drop_overlapping_segments() {
   const double L = std::max(sheet_.bbox.width(), sheet_.bbox.height());
-  const double tol = kAlongFraction * L;
+  const double tol = kTouchFraction * L;
   constexpr int kBoundary = -1;
   SegmentIndex index(L / kCellsPerSide, tol);
   for (const auto& loop : loops_)

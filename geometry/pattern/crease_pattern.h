@@ -38,6 +38,7 @@ struct Crease {
   std::string id;  ///< the drawn element's id (SVG: its id attribute; FOLD: "edge N" of its first
                    ///< edge), or empty
   std::string origin;  ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
+  std::string layer;   ///< the drawing's layer (group name) that gave the assignment, or empty
   /// Same assignment and angle: creases that may be joined into one.
   bool folds_like(const Crease& other) const { return fold == other.fold && angle == other.angle; }
 };

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "base/errors.h"
 #include "base/text_format.h"
@@ -28,6 +30,7 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
       creases_(pattern.creases),
       warnings_(pattern.warnings) {
   const double L = pattern.size();
+  size_ = L;
   merge_tol_ = options.merge_fraction * L;
   snap_tol_ = options.snap_fraction * L;
   snap_fraction_ = options.snap_fraction;
@@ -37,8 +40,14 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
 
 CleanPattern Cleaner::run() {
   drop_overlapping_segments();
-  merge_crease_ends();
-  join_continuing_creases();
+  // Pieces of one crease drawn end to end (curves exported as many short lines) are joined before
+  // nearby ends merge, which would otherwise pull a chain of pieces shorter than merge_tol
+  // together.
+  merge_crease_ends(kTouchFraction * size_);
+  join_continuing_creases(touching_pieces());
+  move_ends_onto_boundary_corners();
+  merge_crease_ends(merge_tol_);
+  join_continuing_creases(std::nullopt);
   clip_to_sheet();
   make_junctions();
   snap_free_ends();
@@ -85,8 +94,8 @@ void Cleaner::replace_vertex(const Vec2& from, const Vec2& to) {
       if (p == from) p = to;
 }
 
-// Step 1: crease ends closer than merge_tol meet at one point.
-void Cleaner::merge_crease_ends() {
+// Step 1: crease ends closer than tol meet at one point.
+void Cleaner::merge_crease_ends(double tol) {
   std::vector<Vec2> pts;
   std::vector<std::pair<int, int>> refs;
   for (int k = 0; k < static_cast<int>(creases_.size()); ++k) {
@@ -96,7 +105,7 @@ void Cleaner::merge_crease_ends() {
       refs.push_back({k, e});
     }
   }
-  for (const auto& cluster : cluster_points(pts, merge_tol_)) {
+  for (const auto& cluster : cluster_points(pts, tol)) {
     if (cluster.size() < 2) continue;
     std::vector<Vec2> members;
     for (int i : cluster) members.push_back(pts[i]);
@@ -114,8 +123,63 @@ void Cleaner::merge_crease_ends() {
   }
 }
 
-// Two crease ends meeting alone inside the sheet are one crease drawn in two pieces.
-void Cleaner::join_continuing_creases() {
+// A crease end a hair away from a boundary vertex (a drawing whose boundary and creases were
+// exported with slightly different rounding) is moved onto it; left alone, it would become its own
+// boundary point beside the vertex and pin a grid line a hair away from the vertex's.
+void Cleaner::move_ends_onto_boundary_corners() {
+  const double tol = kCornerFraction * size_;
+  std::map<std::pair<long long, long long>, std::vector<Vec2>> corners;
+  auto cell = [&](double v) { return static_cast<long long>(std::floor(v / tol)); };
+  for (const auto& loop : loops_)
+    for (const auto& q : loop) corners[{cell(q.x()), cell(q.y())}].push_back(q);
+  for (int k = 0; k < static_cast<int>(creases_.size()); ++k) {
+    if (creases_[k].closed) continue;
+    for (int e = 0; e < 2; ++e) {
+      Vec2& p = end_point(creases_[k], e);
+      const Vec2* nearest = nullptr;
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy) {
+          const auto it = corners.find({cell(p.x()) + dx, cell(p.y()) + dy});
+          if (it == corners.end()) continue;
+          for (const auto& q : it->second)
+            if ((q - p).norm() <= tol && (!nearest || (q - p).norm() < (*nearest - p).norm()))
+              nearest = &q;
+        }
+      if (!nearest || *nearest == p) continue;
+      log(name(k) + ": end " + format_point(p) + " moved onto the boundary vertex " +
+          format_point(*nearest));
+      p = *nearest;
+    }
+  }
+}
+
+// The interior points where exactly two crease ends of one assignment touch, in groups (within
+// merge_tol, chained) that hold no other interior crease end: the joints of curves drawn as chains
+// of short pieces. A joint near a loose end is left to merging, which makes a junction of them.
+std::set<std::pair<double, double>> Cleaner::touching_pieces() const {
+  std::map<std::pair<double, double>, std::vector<int>> ends;
+  for (int k = 0; k < static_cast<int>(creases_.size()); ++k)
+    if (!creases_[k].closed)
+      for (const Vec2* p : {&creases_[k].points.front(), &creases_[k].points.back()})
+        if (sheet_side(*p) == 1) ends[{p->x(), p->y()}].push_back(k);
+  std::vector<Vec2> points;
+  std::vector<bool> paired;
+  for (const auto& [key, owners] : ends) {
+    points.push_back(Vec2(key.first, key.second));
+    paired.push_back(owners.size() == 2 && creases_[owners[0]].folds_like(creases_[owners[1]]));
+  }
+  std::set<std::pair<double, double>> joints;
+  for (const auto& cluster : cluster_points(points, merge_tol_)) {
+    if (!std::all_of(cluster.begin(), cluster.end(), [&](int i) { return paired[i]; })) continue;
+    for (int i : cluster) joints.insert({points[i].x(), points[i].y()});
+  }
+  return joints;
+}
+
+// Two crease ends meeting alone inside the sheet are one crease drawn in two pieces (only at
+// `only`'s points when given).
+void Cleaner::join_continuing_creases(
+    const std::optional<std::set<std::pair<double, double>>>& only) {
   for (bool joined = true; joined;) {
     joined = false;
     std::map<std::pair<double, double>, std::vector<std::pair<int, int>>> ends;
@@ -127,7 +191,7 @@ void Cleaner::join_continuing_creases() {
       }
     }
     for (const auto& [key, list] : ends) {
-      if (list.size() != 2) continue;
+      if (list.size() != 2 || (only && !only->count(key))) continue;
       const Vec2 p(key.first, key.second);
       if (sheet_side(p) != 1 || on_other_crease(p, list[0].first, list[1].first)) continue;
       const auto [a, ea] = list[0];

@@ -4,8 +4,10 @@
 //
 //  0. Crease segments drawn along the sheet boundary or along an earlier crease (within 1e-6 L)
 //     are removed, with a warning; the crease is split where they were.
-//  1. Crease ends closer than merge_tol = L/100 are merged (cluster mean); two crease ends that
-//     meet alone in the sheet's interior are joined into one crease.
+//  1. Crease ends that touch (within 1e-6 L) alone in the sheet's interior are joined into one
+//     crease first (a curve drawn as many short pieces); a crease end within L/1000 of a boundary
+//     vertex moves onto it. Then crease ends closer than merge_tol = L/100 are merged (cluster
+//     mean), and two crease ends that meet alone in the interior are joined into one crease.
 //  2. Creases are clipped to the sheet: parts outside (or in holes) are dropped, and the points
 //     where a crease leaves the sheet become crease ends, inserted into the boundary as vertices.
 //  3. Crossings and contacts between creases become junctions: crossings closer than merge_tol
@@ -14,8 +16,10 @@
 //  4. A crease end that is still free snaps, within snap_tol = L/50, to the nearest crease vertex
 //     (junction or boundary end of another crease), else onto the boundary, else onto another
 //     crease (a T junction). Otherwise the pattern is rejected.
-//  5. Junction x and y coordinates closer than snap_tol are aligned (to the boundary end's value
-//     when one is in the group, else to the mean), so the grid does not get needlessly thin rows.
+//  5. Crease ends on slanted boundary edges whose x (or y) coordinates all lie within L/1000 move,
+//     with their boundary vertices, to their mean. Junction x and y coordinates closer than
+//     snap_tol are aligned (to the boundary end's value when one is in the group, else to the
+//     mean), so the grid does not get needlessly thin rows.
 // After cleaning, creases meet each other and the boundary only at shared polyline vertices.
 #include <string>
 #include <vector>

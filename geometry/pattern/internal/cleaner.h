@@ -6,6 +6,7 @@
 // pattern_cleaning.cpp has the pipeline, step 1 and the final check.
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -16,6 +17,12 @@
 namespace sdog::cleaning {
 
 using Vec2 = Eigen::Vector2d;
+
+/// Points this close (fraction of L) are drawn at the same place: the ends of pieces of one crease
+/// drawn end to end, a segment drawn along another.
+constexpr double kTouchFraction = 1e-6;
+/// A crease end this close (fraction of L) to a boundary vertex is meant to end on it.
+constexpr double kCornerFraction = 1e-3;
 
 /// A point to insert into a polyline: `param` along segment `seg`.
 struct Insertion {
@@ -90,8 +97,10 @@ class Cleaner {
   // Step 1 (pattern_cleaning.cpp).
   // Step 0 (cleaning_overlaps.cpp).
   void drop_overlapping_segments();
-  void merge_crease_ends();
-  void join_continuing_creases();
+  void merge_crease_ends(double tol);
+  void move_ends_onto_boundary_corners();
+  std::set<std::pair<double, double>> touching_pieces() const;
+  void join_continuing_creases(const std::optional<std::set<std::pair<double, double>>>& only);
   bool on_other_crease(const Vec2& p, int a, int b) const;
 
   // Step 2 (cleaning_clipping.cpp).
@@ -123,6 +132,7 @@ class Cleaner {
 
   // Step 5 (cleaning_junctions.cpp).
   void align_junctions();
+  void align_boundary_ends(int axis);
   std::vector<Vec2> collect_junctions();
   void align_axis(int axis, const std::vector<Vec2>& fixed);
   void align_junction(int j, int axis, double target);
@@ -134,6 +144,7 @@ class Cleaner {
   Sheet sheet_;
   std::vector<Crease> creases_;
   std::vector<Polyline2> loops_;  ///< outer boundary, then the holes
+  double size_ = 0;               ///< L
   double merge_tol_ = 0, snap_tol_ = 0;
   double snap_fraction_ = 0;  ///< snap_tol_ / L, for messages
   std::vector<Vec2> junctions_, pins_;

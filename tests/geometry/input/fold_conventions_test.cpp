@@ -1,8 +1,9 @@
-// How drawn curves are read (fold_conventions.h): attributes over Origami Simulator's colours over
-// dashes; facet lines ignored, cut lines refused.
+// How drawn curves are read (fold_conventions.h): attributes over layers over Origami Simulator's
+// colours over dashes; facet lines ignored, cut lines joined with the boundary.
 #include <gtest/gtest.h>
 
 #include "base/errors.h"
+#include "geometry/input/fold_conventions.h"
 #include "geometry/input/svg_pattern.h"
 #include "geometry/input/svg_reader.h"
 #include "geometry/pattern/crease_pattern.h"
@@ -84,8 +85,88 @@ TEST(FoldConventions, BadAttributesAndCutLinesAreClearErrors) {
           .find("0 to 180"),
       std::string::npos);
   EXPECT_NE(message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#00ff00\"/>")
-                .find("a cut line (green)"),
-            std::string::npos);
+                .find("this cut line is not closed"),
+            std::string::npos)
+      << "a slit";
+}
+
+// A drawing as Illustrator exports one: every stroke black, the meaning in the group ids.
+const char* const kIllustratorLayers =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+    "<g id=\"Layer_1\">"
+    "<g id=\"CutLine\"><polygon points=\"0,0 100,0 100,100 0,100\" fill=\"none\" "
+    "stroke=\"#000000\"/></g>"
+    "<g id=\"MountainLine\"><line x1=\"30\" y1=\"0\" x2=\"30\" y2=\"100\" fill=\"none\" "
+    "stroke=\"#000000\"/></g>"
+    "<g id=\"ValleyLine\"><line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" fill=\"none\" "
+    "stroke=\"#000000\" stroke-dasharray=\"3,3\"/>"
+    "<line x1=\"80\" y1=\"0\" x2=\"80\" y2=\"100\" stroke=\"#ff0000\" stroke-opacity=\"0.5\"/>"
+    "</g></g></svg>";
+
+TEST(FoldConventions, IllustratorLayersGiveBlackStrokesTheirMeaning) {
+  const CreasePattern p = crease_pattern_from_svg(parse_svg(kIllustratorLayers, "t.svg"));
+  EXPECT_DOUBLE_EQ(p.sheet.bbox.width(), 100) << "the cut outline is the sheet";
+  ASSERT_EQ(p.creases.size(), 3u);
+  EXPECT_EQ(p.creases[0].fold, Fold::kMountain);
+  EXPECT_EQ(p.creases[0].layer, "MountainLine");
+  EXPECT_EQ(p.creases[1].fold, Fold::kValley);
+  EXPECT_EQ(p.creases[1].layer, "ValleyLine");
+  EXPECT_EQ(p.creases[2].fold, Fold::kValley) << "the layer wins over the red colour";
+  EXPECT_FALSE(p.creases[2].angle) << "the opacity of a mountain colour is not a valley's angle";
+}
+
+TEST(FoldConventions, InkscapeLayerLabelsWinOverIdsAndTheNearestGroupDecides) {
+  const CreasePattern p = pattern_of(
+      "<g inkscape:groupmode=\"layer\" id=\"layer1\" inkscape:label=\"Valley_Fold\" "
+      "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\">"
+      "<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#0000ff\" stroke-opacity=\"0.25\"/>"
+      "<g id=\"mountains\"><line x1=\"40\" y1=\"0\" x2=\"40\" y2=\"100\" stroke=\"#333\"/></g>"
+      "<g id=\"mountain and valley\"><line x1=\"60\" y1=\"0\" x2=\"60\" y2=\"100\" "
+      "stroke=\"#333\"/></g>"
+      "<line x1=\"80\" y1=\"0\" x2=\"80\" y2=\"100\" stroke=\"#333\" data-fold=\"flat\"/>"
+      "</g>");
+  ASSERT_EQ(p.creases.size(), 4u);
+  EXPECT_EQ(p.creases[0].fold, Fold::kValley);
+  EXPECT_EQ(p.creases[0].layer, "Valley_Fold");
+  ASSERT_TRUE(p.creases[0].angle) << "a blue line in a valley layer keeps its opacity angle";
+  EXPECT_DOUBLE_EQ(*p.creases[0].angle, 45);
+  EXPECT_EQ(p.creases[1].fold, Fold::kMountain) << "the nearest group decides";
+  EXPECT_EQ(p.creases[1].layer, "mountains");
+  EXPECT_EQ(p.creases[2].fold, Fold::kValley) << "a name with two words says nothing";
+  EXPECT_EQ(p.creases[2].layer, "Valley_Fold");
+  EXPECT_EQ(p.creases[3].fold, Fold::kFlat) << "data-fold wins over the layer";
+  EXPECT_TRUE(p.creases[3].layer.empty());
+}
+
+TEST(FoldConventions, ACutLoopInsideTheSheetIsAHoleAndBoundaryLayersOutlineIt) {
+  const CreasePattern p = crease_pattern_from_svg(
+      parse_svg("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 200 200\">"
+                "<g id=\"Outline\"><rect x=\"0\" y=\"0\" width=\"100\" height=\"100\" "
+                "stroke=\"#ff0000\" fill=\"none\"/></g>"
+                "<circle cx=\"50\" cy=\"50\" r=\"10\" stroke=\"#00ff00\" fill=\"none\"/>"
+                "</svg>",
+                "t.svg"));
+  EXPECT_DOUBLE_EQ(p.sheet.bbox.width(), 100) << "the outline layer, not the viewBox";
+  EXPECT_EQ(p.sheet.holes.size(), 1u);
+  EXPECT_TRUE(p.creases.empty());
+}
+
+TEST(FoldConventions, LayerNamesAreReadInAnyCase) {
+  for (const auto& [name, fold] :
+       {std::pair{"MOUNTAIN", Fold::kMountain}, std::pair{"valleyLines", Fold::kValley},
+        std::pair{"Mountain_Valley", Fold::kUnassigned}}) {
+    const std::optional<CurveReading> r = layer_meaning(name);
+    if (fold == Fold::kUnassigned) {
+      EXPECT_FALSE(r) << name;
+      continue;
+    }
+    ASSERT_TRUE(r) << name;
+    EXPECT_EQ(r->fold, fold) << name;
+    EXPECT_EQ(r->layer, name);
+  }
+  EXPECT_EQ(layer_meaning("CutLine")->role, CurveRole::kCut);
+  EXPECT_EQ(layer_meaning("boundary")->role, CurveRole::kBoundary);
+  EXPECT_FALSE(layer_meaning("Layer_1"));
 }
 
 }  // namespace
@@ -111,6 +192,26 @@ TEST(BoundaryPieces, SeparateSegmentsInAnyOrderAndDirectionAreJoined) {
   EXPECT_DOUBLE_EQ(p.sheet.bbox.height(), 100);
   ASSERT_EQ(p.creases.size(), 1u);
   EXPECT_EQ(p.creases[0].fold, Fold::kMountain);
+}
+
+TEST(BoundaryPieces, PiecesThatOverlapByAHairAtTheirJoinsMakeASimpleLoop) {
+  // A sheet drawn as short lines, as exporters write it: each piece starts a hair back along the
+  // previous one (0.02 units), and two creases start at one of the joins.
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<line x1=\"0\" y1=\"0\" x2=\"50\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"49.98\" y1=\"0\" x2=\"100\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"100\" y1=\"-0.01\" x2=\"100\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"100.02\" y1=\"100\" x2=\"0\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"0\" y1=\"100.01\" x2=\"0\" y2=\"0.02\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"0\" x2=\"30\" y2=\"100\" stroke=\"#f00\"/>"
+      "<line x1=\"50\" y1=\"0\" x2=\"70\" y2=\"100\" stroke=\"#00f\"/>"
+      "</svg>";
+  const CreasePattern p = crease_pattern_from_svg(parse_svg(svg, "t.svg"));
+  EXPECT_TRUE(p.sheet.holes.empty());
+  EXPECT_EQ(p.sheet.outer.size(), 5u) << "four corners and the join the creases start from";
+  EXPECT_NEAR(p.sheet.bbox.width(), 100, 0.05);
+  EXPECT_EQ(p.creases.size(), 2u);
 }
 
 TEST(BoundaryPieces, AGapWiderThanTheToleranceIsAnError) {

@@ -207,3 +207,47 @@ TEST(NonSeparatingCreases, SeparatingCreasesPass) {
 
 }  // namespace
 }  // namespace sdog
+
+namespace sdog {
+namespace {
+
+TEST(PatternCleaning, PiecesShorterThanTheMergeToleranceJoinIntoOneCrease) {
+  // A wave drawn as 200 pieces of 0.5 units, as exporters write curves (L = 100: merging ends
+  // reaches 1 unit, two pieces' length).
+  std::vector<Polyline2> pieces;
+  auto wave = [](double x) { return V2(x, 50 + 5 * std::sin(x / 10)); };
+  for (int i = 0; i < 200; ++i) pieces.push_back({wave(0.5 * i), wave(0.5 * (i + 1))});
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100, pieces));
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_EQ(c.creases[0].points.size(), 201u);
+  EXPECT_EQ(c.creases[0].points.front(), wave(0));
+  EXPECT_EQ(c.creases[0].points.back(), wave(100));
+}
+
+TEST(PatternCleaning, BoundaryEndsAHairApartInXShareOneGridLine) {
+  // A hexagon whose two left vertices carry crease ends 0.04 units apart in x (L = 100): each
+  // would pin its own grid line a hair from the other's.
+  CreasePattern p = rectangle_pattern(100, 100, {{{15, 25}, {85, 25}}, {{15.04, 75}, {85, 75}}});
+  p.sheet.outer = {{0, 50},   {15, 25},  {30, 0},   {70, 0},
+                   {100, 50}, {70, 100}, {30, 100}, {15.04, 75}};
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.creases.size(), 2u);
+  const V2 a = c.creases[0].points.front(), b = c.creases[1].points.front();
+  EXPECT_EQ(a.x(), b.x());
+  EXPECT_NEAR(a.x(), 15.02, 1e-12);
+  for (const V2& q : {a, b})
+    EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), q), c.sheet.outer.end())
+        << "the boundary vertex moved with the crease end";
+  EXPECT_EQ(c.creases[0].points.back(), V2(85, 25)) << "ends far apart stay where drawn";
+}
+
+TEST(PatternCleaning, EndsAHairFromABoundaryVertexMoveOntoIt) {
+  CreasePattern p = rectangle_pattern(100, 100, {{{15.01, 24.99}, {85, 25}}});
+  p.sheet.outer = {{0, 50}, {15, 25}, {30, 0}, {70, 0}, {100, 50}, {70, 100}, {30, 100}};
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_EQ(c.creases[0].points.front(), V2(15, 25));
+}
+
+}  // namespace
+}  // namespace sdog

@@ -93,6 +93,64 @@ TEST(FoldedAsDrawn, ColoursDashesAndAttributesGiveTheSameFold) {
         << k;
 }
 
+// The pleats as editors export them: every stroke black with the meaning in its layer
+// (Illustrator's group ids, or Inkscape's layer labels), the sheet outline drawn as short lines
+// whose ends overlap by a hair, and each crease as short pieces (0.5 units, half the distance
+// within which crease ends merge).
+std::string exported_pleats_svg(bool inkscape) {
+  auto layer = [&](const std::string& name) {
+    return inkscape ? "<g inkscape:groupmode=\"layer\" id=\"layer" + std::to_string(name.size()) +
+                          "\" inkscape:label=\"" + name + "\">"
+                    : "<g id=\"" + name + "\">";
+  };
+  auto line = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const char* extra) {
+    return "<line x1=\"" + std::to_string(a.x()) + "\" y1=\"" + std::to_string(a.y()) + "\" x2=\"" +
+           std::to_string(b.x()) + "\" y2=\"" + std::to_string(b.y()) + "\" fill=\"none\" " +
+           "stroke=\"#000000\"" + extra + "/>";
+  };
+  std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" viewBox=\"0 0 100 100\">" +
+      layer(inkscape ? "Outline" : "CutLine");
+  const Eigen::Vector2d corners[] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  for (int c = 0; c < 4; ++c)
+    for (int half = 0; half < 2; ++half) {
+      const Eigen::Vector2d a = corners[c], b = corners[(c + 1) % 4];
+      const Eigen::Vector2d hair = 0.01 * (b - a).normalized();
+      svg += line(a + 0.5 * half * (b - a) - (half ? hair : Eigen::Vector2d::Zero()),
+                  a + 0.5 * (half + 1) * (b - a), "");
+    }
+  const double xs[] = {25, 50, 75};
+  for (int k = 0; k < 3; ++k) {
+    svg += std::string("</g>") + layer(k == 1 ? "ValleyLine" : "Mountain_Fold");
+    for (int i = 0; i < 200; ++i) {
+      auto at = [&](int j) {
+        const double y = 0.5 * j;
+        return Eigen::Vector2d(xs[k] + 5 * (y <= 50 ? y : 100 - y) / 50, y);
+      };
+      svg += line(at(i), at(i + 1), k == 1 ? " stroke-dasharray=\"4,3\"" : "");
+    }
+  }
+  return svg + "</g></svg>";
+}
+
+TEST(FoldedAsDrawn, LayersAndPiecesAsEditorsExportThemGiveTheSameFold) {
+  const DogModel colours = model_of(pleats_svg(
+      [](int k) { return std::string(k == 1 ? "stroke=\"#0000ff\"" : "stroke=\"#ff0000\""); }));
+  const Dofs x = folded(colours, fold_config());
+  for (const bool inkscape : {false, true}) {
+    const DogModel exported = model_of(exported_pleats_svg(inkscape));
+    ASSERT_EQ(exported.clean.creases.size(), 3u) << inkscape;
+    ASSERT_EQ(exported.fine.V.rows(), colours.fine.V.rows()) << inkscape;
+    EXPECT_LT((exported.fine.V - colours.fine.V).cwiseAbs().maxCoeff(), 1e-9) << inkscape;
+    EXPECT_TRUE(exported.fine.F == colours.fine.F) << inkscape;
+    for (size_t k = 0; k < 3; ++k)
+      EXPECT_EQ(exported.fine.stitching.curves[k].fold, colours.fine.stitching.curves[k].fold);
+    EXPECT_EQ(exported.clean.creases[1].layer, "ValleyLine");
+    EXPECT_LT((folded(exported, fold_config()) - x).cwiseAbs().maxCoeff(), 1e-6) << inkscape;
+  }
+}
+
 TEST(FoldedAsDrawn, TheConfigurationSetsAssignmentAndAngleByIdOrIndex) {
   DogModel model = model_of(pleats_svg([](int) { return std::string("stroke=\"#ff00ff\""); }));
   RunConfig config = fold_config();
