@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "base/atomic_output.h"
 #include "base/text_format.h"
+#include "geometry/input/fold_writer.h"
 #include "ui/vis/model_files.h"
 
 namespace sdog::cli {
@@ -148,6 +149,7 @@ void register_mesh_command(CLI::App& app, Runner& run) {
       if (!args->out.empty()) {
         OutputSet out(args->out);
         vis::write_model_files(model, out);
+        out.write_text("pattern.fold", fold_text(model.clean));
         files = out.commit();
       }
       if (args->json)

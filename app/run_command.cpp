@@ -18,6 +18,7 @@
 #include "base/errors.h"
 #include "base/statistics.h"
 #include "base/text_format.h"
+#include "geometry/input/fold_writer.h"
 #include "geometry/pattern/fold_tips.h"
 #include "solver/config/run_config_json.h"
 #include "solver/problem/crease_angles.h"
@@ -333,6 +334,7 @@ void run(const RunArgs& a) {
     if (!patches.empty()) out->write_text("patches.csv", patches.text());
     out->write_text("run.json", run_json(a, setup, summary, totals).dump(2) + "\n");
     out->write_text("creases.csv", creases_csv(model.fine, setup.scenario(), setup.positions()));
+    out->write_text("pattern.fold", fold_text(model.clean));
     if (frames) frames->finish();
     if (surfaces) {
       surfaces->write_final(to_positions(setup.positions()),

@@ -89,18 +89,21 @@ void Cleaner::drop_overlapping_segments() {
     const Polyline2& pts = crease.points;
     const int segments = segment_count(pts, crease.closed);
     std::vector<bool> drop(segments, false);
-    int along_boundary = 0;
+    int along_boundary = 0, along_itself = 0;
     std::vector<int> duplicated;  // earlier creases it runs along
     for (int i = 0; i < segments; ++i) {
-      const std::vector<int> owners = common_owners(index, pts[i], pts[(i + 1) % pts.size()]);
+      const Vec2 &a = pts[i], &b = pts[(i + 1) % pts.size()];
+      const std::vector<int> owners = common_owners(index, a, b);
+      index.add(k, a, b);  // a crease drawn back over itself runs along its own earlier segments
       if (owners.empty()) continue;
       drop[i] = true;
       if (owners.front() == kBoundary)
         ++along_boundary;
+      else if (owners.front() == k)
+        ++along_itself;
       else
         duplicated.push_back(owners.front());
     }
-    for (int i = 0; i < segments; ++i) index.add(k, pts[i], pts[(i + 1) % pts.size()]);
     if (std::none_of(drop.begin(), drop.end(), [](bool d) { return d; })) {
       kept.push_back(crease);
       continue;
@@ -110,6 +113,9 @@ void Cleaner::drop_overlapping_segments() {
     if (along_boundary > 0)
       warn(name(k) + " is drawn along the sheet boundary (" + std::to_string(along_boundary) +
            " segment(s)); that part is not a crease and is removed");
+    if (along_itself > 0)
+      warn(name(k) + " runs back over itself (" + std::to_string(along_itself) +
+           " segment(s) drawn twice); the repeated part is removed");
     for (int j : duplicated) {
       std::string what = name(k) + " is drawn again along " + name(j) + "; merged into it";
       if (!creases_[j].folds_like(crease))

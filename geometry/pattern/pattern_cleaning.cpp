@@ -46,7 +46,9 @@ CleanPattern Cleaner::run() {
   merge_crease_ends(kTouchFraction * size_);
   join_continuing_creases(touching_pieces());
   move_ends_onto_boundary_corners();
+  merge_crease_ends(kCornerFraction * size_);
   merge_crease_ends(merge_tol_);
+  drop_overlapping_segments();  // pieces drawn twice with small offsets coincide now
   join_continuing_creases(std::nullopt);
   clip_to_sheet();
   make_junctions();
@@ -110,6 +112,11 @@ void Cleaner::merge_crease_ends(double tol) {
     std::vector<Vec2> members;
     for (int i : cluster) members.push_back(pts[i]);
     Vec2 target = mean_of_distinct(members);
+    // A chain of ends each near the next but spread wider than tol is a dense drawing (a fan of
+    // creases, a fine tessellation), not one point drawn sloppily: it stays as drawn.
+    if (std::any_of(members.begin(), members.end(),
+                    [&](const Vec2& p) { return (p - target).norm() > tol; }))
+      continue;
     for (const auto& p : members)
       if (sheet_side(p) == 0) target = p;  // keep ends that are exactly on the boundary there
     bool moved = false;
@@ -154,8 +161,10 @@ void Cleaner::move_ends_onto_boundary_corners() {
 }
 
 // The interior points where exactly two crease ends of one assignment touch, in groups (within
-// merge_tol, chained) that hold no other interior crease end: the joints of curves drawn as chains
-// of short pieces. A joint near a loose end is left to merging, which makes a junction of them.
+// merge_tol, chained) that hold no loose interior crease end (alone, or touching one of another
+// assignment; three or more ends at one point are an exact junction, not loose), and not within
+// kCornerFraction L of such a junction: the joints of curves drawn as chains of short pieces. A
+// joint near a loose end or a junction is left to merging, which makes one junction of them.
 std::set<std::pair<double, double>> Cleaner::touching_pieces() const {
   std::map<std::pair<double, double>, std::vector<int>> ends;
   for (int k = 0; k < static_cast<int>(creases_.size()); ++k)
@@ -166,12 +175,30 @@ std::set<std::pair<double, double>> Cleaner::touching_pieces() const {
   std::vector<bool> paired;
   for (const auto& [key, owners] : ends) {
     points.push_back(Vec2(key.first, key.second));
-    paired.push_back(owners.size() == 2 && creases_[owners[0]].folds_like(creases_[owners[1]]));
+    // Three or more ends at exactly one point are a junction drawn exactly, not a loose end.
+    paired.push_back(owners.size() > 2 ||
+                     (owners.size() == 2 && creases_[owners[0]].folds_like(creases_[owners[1]])));
   }
+  auto owners = [&](int i) { return ends.at({points[i].x(), points[i].y()}); };
+  // Does a crease at joint i reach junction j (a short piece between them)?
+  auto reaches = [&](int i, int j) {
+    for (int k : owners(i))
+      for (const Vec2* p : {&creases_[k].points.front(), &creases_[k].points.back()})
+        if (*p == points[j]) return true;
+    return false;
+  };
   std::set<std::pair<double, double>> joints;
   for (const auto& cluster : cluster_points(points, merge_tol_)) {
     if (!std::all_of(cluster.begin(), cluster.end(), [&](int i) { return paired[i]; })) continue;
-    for (int i : cluster) joints.insert({points[i].x(), points[i].y()});
+    for (int i : cluster) {
+      // A joint a hair from a junction, not on a piece leading to it, is that junction drawn with
+      // an offset: merging makes them one.
+      const bool at_junction = std::any_of(cluster.begin(), cluster.end(), [&](int j) {
+        return owners(j).size() > 2 && (points[j] - points[i]).norm() <= kCornerFraction * size_ &&
+               !reaches(i, j);
+      });
+      if (owners(i).size() == 2 && !at_junction) joints.insert({points[i].x(), points[i].y()});
+    }
   }
   return joints;
 }

@@ -2,12 +2,16 @@
 // Pattern cleaning: makes a drawn crease pattern exact enough to mesh. Tolerances are fractions of
 // L = max(sheet width, height); the defaults are those of the reference implementation.
 //
-//  0. Crease segments drawn along the sheet boundary or along an earlier crease (within 1e-6 L)
-//     are removed, with a warning; the crease is split where they were.
+//  0. Crease segments drawn along the sheet boundary, along an earlier crease or along the
+//     crease's own earlier segments (within 1e-6 L) are removed, with a warning; the crease is
+//     split where they were.
 //  1. Crease ends that touch (within 1e-6 L) alone in the sheet's interior are joined into one
 //     crease first (a curve drawn as many short pieces); a crease end within L/1000 of a boundary
-//     vertex moves onto it. Then crease ends closer than merge_tol = L/100 are merged (cluster
-//     mean), and two crease ends that meet alone in the interior are joined into one crease.
+//     vertex moves onto it. Then crease ends closer than L/1000, and then than merge_tol = L/100,
+//     are merged (to the cluster mean; a cluster some of whose ends lie farther than the tolerance
+//     from its mean is a dense drawing and stays), step 0 runs again (a crease drawn twice with
+//     small offsets now coincides with itself), and two crease ends that meet alone in the
+//     interior are joined into one crease.
 //  2. Creases are clipped to the sheet: parts outside (or in holes) are dropped, and the points
 //     where a crease leaves the sheet become crease ends, inserted into the boundary as vertices.
 //  3. Crossings and contacts between creases become junctions: crossings closer than merge_tol

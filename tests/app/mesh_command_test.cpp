@@ -74,18 +74,24 @@ TEST(MeshCommand, TextSummaryNamesEveryCount) {
     EXPECT_NE(r.out.find(word), std::string::npos) << word << " missing in\n" << r.out;
 }
 
-TEST(MeshCommand, OutWritesTheFourVtkFiles) {
+TEST(MeshCommand, OutWritesTheVtkFilesAndThePatternAsFold) {
   const std::string dir = test::temp_dir("mesh_out") + "/nested/out";
   const auto r =
       test::run_sdog("mesh " + test::dataset("four_corner_arcs.svg") + " --res 21x21 --out " + dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* f : {"fine.vtu", "coarse.vtu", "creases.vtp", "pattern.vtp"}) {
+  for (const char* f : {"fine.vtu", "coarse.vtu", "creases.vtp", "pattern.vtp", "pattern.fold"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
     EXPECT_NE(r.out.find(f), std::string::npos) << "the summary should name " << f;
   }
   int entries = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++entries;
-  EXPECT_EQ(entries, 4) << "temporary files left behind";
+  EXPECT_EQ(entries, 5) << "temporary files left behind";
+  // The FOLD file meshes into the same patches.
+  const auto back = test::run_sdog("mesh " + dir + "/pattern.fold --res 21x21 --json");
+  ASSERT_EQ(back.code, 0) << back.err;
+  const auto first =
+      test::run_sdog("mesh " + test::dataset("four_corner_arcs.svg") + " --res 21x21 --json");
+  EXPECT_EQ(nlohmann::json::parse(back.out)["fine"], nlohmann::json::parse(first.out)["fine"]);
 }
 
 TEST(MeshCommand, FineOnlyAcceptsEvenResolutions) {

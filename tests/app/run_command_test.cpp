@@ -90,6 +90,11 @@ TEST(RunCommand, WritesTheLogRunJsonAndFrames) {
   EXPECT_DOUBLE_EQ(std::stod(csv.rows.back()[csv.column("t")]), 1.0);
   EXPECT_DOUBLE_EQ(std::stod(csv.rows[9][csv.column("t")]), 0.5);
 
+  // pattern.fold: the pattern as read, a FOLD crease pattern.
+  const auto fold = nlohmann::json::parse(test::slurp(dir + "/pattern.fold"));
+  EXPECT_EQ(fold.at("frame_classes"), nlohmann::json::array({"creasePattern"}));
+  EXPECT_EQ(fold.at("edges_vertices").size(), fold.at("edges_assignment").size());
+
   // run.json: parameters, versions, totals, the final state.
   const auto j = nlohmann::json::parse(test::slurp(dir + "/run.json"));
   EXPECT_EQ(j.at("status"), "completed");

@@ -251,3 +251,43 @@ TEST(PatternCleaning, EndsAHairFromABoundaryVertexMoveOntoIt) {
 
 }  // namespace
 }  // namespace sdog
+
+namespace sdog {
+namespace {
+
+bool warned(const CleanPattern& c, const std::string& text) {
+  return std::any_of(c.warnings.begin(), c.warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+TEST(PatternCleaning, ACreaseDrawnTwiceWithASmallOffsetIsMergedWithAWarning) {
+  // L = 100: the second drawing's ends lie 0.3 units from the first's, within merging.
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{10, 0}, {10, 100}}, {{10.3, 0}, {10.3, 100}}}));
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_TRUE(warned(c, "crease 1 (test crease 1) is drawn again along crease 0 (test crease 0)"));
+}
+
+TEST(PatternCleaning, APartDrawnBackOverItselfIsRemovedWithAWarning) {
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 50}, {100, 50}, {0, 50.0000001}}}));
+  ASSERT_EQ(c.creases.size(), 1u);
+  EXPECT_EQ(c.creases[0].points.size(), 2u);
+  EXPECT_TRUE(warned(c, "runs back over itself"));
+}
+
+TEST(PatternCleaning, ADenseFanOfEndsStaysAsDrawn) {
+  // Four creases start 0.8 units apart on the bottom edge (L = 100: merging reaches 1 unit, but the
+  // group spreads over 2.4): a fan, not one point drawn four times.
+  const CleanPattern c = clean_pattern(rectangle_pattern(100, 100,
+                                                         {{{50, 0}, {10, 100}},
+                                                          {{50.8, 0}, {30, 100}},
+                                                          {{51.6, 0}, {50, 100}},
+                                                          {{52.4, 0}, {70, 100}}}));
+  ASSERT_EQ(c.creases.size(), 4u);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(c.creases[k].points.front(), V2(50 + 0.8 * k, 0)) << k;
+  EXPECT_TRUE(c.junctions.empty());
+}
+
+}  // namespace
+}  // namespace sdog

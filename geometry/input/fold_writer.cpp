@@ -1,0 +1,106 @@
+#include "geometry/input/fold_writer.h"
+
+#include <array>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
+
+namespace sdog {
+namespace {
+
+// FOLD's letter of an assignment.
+const char* letter(Fold fold) {
+  switch (fold) {
+    case Fold::kMountain:
+      return "M";
+    case Fold::kValley:
+      return "V";
+    case Fold::kFlat:
+      return "F";
+    case Fold::kUnassigned:
+      return "U";
+  }
+  return "U";
+}
+
+// The FOLD arrays under construction: vertices numbered in order of first use.
+class FoldArrays {
+ public:
+  int vertex(const Eigen::Vector2d& p) {
+    const auto [it, added] = index_.emplace(std::make_pair(p.x(), p.y()), coords_.size());
+    if (added) coords_.push_back({p.x(), p.y() == 0 ? 0.0 : -p.y()});
+    return static_cast<int>(it->second);
+  }
+
+  void edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const char* assignment,
+            nlohmann::json angle) {
+    edges_.push_back({vertex(a), vertex(b)});
+    assignments_.push_back(assignment);
+    angles_.push_back(std::move(angle));
+  }
+
+  void polyline(const Polyline2& points, bool closed, const char* assignment,
+                const nlohmann::json& angle) {
+    const size_t n = points.size();
+    for (size_t i = 0; i + 1 < n + (closed ? 1 : 0); ++i)
+      edge(points[i], points[(i + 1) % n], assignment, angle);
+  }
+
+  nlohmann::ordered_json frame(const std::string& source) const {
+    nlohmann::ordered_json j;
+    j["file_spec"] = 1.1;
+    j["file_creator"] = "Scalable DOGs";
+    j["file_title"] = source;
+    j["file_classes"] = {"singleModel"};
+    j["frame_title"] = "crease pattern as read";
+    j["frame_classes"] = {"creasePattern"};
+    j["frame_attributes"] = {"2D"};
+    j["vertices_coords"] = coords_;
+    j["edges_vertices"] = edges_;
+    j["edges_assignment"] = assignments_;
+    j["edges_foldAngle"] = angles_;
+    return j;
+  }
+
+ private:
+  std::map<std::pair<double, double>, size_t> index_;
+  std::vector<std::array<double, 2>> coords_;
+  std::vector<std::array<int, 2>> edges_;
+  std::vector<std::string> assignments_;
+  std::vector<nlohmann::json> angles_;
+};
+
+}  // namespace
+
+std::string fold_text(const CleanPattern& pattern) {
+  FoldArrays fold;
+  fold.polyline(pattern.sheet.outer, true, "B", nullptr);
+  for (const auto& hole : pattern.sheet.holes) fold.polyline(hole, true, "B", nullptr);
+  for (const auto& c : pattern.creases) {
+    nlohmann::json angle = nullptr;
+    if (c.fold == Fold::kFlat) angle = 0.0;
+    if (c.angle && (c.fold == Fold::kMountain || c.fold == Fold::kValley))
+      angle = fold_sign(c.fold) * *c.angle;
+    fold.polyline(c.points, c.closed, letter(c.fold), angle);
+  }
+  // One line per key, and per element of the arrays of arrays (vertices, edges).
+  const nlohmann::ordered_json frame = fold.frame(pattern.source);
+  std::string text = "{";
+  for (auto it = frame.begin(); it != frame.end(); ++it) {
+    text += std::string(it == frame.begin() ? "" : ",") + "\n  " + nlohmann::json(it.key()).dump() +
+            ": ";
+    const bool rows = it->is_array() && !it->empty() && it->front().is_array();
+    if (!rows) {
+      text += it->dump();
+      continue;
+    }
+    text += "[";
+    for (size_t i = 0; i < it->size(); ++i)
+      text += std::string(i == 0 ? "" : ",") + "\n    " + (*it)[i].dump();
+    text += "\n  ]";
+  }
+  return text + "\n}\n";
+}
+
+}  // namespace sdog
