@@ -38,13 +38,18 @@ void add_pattern_options(CLI::App& cmd, PatternOptions& o, bool required) {
                  "largest chord deviation when flattening curves, as a fraction of the sheet size")
       ->capture_default_str()
       ->check(CLI::Range(1e-9, 1e-2));
+  auto given = [&o](const std::string&) { o.tolerances_given = true; };
   cmd.add_option("--merge-tol", o.merge_fraction,
-                 "crease ends and crossings closer than this fraction of the sheet size merge")
-      ->capture_default_str();
+                 "crease ends and crossings closer than this fraction of the sheet size merge "
+                 "(unset: a drawing too dense for the default is cleaned with a tenth, or a "
+                 "hundredth, of both tolerances)")
+      ->capture_default_str()
+      ->each(given);
   cmd.add_option("--snap-tol", o.snap_fraction,
                  "free crease ends snap to the boundary or a crease within this fraction of the "
                  "sheet size; nearby junction coordinates align")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each(given);
   cmd.add_flag("--fine-only", o.fine_only,
                "build only the fine mesh (allows even resolutions; no coarse mesh, no map)");
 }
@@ -53,6 +58,7 @@ DogModel build_model(const PatternOptions& o, bool warn) {
   MeshOptions mesh_options;
   mesh_options.cleaning.merge_fraction = o.merge_fraction;
   mesh_options.cleaning.snap_fraction = o.snap_fraction;
+  mesh_options.cleaning.adapt = !o.tolerances_given;
   mesh_options.build_coarse = !o.fine_only;
   if (const std::string msg = mesh_options.cleaning.validate(); !msg.empty()) throw UsageError(msg);
   if (o.res != "auto") check_resolution(parse_resolution(o.res), mesh_options.build_coarse);

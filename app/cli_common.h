@@ -16,6 +16,7 @@ struct PatternOptions {
   double flatness = 1e-5;
   double merge_fraction = 0.01;
   double snap_fraction = 0.02;
+  bool tolerances_given = false;  ///< --merge-tol or --snap-tol was given: cleaning does not adapt
   bool fine_only = false;
 };
 

@@ -140,6 +140,22 @@ void count_types(FineCoarseMap& map) {
       std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::kCoarseOnly));
 }
 
+// The fine index of each coarse point of a curve, in order: the first fine point after the
+// previous match within tol of it. Fewer than the coarse points when one has no match.
+std::vector<int> matching_points(const CreaseStitching::Curve& fc, const CreaseStitching& fs,
+                                 const CreaseStitching::Curve& cc, const CreaseStitching& cs,
+                                 double tol) {
+  std::vector<int> fine_at;
+  size_t next = 0;
+  for (size_t f = 0; f < fc.points.size() && next < cc.points.size(); ++f) {
+    if ((fs.points[fc.points[f]].flat - cs.points[cc.points[next]].flat).norm() <= tol) {
+      fine_at.push_back(static_cast<int>(f));
+      ++next;
+    }
+  }
+  return fine_at;
+}
+
 // Fine crease curve k against coarse curve k: coarse crease points are fine crease points at the
 // same flat position (within tol); the fine points between them get their arc-length fraction.
 std::vector<FineCoarseMap::CurvePoint> map_curve(const CreaseStitching& fs,
@@ -147,19 +163,16 @@ std::vector<FineCoarseMap::CurvePoint> map_curve(const CreaseStitching& fs,
   const auto& fc = fs.curves[k];
   const auto& cc = cs.curves[k];
   std::vector<FineCoarseMap::CurvePoint> out(fc.points.size());
-  std::vector<int> coarse_at;  // fine index of each coarse point
-  size_t next = 0;
-  for (size_t f = 0; f < fc.points.size() && next < cc.points.size(); ++f) {
-    if ((fs.points[fc.points[f]].flat - cs.points[cc.points[next]].flat).norm() <= tol) {
-      out[f].coarse = static_cast<int>(next);
-      out[f].segment = static_cast<int>(next);
-      coarse_at.push_back(static_cast<int>(f));
-      ++next;
-    }
-  }
-  if (next != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
+  std::vector<int> coarse_at = matching_points(fc, fs, cc, cs, tol);
+  if (coarse_at.size() != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
+    coarse_at = matching_points(fc, fs, cc, cs, 2 * kVertexCreaseDistance);
+  if (coarse_at.size() != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
     throw std::logic_error("coarse crease " + std::to_string(k) +
                            " is not a subset of the fine one");
+  for (size_t c = 0; c < coarse_at.size(); ++c) {
+    out[coarse_at[c]].coarse = static_cast<int>(c);
+    out[coarse_at[c]].segment = static_cast<int>(c);
+  }
   const auto s = arc_lengths(fs, fc);
   const int nfp = static_cast<int>(fc.points.size());
   if (fc.closed) coarse_at.push_back(nfp);  // the loop returns to its first point

@@ -37,7 +37,9 @@ struct FineCoarseMap {
   std::vector<int> fine_to_coarse_quad;  ///< X vertex: the coarse quad it is the centre of
 
   /// For fine crease point k of curve c: if the coarse curve has the same point, `coarse` is its
-  /// index along the coarse curve; otherwise the point lies between coarse points `segment` and
+  /// index along the coarse curve (where the two meshes took a crease that touches a grid line
+  /// or passes a grid vertex as different points, the fine point within 2 kVertexCreaseDistance
+  /// of the coarse one stands for it); otherwise the point lies between coarse points `segment` and
   /// `segment + 1` (cyclically for closed curves) at arc-length fraction `fraction` in (0, 1).
   struct CurvePoint {
     int coarse = -1;

@@ -97,7 +97,46 @@ void Cleaner::make_junctions() {
     if (passes[k].empty()) continue;
     reroute_through_junctions(static_cast<int>(k), passes[k]);
   }
+  merge_shared_segments();
   drop_degenerate_creases();
+}
+
+// Two creases that cross at small angles near a junction can come out of rerouting running along
+// each other from their own crossing to that junction (each passes both). The two junctions are
+// one crowded crossing: the shorter such stretches (up to snap_tol) collapse onto their end with
+// more creases through it.
+void Cleaner::merge_shared_segments() {
+  for (bool merged = true; merged;) {
+    merged = false;
+    std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, int> uses;
+    for (const auto& c : creases_) {
+      const int m = segment_count(c.points, c.closed);
+      for (int i = 0; i < m; ++i) {
+        std::pair<double, double> a{c.points[i].x(), c.points[i].y()};
+        std::pair<double, double> b{c.points[(i + 1) % c.points.size()].x(),
+                                    c.points[(i + 1) % c.points.size()].y()};
+        ++uses[{std::min(a, b), std::max(a, b)}];
+      }
+    }
+    const VertexCounts counts = vertex_counts();
+    for (const auto& [segment, n] : uses) {
+      const Vec2 a(segment.first.first, segment.first.second);
+      const Vec2 b(segment.second.first, segment.second.second);
+      if (n < 2 || (a - b).norm() > snap_tol_ || sheet_side(a) != 1 || sheet_side(b) != 1) continue;
+      const bool keep_a = counts.at(segment.first) >= counts.at(segment.second);
+      const Vec2 from = keep_a ? b : a, to = keep_a ? a : b;
+      log("junctions " + format_point(from) + " and " + format_point(to) +
+          " merged: creases ran along each other between them");
+      replace_vertex(from, to);
+      for (auto& c : creases_) {
+        c.points.erase(std::unique(c.points.begin(), c.points.end()), c.points.end());
+        if (c.closed && c.points.size() > 1 && c.points.front() == c.points.back())
+          c.points.pop_back();
+      }
+      merged = true;
+      break;
+    }
+  }
 }
 
 // Two events (one on each crease) per contact between two creases. Throws for creases that
@@ -281,16 +320,46 @@ void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed) {
 }
 
 // Moves junction j's `axis` coordinate to `target` (in every crease), unless another junction
-// is already there.
+// is already there or the creases through it would then cross others (in dense drawings the move
+// can reach past a neighbouring crease).
 void Cleaner::align_junction(int j, int axis, double target) {
   Vec2& jpt = junctions_[j];
   Vec2 moved = jpt;
   moved[axis] = target;
   if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end()) return;
+  if (!move_keeps_creases_apart(jpt, moved)) return;
   log(std::string("junction ") + format_point(jpt) + " aligned in " + (axis == 0 ? "x" : "y") +
       " to " + format_number(target));
   replace_vertex(jpt, moved);
   jpt = moved;
+}
+
+}  // namespace sdog::cleaning
+
+namespace sdog::cleaning {
+
+// Would the crease segments at vertex `from`, moved to `to`, stay clear of every other crease and
+// boundary segment (touching only at shared vertices)?
+bool Cleaner::move_keeps_creases_apart(const Vec2& from, const Vec2& to) const {
+  auto moved = [&](const Vec2& p) { return p == from ? to : p; };
+  std::vector<std::pair<Vec2, Vec2>> changed, others;
+  for (const auto& c : creases_) {
+    const int m = segment_count(c.points, c.closed);
+    for (int i = 0; i < m; ++i) {
+      const Vec2 &a = c.points[i], &b = c.points[(i + 1) % c.points.size()];
+      (a == from || b == from ? changed : others).push_back({moved(a), moved(b)});
+    }
+  }
+  for (const auto& loop : loops_)
+    for (size_t i = 0; i < loop.size(); ++i)
+      others.push_back({loop[i], loop[(i + 1) % loop.size()]});
+  for (const auto& [a, b] : changed)
+    for (const auto& [c, d] : others) {
+      const bool shared = a == c || a == d || b == c || b == d;
+      if (segments_intersect(a, b, c, d) && (!shared || collinear_overlap(a, b, c, d)))
+        return false;
+    }
+  return true;
 }
 
 }  // namespace sdog::cleaning

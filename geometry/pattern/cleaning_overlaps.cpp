@@ -75,9 +75,12 @@ std::vector<int> common_owners(const SegmentIndex& index, const Vec2& a, const V
 
 }  // namespace
 
-void Cleaner::drop_overlapping_segments() {
+void Cleaner::drop_overlapping_segments(double fraction) {
   const double L = std::max(sheet_.bbox.width(), sheet_.bbox.height());
-  const double tol = kTouchFraction * L;
+  const double tol = fraction * L;
+  // A segment shorter than this lies near whatever passes near it: only one drawn at the same
+  // place (within kTouchFraction L, the first pass) is a redrawing.
+  const double shortest = fraction > kTouchFraction ? 4 * tol : 0;
   constexpr int kBoundary = -1;
   SegmentIndex index(L / kCellsPerSide, tol);
   for (const auto& loop : loops_)
@@ -95,7 +98,7 @@ void Cleaner::drop_overlapping_segments() {
       const Vec2 &a = pts[i], &b = pts[(i + 1) % pts.size()];
       const std::vector<int> owners = common_owners(index, a, b);
       index.add(k, a, b);  // a crease drawn back over itself runs along its own earlier segments
-      if (owners.empty()) continue;
+      if (owners.empty() || (a - b).norm() < shortest) continue;
       drop[i] = true;
       if (owners.front() == kBoundary)
         ++along_boundary;

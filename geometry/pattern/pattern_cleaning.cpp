@@ -39,7 +39,7 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
 }
 
 CleanPattern Cleaner::run() {
-  drop_overlapping_segments();
+  drop_overlapping_segments(kTouchFraction);
   // Pieces of one crease drawn end to end (curves exported as many short lines) are joined before
   // nearby ends merge, which would otherwise pull a chain of pieces shorter than merge_tol
   // together.
@@ -48,7 +48,9 @@ CleanPattern Cleaner::run() {
   move_ends_onto_boundary_corners();
   merge_crease_ends(kCornerFraction * size_);
   merge_crease_ends(merge_tol_);
-  drop_overlapping_segments();  // pieces drawn twice with small offsets coincide now
+  // Creases drawn twice with small offsets: their ends coincide now, their segments lie within a
+  // hair of each other.
+  drop_overlapping_segments(kCornerFraction);
   join_continuing_creases(std::nullopt);
   clip_to_sheet();
   make_junctions();
@@ -279,7 +281,29 @@ void Cleaner::verify() const {
 
 CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& options) {
   if (const std::string msg = options.validate(); !msg.empty()) throw UsageError(msg);
-  return cleaning::Cleaner(pattern, options).run();
+  try {
+    return cleaning::Cleaner(pattern, options).run();
+  } catch (const InputError& first) {
+    if (!options.adapt) throw;
+    CleaningOptions finer = options;
+    finer.adapt = false;
+    for (int attempt = 0; attempt < CleaningOptions::kFinerAttempts; ++attempt) {
+      finer.merge_fraction /= CleaningOptions::kFinerFactor;
+      finer.snap_fraction /= CleaningOptions::kFinerFactor;
+      try {
+        CleanPattern out = cleaning::Cleaner(pattern, finer).run();
+        out.warnings.push_back("the drawing is denser than cleaning with --merge-tol " +
+                               format_number(options.merge_fraction) + " and --snap-tol " +
+                               format_number(options.snap_fraction) + " allows (" + first.what() +
+                               "); it was cleaned with --merge-tol " +
+                               format_number(finer.merge_fraction) + " --snap-tol " +
+                               format_number(finer.snap_fraction));
+        return out;
+      } catch (const InputError&) {
+      }
+    }
+    throw;
+  }
 }
 
 }  // namespace sdog

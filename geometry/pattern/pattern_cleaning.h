@@ -35,6 +35,13 @@ namespace sdog {
 struct CleaningOptions {
   double merge_fraction = 0.01;  ///< L/100: merging crease ends and nearby crossings
   double snap_fraction = 0.02;   ///< L/50: snapping free ends, aligning junction coordinates
+  /// When cleaning with these tolerances fails, retry with both divided by kFinerFactor, up to
+  /// kFinerAttempts times (dense drawings: tessellations, many flaps); the first that cleans is
+  /// used, with a warning naming both tolerances and the first failure, else the first failure is
+  /// reported. Off when the user chose the tolerances.
+  bool adapt = true;
+  static constexpr double kFinerFactor = 10;
+  static constexpr int kFinerAttempts = 2;
   /// Empty when valid, else a message naming the bad field.
   std::string validate() const;
 };

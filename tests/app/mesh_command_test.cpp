@@ -66,6 +66,24 @@ TEST(MeshCommand, WarnsAboutLongGridCells) {
   EXPECT_TRUE(nlohmann::json::parse(square.out)["warnings"].empty());
 }
 
+TEST(MeshCommand, CleaningAdaptsToADenseDrawingUnlessTheTolerancesAreGiven) {
+  // Creases crossing within 5 units at angles down to 4 degrees on a 100-unit sheet.
+  const std::string pattern =
+      test::write_file(test::temp_dir("crowded"), "crowded.svg",
+                       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+                       "<line x1=\"50\" y1=\"0\" x2=\"50\" y2=\"100\" stroke=\"#f00\"/>"
+                       "<line x1=\"0\" y1=\"80\" x2=\"100\" y2=\"20\" stroke=\"#00f\"/>"
+                       "<line x1=\"0\" y1=\"48\" x2=\"100\" y2=\"51\" stroke=\"#f00\"/>"
+                       "<line x1=\"0\" y1=\"45\" x2=\"100\" y2=\"54.5\" stroke=\"#00f\"/></svg>");
+  const auto adapted = test::run_sdog("mesh " + pattern + " --res 41x41");
+  ASSERT_EQ(adapted.code, 0) << adapted.err;
+  EXPECT_NE(adapted.out.find("cleaned with --merge-tol 0.001 --snap-tol 0.002"), std::string::npos)
+      << adapted.out;
+  const auto chosen = test::run_sdog("mesh " + pattern + " --res 41x41 --merge-tol 0.01");
+  EXPECT_EQ(chosen.code, 1);
+  EXPECT_NE(chosen.err.find("no junction could be placed"), std::string::npos) << chosen.err;
+}
+
 TEST(MeshCommand, TextSummaryNamesEveryCount) {
   const auto r = test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 31x21");
   ASSERT_EQ(r.code, 0) << r.err;

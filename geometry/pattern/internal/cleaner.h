@@ -96,7 +96,7 @@ class Cleaner {
 
   // Step 1 (pattern_cleaning.cpp).
   // Step 0 (cleaning_overlaps.cpp).
-  void drop_overlapping_segments();
+  void drop_overlapping_segments(double fraction);
   void merge_crease_ends(double tol);
   void move_ends_onto_boundary_corners();
   std::set<std::pair<double, double>> touching_pieces() const;
@@ -119,6 +119,7 @@ class Cleaner {
                            const std::vector<std::vector<double>>& arc,
                            std::vector<std::vector<JunctionPass>>& passes);
   void reroute_through_junctions(int k, std::vector<JunctionPass> passes);
+  void merge_shared_segments();
   void drop_degenerate_creases();
 
   // Step 4 (cleaning_snapping.cpp).
@@ -136,6 +137,7 @@ class Cleaner {
   std::vector<Vec2> collect_junctions();
   void align_axis(int axis, const std::vector<Vec2>& fixed);
   void align_junction(int j, int axis, double target);
+  bool move_keeps_creases_apart(const Vec2& from, const Vec2& to) const;
 
   // Step 6 (pattern_cleaning.cpp).
   void verify() const;

@@ -291,3 +291,39 @@ TEST(PatternCleaning, ADenseFanOfEndsStaysAsDrawn) {
 
 }  // namespace
 }  // namespace sdog
+
+namespace sdog {
+namespace {
+
+// Four creases crossing within 5 units at angles down to 4 degrees (L = 100): merging at L/100
+// makes one junction of four crossings, through which the two shallow creases then run along each
+// other from their own crossing 4 units away.
+CreasePattern crowded_crossings() {
+  return rectangle_pattern(
+      100, 100,
+      {{{50, 0}, {50, 100}}, {{0, 20}, {100, 80}}, {{0, 52}, {100, 49}}, {{0, 55}, {100, 45.5}}});
+}
+
+TEST(PatternCleaning, CrowdedCrossingsCleanWithFinerTolerancesAndSaySo) {
+  const CleanPattern c = clean_pattern(crowded_crossings());
+  EXPECT_EQ(c.creases.size(), 4u);
+  EXPECT_EQ(c.junctions.size(), 6u) << "every pair of creases crosses once";
+  EXPECT_TRUE(warned(c, "denser than cleaning with --merge-tol 0.01 and --snap-tol 0.02 allows"));
+  EXPECT_TRUE(warned(c, "no junction could be placed"));
+  EXPECT_TRUE(warned(c, "cleaned with --merge-tol 0.001 --snap-tol 0.002"));
+}
+
+TEST(PatternCleaning, ChosenTolerancesDoNotAdapt) {
+  CleaningOptions chosen;
+  chosen.adapt = false;
+  try {
+    clean_pattern(crowded_crossings(), chosen);
+    FAIL() << "cleaned";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no junction could be placed"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sdog
