@@ -8,6 +8,7 @@
 #include "app/versions.h"
 
 #include "base/errors.h"
+#include "base/text_format.h"
 #include "geometry/input/pattern_file.h"
 
 namespace sdog::cli {
@@ -67,9 +68,19 @@ DogModel build_model(const PatternOptions& o, bool warn) {
   const CreasePattern pattern = read_crease_pattern(o.pattern, svg);
   const Resolution res =
       resolve_resolution(o.res, pattern.sheet.bbox.width(), pattern.sheet.bbox.height());
-  DogModel model = build_dog_model(pattern, res, mesh_options);
-  if (warn) print_warnings(model);
-  return model;
+  try {
+    DogModel model = build_dog_model(pattern, res, mesh_options);
+    if (warn) print_warnings(model);
+    return model;
+  } catch (const UsageError& e) {
+    // The resolution is too low for the pattern: say which one is enough.
+    const std::optional<Resolution> enough = lowest_meshing_resolution(pattern, res, mesh_options);
+    throw UsageError(
+        std::string(e.what()) +
+        (enough ? "; it meshes at " + enough->str() + ", the lowest resolution found by trying"
+                : "; it meshes at no resolution up to " + format_number(kResolutionReach) +
+                      " times this one either"));
+  }
 }
 
 void print_warnings(const DogModel& model) {

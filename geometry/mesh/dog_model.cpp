@@ -139,4 +139,27 @@ std::vector<std::string> model_warnings(const DogModel& model) {
   return warnings;
 }
 
+std::optional<Resolution> lowest_meshing_resolution(const CreasePattern& pattern,
+                                                    const Resolution& from,
+                                                    const MeshOptions& options) {
+  auto grown = [&](int n, double factor) {
+    int m = std::max(n + 1, static_cast<int>(std::ceil(n * factor)));
+    if (options.build_coarse && m % 2 == 0) ++m;
+    return std::min(m, kMaxResolution);
+  };
+  Resolution res = from;
+  for (double factor = kResolutionStep; factor <= kResolutionReach * (1 + 1e-9);
+       factor *= kResolutionStep) {
+    const Resolution next{grown(from.nx, factor), grown(from.ny, factor)};
+    if (next == res) break;
+    res = next;
+    try {
+      build_dog_model(pattern, res, options);
+      return res;
+    } catch (const UsageError&) {
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace sdog

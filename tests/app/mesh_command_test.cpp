@@ -82,6 +82,18 @@ TEST(MeshCommand, CleaningAdaptsToADenseDrawingUnlessTheTolerancesAreGiven) {
   const auto chosen = test::run_sdog("mesh " + pattern + " --res 41x41 --merge-tol 0.01");
   EXPECT_EQ(chosen.code, 1);
   EXPECT_NE(chosen.err.find("no junction could be placed"), std::string::npos) << chosen.err;
+
+  // Too low a resolution: the message names one that meshes, found by trying.
+  const auto low = test::run_sdog("mesh " + pattern + " --res 5x5");
+  EXPECT_EQ(low.code, 2);
+  const std::string says = "; it meshes at ";
+  const size_t at = low.err.find(says);
+  ASSERT_NE(at, std::string::npos) << low.err;
+  const std::string enough =
+      low.err.substr(at + says.size(), low.err.find(',', at) - at - says.size());
+  EXPECT_EQ(test::run_sdog("mesh " + pattern + " --res " + enough).code, 0) << enough;
+  EXPECT_EQ(test::run_sdog("mesh " + pattern + " --res 9x9").code, 2)
+      << "9x9 is lower than " << enough;
 }
 
 TEST(MeshCommand, TextSummaryNamesEveryCount) {
