@@ -1,6 +1,7 @@
 #include "geometry/input/fold_writer.h"
 
 #include <array>
+#include <cctype>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <utility>
@@ -9,19 +10,9 @@
 namespace sdog {
 namespace {
 
-// FOLD's letter of an assignment.
-const char* letter(Fold fold) {
-  switch (fold) {
-    case Fold::kMountain:
-      return "M";
-    case Fold::kValley:
-      return "V";
-    case Fold::kFlat:
-      return "F";
-    case Fold::kUnassigned:
-      return "U";
-  }
-  return "U";
+// FOLD's letter of an assignment: the initial of its name (M, V, F, U).
+std::string letter(Fold fold) {
+  return std::string(1, static_cast<char>(std::toupper(enum_name(fold)[0])));
 }
 
 // The FOLD arrays under construction: vertices numbered in order of first use.
@@ -33,14 +24,14 @@ class FoldArrays {
     return static_cast<int>(it->second);
   }
 
-  void edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const char* assignment,
+  void edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::string& assignment,
             nlohmann::json angle) {
     edges_.push_back({vertex(a), vertex(b)});
     assignments_.push_back(assignment);
     angles_.push_back(std::move(angle));
   }
 
-  void polyline(const Polyline2& points, bool closed, const char* assignment,
+  void polyline(const Polyline2& points, bool closed, const std::string& assignment,
                 const nlohmann::json& angle) {
     const size_t n = points.size();
     for (size_t i = 0; i + 1 < n + (closed ? 1 : 0); ++i)
