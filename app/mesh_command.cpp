@@ -48,6 +48,7 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
                        {"element", c.origin},
                        {"id", c.id},
                        {"assignment", enum_name(c.fold)},
+                       {"kind", enum_name(c.kind)},
                        {"angle", c.angle ? nlohmann::json(*c.angle) : nlohmann::json(nullptr)}});
   }
   nlohmann::json j = {
@@ -104,7 +105,8 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
      << " after cleaning, " << m.clean.junctions.size() << " junction(s)\n";
   for (size_t k = 0; k < m.clean.creases.size(); ++k) {
     const Crease& c = m.clean.creases[k];
-    os << "  crease " << k << "  " << c.origin << "  " << enum_name(c.fold);
+    os << "  crease " << k << "  " << c.origin << "  "
+       << (c.kind == CurveKind::kCrease ? enum_name(c.fold) : enum_name(c.kind));
     if (c.angle) os << ", " << format_number(*c.angle) << " degrees";
     if (!c.layer.empty()) os << " (layer \"" << c.layer << "\")";
     os << "\n";

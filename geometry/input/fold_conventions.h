@@ -21,7 +21,9 @@
 //  5. Any other colour: a crease without assignment.
 //
 // Cut lines cut the paper: they outline the sheet or cut holes out of it, and are joined with the
-// black boundary curves into the sheet's boundary loops.
+// black boundary curves into the sheet's boundary loops. An open cut or black line that ends
+// inside the sheet (one end that meets no other boundary or cut line) is a slit
+// (crease_pattern.h): the paper is cut along it and its two sides are free.
 //
 // Sign convention (FOLD's edges_foldAngle): valley folds have positive angles, mountain folds
 // negative ones. Seen from +z (the drawing as drawn, y up), a valley fold lifts both sides of the

@@ -26,14 +26,16 @@ constexpr double kCollinear = 1e-9;
 
 struct Edge {
   int a = 0, b = 0;       ///< vertex indices
-  char assignment = 'U';  ///< B, M, V, F, U or J
+  char assignment = 'U';  ///< B, M, V, F, U, C or J
   Fold fold = Fold::kUnassigned;
   std::optional<double> angle;  ///< magnitude in degrees, as Crease::angle
   bool dropped = false;         ///< a join edge, or a repeat of an earlier edge
 
   int other_end(int v) const { return v == a ? b : a; }
   bool is_crease() const { return !dropped && assignment != 'B'; }
-  bool folds_like(const Edge& e) const { return fold == e.fold && angle == e.angle; }
+  bool folds_like(const Edge& e) const {
+    return (assignment == 'C') == (e.assignment == 'C') && fold == e.fold && angle == e.angle;
+  }
 };
 
 // "line L, column C" of a byte offset.
@@ -200,13 +202,10 @@ class FoldReader {
     const char c = text.size() == 1
                        ? static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])))
                        : '?';
-    if (c == 'C')
-      throw InputError(edge_name(e) +
-                       ": a cut (C): cuts are not supported, the sheet must stay one piece "
-                       "along every crease; remove the cut or make it a crease");
     static const std::map<char, Fold> kFolds = {{'B', Fold::kUnassigned}, {'M', Fold::kMountain},
                                                 {'V', Fold::kValley},     {'F', Fold::kFlat},
-                                                {'U', Fold::kUnassigned}, {'J', Fold::kUnassigned}};
+                                                {'U', Fold::kUnassigned}, {'J', Fold::kUnassigned},
+                                                {'C', Fold::kFlat}};
     const auto it = kFolds.find(c);
     if (it == kFolds.end())
       letter.fail("unknown assignment " + json(text).dump() +
@@ -239,10 +238,13 @@ class FoldReader {
     const std::string angle = "fold angle " + format_number(degrees);
     switch (edge.assignment) {
       case 'B':
+      case 'C':
       case 'F':
         if (degrees != 0)
           a.fail(angle + " on " +
-                 (edge.assignment == 'B' ? "a boundary edge (B)" : "a flat crease (F)") +
+                 (edge.assignment == 'B'   ? "a boundary edge (B)"
+                  : edge.assignment == 'C' ? "a cut (C)"
+                                           : "a flat crease (F)") +
                  ", which does not fold; FOLD gives it 0");
         return;
       case 'M':
@@ -354,6 +356,7 @@ class FoldReader {
     for (const int v : chain) crease.points.push_back(points_[v]);
     crease.fold = edges_[first].fold;
     crease.angle = edges_[first].angle;
+    if (edges_[first].assignment == 'C') crease.kind = CurveKind::kSlit;
     crease.id = "edge " + std::to_string(first);
     crease.origin = edge_name(first);
     return crease;

@@ -9,7 +9,8 @@
 //  - edges_vertices: [u, v] for each edge, two different vertex indices counted from 0.
 //  - edges_assignment: one letter for each edge, upper or lower case: B the sheet boundary, M a
 //    mountain crease, V a valley crease, F a flat crease, U a crease without assignment, J a join
-//    edge (a modelling helper, not a crease: ignored, with a warning). C, a cut, is refused.
+//    edge (a modelling helper, not a crease, as the seams this project writes: ignored, with a
+//    warning), C a cut: a slit (crease_pattern.h) whose two sides are free.
 //  - edges_foldAngle (optional): the fold angle of each edge in degrees, -180 to 180, or null for
 //    none. FOLD's sign is this project's (geometry/input/fold_conventions.h): valleys positive,
 //    mountains negative. Crease::angle is its magnitude; a sign that contradicts M or V, or a
@@ -43,7 +44,7 @@
 // or wrongly typed key (edges_assignment too: without it the boundary is unknown), arrays whose
 // lengths differ from edges_vertices, a vertex index out of range, an edge from a vertex to
 // itself or of zero length, a coordinate that is not a finite number or a nonzero z, an unknown
-// assignment letter, a cut (C), a fold angle outside [-180, 180] or contradicting the assignment,
+// assignment letter, a fold angle outside [-180, 180] or contradicting the assignment,
 // no B edge, a boundary that stops at a vertex with one B edge or branches at a vertex with more
 // than two, boundary loops that cross, a hole outside the sheet, and a sheet of zero area. An edge
 // that joins the same two vertices as an earlier one is dropped with a warning (pattern.warnings).

@@ -1,5 +1,6 @@
 #include "geometry/input/fold_writer.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <map>
@@ -10,9 +11,12 @@
 namespace sdog {
 namespace {
 
-// FOLD's letter of an assignment: the initial of its name (M, V, F, U).
-std::string letter(Fold fold) {
-  return std::string(1, static_cast<char>(std::toupper(enum_name(fold)[0])));
+// FOLD's letter of a curve: a slit's is C (cut), a seam's J (join: the faces on its two sides are
+// one), a crease's the initial of its assignment's name (M, V, F, U).
+std::string letter(const Crease& c) {
+  if (c.kind == CurveKind::kSlit) return "C";
+  if (c.kind == CurveKind::kSeam) return "J";
+  return std::string(1, static_cast<char>(std::toupper(enum_name(c.fold)[0])));
 }
 
 // The FOLD arrays under construction: vertices numbered in order of first use.
@@ -40,13 +44,16 @@ class FoldArrays {
 
   nlohmann::ordered_json frame(const std::string& source) const {
     nlohmann::ordered_json j;
-    j["file_spec"] = 1.1;
+    j["file_spec"] = 1.2;
     j["file_creator"] = "Scalable DOGs";
     j["file_title"] = source;
     j["file_classes"] = {"singleModel"};
     j["frame_title"] = "crease pattern as read";
     j["frame_classes"] = {"creasePattern"};
-    j["frame_attributes"] = {"2D"};
+    const auto has = [&](const char* a) {
+      return std::find(assignments_.begin(), assignments_.end(), a) != assignments_.end();
+    };
+    j["frame_attributes"] = {"2D", has("C") ? "cuts" : "noCuts", has("J") ? "joins" : "noJoins"};
     j["vertices_coords"] = coords_;
     j["edges_vertices"] = edges_;
     j["edges_assignment"] = assignments_;
@@ -70,10 +77,10 @@ std::string fold_text(const CleanPattern& pattern) {
   for (const auto& hole : pattern.sheet.holes) fold.polyline(hole, true, "B", nullptr);
   for (const auto& c : pattern.creases) {
     nlohmann::json angle = nullptr;
-    if (c.fold == Fold::kFlat) angle = 0.0;
+    if (c.fold == Fold::kFlat && c.kind != CurveKind::kSlit) angle = 0.0;
     if (c.angle && (c.fold == Fold::kMountain || c.fold == Fold::kValley))
       angle = fold_sign(c.fold) * *c.angle;
-    fold.polyline(c.points, c.closed, letter(c.fold), angle);
+    fold.polyline(c.points, c.closed, letter(c), angle);
   }
   // One line per key, and per element of the arrays of arrays (vertices, edges).
   const nlohmann::ordered_json frame = fold.frame(pattern.source);

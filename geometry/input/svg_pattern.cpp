@@ -34,7 +34,47 @@ struct OpenCurve {
   Polyline2 points;
   std::string origin;
   bool cut = false;  ///< a cut line, not a black boundary curve
+  std::string id;    ///< the element's id (a slit keeps it)
 };
+
+InputError not_closed_error(const OpenCurve& c) {
+  const std::string what = c.cut ? "this cut line" : "the sheet boundary (black)";
+  return InputError(c.origin + ": " + what + " is not closed: it ends at " +
+                    format_point(c.points.back()) + ", " +
+                    format_number((c.points.front() - c.points.back()).norm()) +
+                    " units from its start " + format_point(c.points.front()) +
+                    "; close the path (Z) or draw the boundary as one closed shape");
+}
+
+// Takes the slits out of the open boundary and cut curves: pieces with an end that no other
+// piece's end meets (within tol), repeatedly, so that what remains can close into loops. A slit
+// from the boundary inward, an interior slit and a cut drawn in pieces to the slit's tip all go.
+std::vector<OpenCurve> split_off_slits(std::vector<OpenCurve>& open, double tol) {
+  const size_t n = open.size();
+  auto end = [&](size_t i) -> const Eigen::Vector2d& {
+    return i % 2 == 0 ? open[i / 2].points.front() : open[i / 2].points.back();
+  };
+  std::vector<std::vector<size_t>> meets(2 * n);  // other pieces' ends within tol of each end
+  for (size_t i = 0; i < 2 * n; ++i)
+    for (size_t j = i + 1; j < 2 * n; ++j)
+      if (i / 2 != j / 2 && (end(i) - end(j)).norm() <= tol)
+        meets[i].push_back(j), meets[j].push_back(i);
+  std::vector<char> slit(n, 0);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t c = 0; c < n; ++c) {
+      if (slit[c] || (open[c].points.front() - open[c].points.back()).norm() <= tol) continue;
+      for (size_t i : {2 * c, 2 * c + 1})
+        if (std::none_of(meets[i].begin(), meets[i].end(), [&](size_t j) { return !slit[j / 2]; }))
+          slit[c] = 1;
+      changed = changed || slit[c];
+    }
+  }
+  std::vector<OpenCurve> slits, rest;
+  for (size_t c = 0; c < n; ++c) (slit[c] ? slits : rest).push_back(std::move(open[c]));
+  open = std::move(rest);
+  return slits;
+}
 
 // Chains open boundary curves end to end into closed loops: each continues with the piece whose
 // nearer end is nearest its end, within tol. Ends within snap_tol of each other are one point (the
@@ -65,17 +105,7 @@ std::vector<Polyline2> chain_into_loops(std::vector<OpenCurve> open, double tol,
         current.cut = current.cut || open[best].cut;
         open.erase(open.begin() + static_cast<std::ptrdiff_t>(best));
       }
-      if (!extended) {
-        const std::string what = current.cut ? "this cut line" : "the sheet boundary (black)";
-        throw InputError(current.origin + ": " + what + " is not closed: it ends at " +
-                         format_point(current.points.back()) + ", " +
-                         format_number((current.points.front() - current.points.back()).norm()) +
-                         " units from its start " + format_point(current.points.front()) +
-                         "; close the path (Z) or draw the boundary as one closed shape" +
-                         (current.cut ? "; cut lines outline the sheet or cut holes out of it, "
-                                        "slits (cuts that end inside the sheet) are not read"
-                                      : ""));
-      }
+      if (!extended) throw not_closed_error(current);
     }
     current.points.pop_back();  // the last point repeats the first one (within tolerance)
     while (current.points.size() > 1 &&
@@ -103,6 +133,7 @@ double closing_tolerance(const SvgDrawing& drawing, double closed_fraction) {
 struct SortedCurves {
   std::vector<Polyline2> loops;
   std::vector<std::string> loop_origins;
+  std::vector<OpenCurve> slits;  ///< open boundary and cut curves that end inside the sheet
   std::vector<const SvgCurve*> creases;
   std::vector<CurveReading> readings;  ///< of each crease curve
   int facet_lines = 0;
@@ -131,9 +162,15 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol)
       out.loops.push_back(std::move(pts));
       out.loop_origins.push_back(origin_of(drawing.source, c));
     } else {
-      open_boundary.push_back({pts, origin_of(drawing.source, c), reading.role == CurveRole::kCut});
+      open_boundary.push_back(
+          {pts, origin_of(drawing.source, c), reading.role == CurveRole::kCut, c.id});
     }
   }
+  out.slits = split_off_slits(open_boundary, join_tol);
+  // Without any loop, an open black line is a boundary left open, not a slit in the viewBox.
+  if (out.loops.empty() && open_boundary.empty())
+    for (const OpenCurve& s : out.slits)
+      if (!s.cut) throw not_closed_error(s);
   if (!open_boundary.empty()) {
     const std::string origin = open_boundary.front().origin;
     for (auto& loop : chain_into_loops(std::move(open_boundary), join_tol, tol)) {
@@ -207,6 +244,28 @@ void add_creases(const std::vector<const SvgCurve*>& curves,
   }
 }
 
+// Slits are flat curves of kind kSlit (crease_pattern.h), after the creases.
+void add_slits(const std::vector<OpenCurve>& slits, CreasePattern& pattern) {
+  std::string origins;
+  for (const OpenCurve& s : slits) {
+    Crease slit;
+    slit.points = s.points;
+    drop_repeated_points(slit.points, false);
+    if (slit.points.size() < 2) continue;
+    slit.fold = Fold::kFlat;
+    slit.kind = CurveKind::kSlit;
+    slit.origin = s.origin;
+    slit.id = s.id;
+    origins += (origins.empty() ? "" : ", ") + s.origin;
+    pattern.creases.push_back(std::move(slit));
+  }
+  if (!origins.empty())
+    pattern.warnings.push_back(std::to_string(slits.size()) +
+                               " open boundary or cut line(s) end inside the sheet and are read "
+                               "as slits (cuts whose two sides are free): " +
+                               origins);
+}
+
 }  // namespace
 
 CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_fraction) {
@@ -219,6 +278,7 @@ CreasePattern crease_pattern_from_svg(const SvgDrawing& drawing, double closed_f
                                        : sheet_from_loops(curves.loops, curves.loop_origins);
   pattern.sheet.bbox = box_of(pattern.sheet.outer);
   add_creases(curves.creases, curves.readings, drawing.source, closed_fraction, pattern);
+  add_slits(curves.slits, pattern);
   if (curves.facet_lines > 0)
     pattern.warnings.push_back(
         std::to_string(curves.facet_lines) +

@@ -32,7 +32,8 @@ struct CreaseStitching {
   std::vector<Point> points;  ///< unique crease points (a junction is one point)
 
   /// Stitching pair: copies `a` and `b` of point `point` must coincide. With m copies there are
-  /// m - 1 chained pairs (0,1), (1,2), ...
+  /// m - 1 chained pairs (0,1), (1,2), ...; a point that lies on slits only has none (the slit's
+  /// two sides are free; dog_model.h).
   struct Pair {
     int point, a, b;
   };
@@ -45,6 +46,7 @@ struct CreaseStitching {
         Fold::kUnassigned;  ///< the cleaned crease's assignment and angle (crease_pattern.h)
     std::optional<double> angle;
     std::string id;  ///< its element id
+    CurveKind kind = CurveKind::kCrease;
   };
   std::vector<Curve> curves;  ///< one per cleaned crease
 

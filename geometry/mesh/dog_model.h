@@ -34,7 +34,8 @@ struct DogModel {
 };
 
 /// Cleans the pattern, lays out the grid (nested for odd resolutions), builds the meshes, their
-/// topology, the stitching and the map. Throws UsageError for resolutions that cannot work
+/// topology, the stitching and the map. Crease points that lie on slits only are not stitched
+/// (the slit's two sides are free). Throws UsageError for resolutions that cannot work
 /// (range, parity, too low for the pattern) and InputError for patterns that cannot be meshed.
 DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
                          const MeshOptions& options = {});

@@ -1,5 +1,6 @@
 // Pattern cleaning, step 4: a crease end that is still free snaps to the nearest crease vertex,
-// else onto the boundary, else onto another crease (a T junction); otherwise the pattern is
+// else onto the boundary, else onto another crease (a T junction); an end farther than that from
+// everything gets a seam when seams are allowed (cleaning_seams.cpp), else the pattern is
 // rejected.
 #include <cmath>
 #include <string>
@@ -24,7 +25,8 @@ void Cleaner::snap_free_ends() {
   }
 }
 
-// Snaps end e of crease k (see the file comment); throws when nothing is within snap_tol.
+// Snaps end e of crease k (see the file comment); an end farther than snap_tol from everything
+// gets a seam when seams are allowed, else it is rejected.
 void Cleaner::snap_end(int k, int e, const VertexCounts& counts) {
   const Vec2 p = end_point(creases_[k], e);
   if (snap_to_crease_vertex(k, e, p, counts)) return;
@@ -50,6 +52,7 @@ void Cleaner::snap_end(int k, int e, const VertexCounts& counts) {
         format_point(crease.point));
     return;
   }
+  if (seams_) return add_seam(k, e);
   throw InputError(name(k) + " ends at " + format_point(p) + ", " + format_number(bnd.distance) +
                    " units from the sheet boundary" +
                    (std::isfinite(crease.distance)

@@ -28,6 +28,23 @@ struct EnumNames<Fold> {
 /// +1 valley, -1 mountain, 0 flat or unassigned: the sign of the fold angle (FOLD's convention).
 double fold_sign(Fold fold);
 
+/// What a curve inside the sheet is. A crease folds as its assignment says. A slit is a cut that
+/// ends inside the sheet (drawn as an open cut line): its two sides are free. A seam is a straight
+/// line that cleaning adds from a crease or slit end inside the sheet to the nearest crease or
+/// boundary, so that the curves divide the sheet into patches: the patches are stitched along it
+/// and held smooth across it (fold angle zero), so the paper there stays one smooth piece.
+enum class CurveKind { kCrease, kSlit, kSeam };
+
+template <>
+struct EnumNames<CurveKind> {
+  static constexpr const char* noun = "curve kind";
+  static constexpr EnumName<CurveKind> rows[] = {
+      {CurveKind::kCrease, "crease"},
+      {CurveKind::kSlit, "slit"},
+      {CurveKind::kSeam, "seam"},
+  };
+};
+
 struct Crease {
   Polyline2 points;  ///< closed creases do not repeat the first point
   bool closed = false;
@@ -39,8 +56,11 @@ struct Crease {
                    ///< edge), or empty
   std::string origin;  ///< where it was drawn, "FILE:LINE: <path id="c1">", for messages
   std::string layer;   ///< the drawing's layer (group name) that gave the assignment, or empty
-  /// Same assignment and angle: creases that may be joined into one.
-  bool folds_like(const Crease& other) const { return fold == other.fold && angle == other.angle; }
+  CurveKind kind = CurveKind::kCrease;  ///< slits and seams are flat (fold kFlat)
+  /// Same kind, assignment and angle: curves that may be joined into one.
+  bool folds_like(const Crease& other) const {
+    return kind == other.kind && fold == other.fold && angle == other.angle;
+  }
 };
 
 struct Sheet {

@@ -46,7 +46,9 @@ std::vector<FoldTip> fold_tips(const CleanPattern& pattern) {
         pattern.creases[ends[1]].fold == Fold::kFlat)
       continue;
     const double angle = std::acos(std::clamp(dirs[0].dot(dirs[1]), -1.0, 1.0)) * 180 / M_PI;
-    if (angle >= 180 - kStraightCreaseDegrees) continue;
+    const bool seam_end = (pattern.creases[ends[0]].kind == CurveKind::kSeam) !=
+                          (pattern.creases[ends[1]].kind == CurveKind::kSeam);
+    if (angle >= 180 - kStraightCreaseDegrees && !seam_end) continue;
     tips.push_back({q, {ends[0], ends[1]}, angle});
   }
   return tips;

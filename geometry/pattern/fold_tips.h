@@ -1,6 +1,7 @@
 #pragma once
 // Fold tips: points inside the sheet where exactly two creases end, at an angle to each other (not
-// one continuing the other), and nothing else meets.
+// one continuing the other), and nothing else meets; and the ends of creases inside the sheet,
+// where a seam continues them (crease_pattern.h).
 //
 // No sheet that bends smoothly keeps a fold up to such a point. Near it the sheet is the wedge
 // between the two creases and the rest, which wraps around the point. If the rest were smooth at
@@ -29,7 +30,7 @@ constexpr double kFoldTipRadius = 6;
 struct FoldTip {
   Eigen::Vector2d point;       ///< sheet units
   std::array<int, 2> creases;  ///< the cleaned creases that end there, ascending
-  double angle_degrees = 0;  ///< between the two creases' directions away from the tip, in (0, 180)
+  double angle_degrees = 0;  ///< between the two creases' directions away from the tip, in (0, 180]
 };
 
 /// The fold tips of a cleaned pattern (creases that are both flat make none), in junction order.

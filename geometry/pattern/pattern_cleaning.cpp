@@ -34,6 +34,7 @@ Cleaner::Cleaner(const CreasePattern& pattern, const CleaningOptions& options)
   merge_tol_ = options.merge_fraction * L;
   snap_tol_ = options.snap_fraction * L;
   snap_fraction_ = options.snap_fraction;
+  seams_ = options.seams;
   loops_.push_back(sheet_.outer);
   for (const auto& h : sheet_.holes) loops_.push_back(h);
 }
@@ -279,14 +280,16 @@ void Cleaner::verify() const {
 
 }  // namespace cleaning
 
-CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& options) {
-  if (const std::string msg = options.validate(); !msg.empty()) throw UsageError(msg);
+namespace {
+
+// Cleans with the options' tolerances, then (adapt) finer ones; the first that succeeds, with a
+// warning when the tolerances were finer, else the first error.
+CleanPattern clean_adapting(const CreasePattern& pattern, const CleaningOptions& options) {
   try {
     return cleaning::Cleaner(pattern, options).run();
   } catch (const InputError& first) {
     if (!options.adapt) throw;
     CleaningOptions finer = options;
-    finer.adapt = false;
     for (int attempt = 0; attempt < CleaningOptions::kFinerAttempts; ++attempt) {
       finer.merge_fraction /= CleaningOptions::kFinerFactor;
       finer.snap_fraction /= CleaningOptions::kFinerFactor;
@@ -304,6 +307,20 @@ CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& 
     }
     throw;
   }
+}
+
+}  // namespace
+
+CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& options) {
+  if (const std::string msg = options.validate(); !msg.empty()) throw UsageError(msg);
+  CleaningOptions without = options;
+  without.seams = false;
+  try {
+    return clean_adapting(pattern, without);
+  } catch (const InputError&) {
+    if (!options.seams) throw;
+  }
+  return clean_adapting(pattern, options);
 }
 
 }  // namespace sdog

@@ -19,7 +19,10 @@
 //     it is rerouted through that exact point.
 //  4. A crease end that is still free snaps, within snap_tol = L/50, to the nearest crease vertex
 //     (junction or boundary end of another crease), else onto the boundary, else onto another
-//     crease (a T junction). Otherwise the pattern is rejected.
+//     crease (a T junction). An end farther than that from everything is an error, unless every
+//     cleaning without seams failed: then it ends inside the sheet, and a seam (crease_pattern.h)
+//     continues it straight to the first crease or boundary it meets (onto a vertex there within
+//     merge_tol), with a warning.
 //  5. Crease ends on slanted boundary edges whose x (or y) coordinates all lie within L/1000 move,
 //     with their boundary vertices, to their mean. Junction x and y coordinates closer than
 //     snap_tol are aligned (to the boundary end's value when one is in the group, else to the
@@ -40,6 +43,10 @@ struct CleaningOptions {
   /// used, with a warning naming both tolerances and the first failure, else the first failure is
   /// reported. Off when the user chose the tolerances.
   bool adapt = true;
+  /// A free end farther than snap_tol from everything ends inside the sheet and gets a seam, when
+  /// cleaning without seams fails (with the tolerances above, and finer ones when adapting): a
+  /// drawing that cleans as drawn is not given seams.
+  bool seams = true;
   static constexpr double kFinerFactor = 10;
   static constexpr int kFinerAttempts = 2;
   /// Empty when valid, else a message naming the bad field.
@@ -61,10 +68,13 @@ struct CleanPattern {
   double size() const { return std::max(sheet.bbox.width(), sheet.bbox.height()); }
 };
 
-/// Cleans the pattern (see above). Throws InputError for a crease that ends inside the sheet away
-/// from everything ("crease 3 (FILE:12: <path>) ends at (12.5, 40.1), 9.8 units from the sheet
-/// boundary and 20 from the nearest crease; creases must end on the boundary or on another
-/// crease"), for creases that overlap along a stretch, and for crossings it cannot resolve.
+/// Cleans the pattern (see above): without seams, with the options' tolerances and then finer ones
+/// (CleaningOptions::adapt), then with seams in the same order; the first that succeeds is
+/// returned. Throws InputError for creases that overlap along a stretch, for crossings it cannot
+/// resolve, and (without seams) for a crease that ends inside the sheet ("crease 3 (FILE:12:
+/// <path>) ends at (12.5, 40.1), 9.8 units from the sheet boundary and 20 from the nearest
+/// crease; creases must end on the boundary or on another crease"); with seams allowed, the
+/// error of the first attempt with seams.
 CleanPattern clean_pattern(const CreasePattern& pattern, const CleaningOptions& options = {});
 
 }  // namespace sdog

@@ -9,7 +9,8 @@
 
 namespace sdog {
 
-/// Throws UsageError when `mode` cannot run on the model (a coarse mode without the coarse mesh):
+/// Throws UsageError when `mode` cannot run on the model (a coarse mode without the coarse mesh, a
+/// mode other than standard on a pattern with slits):
 /// the check a run makes before the work for every mode it will use.
 void check_mode_usable(ModeKind mode, const DogModel& model);
 

@@ -50,6 +50,15 @@ void Scenario::install(DogProblem& problem) const {
       throw std::logic_error("crease point " + std::to_string(ac.point) + " is no fold site");
     problem.angles.add(dihedral_site(problem.mesh(), *site), 0);
   }
+  // Seams keep the paper smooth in every scenario: angle target zero (apply() leaves them).
+  std::vector<char> targeted(problem.mesh().stitching.points.size(), 0);
+  for (const auto& ac : angles) targeted[ac.point] = 1;
+  for (const auto& site : problem.sites)
+    if (problem.mesh().stitching.curves[site.curve].kind == CurveKind::kSeam &&
+        !targeted[site.point])
+      problem.angles.add(dihedral_site(problem.mesh(), site), 0);
+  for (const DihedralSite& site : seam_vertex_sites(problem.mesh()))
+    if (!targeted[site.point]) problem.angles.add(site, 0);
   problem.update_free_sites();
   apply(problem, 0);
 }
@@ -102,9 +111,26 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int 
     s.curve_signs[c] = target > 0 ? 1.0 : target < 0 ? -1.0 : 0.0;
   }
   for (const auto& site : fold_sites(mesh))
-    s.angles.push_back(
-        {site.point, 0.0, percent / 100 * crease_fold_target(mesh, site.curve, degrees)});
+    s.angles.push_back({site.point, 0.0,
+                        percent / 100 * fold_fade(mesh, site.curve, site.point) *
+                            crease_fold_target(mesh, site.curve, degrees)});
   return s;
+}
+
+double fold_fade(const DogMesh& mesh, size_t curve, int point) {
+  const CreaseStitching& st = mesh.stitching;
+  const auto& c = st.curves[curve];
+  if (c.closed || c.kind != CurveKind::kCrease || c.points.size() < 2) return 1;
+  double length = 0;
+  for (size_t k = 1; k < c.points.size(); ++k)
+    length += (st.points[c.points[k]].flat - st.points[c.points[k - 1]].flat).norm();
+  double fade = 1;
+  for (const int end : {c.points.front(), c.points.back()})
+    for (const auto& seam : st.curves)
+      if (seam.kind == CurveKind::kSeam && !seam.points.empty() && seam.points.front() == end)
+        fade = std::min(
+            fade, (st.points[point].flat - st.points[end].flat).norm() / (kFadeShare * length));
+  return std::min(fade, 1.0);
 }
 
 double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees) {

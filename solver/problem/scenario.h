@@ -37,8 +37,10 @@ struct Scenario {
   /// standard mode's folding mode (fold check and retries) is off.
   bool keeps_folds = true;
 
-  /// Creates the problem's position and angle blocks (once; it fixes the sparsity pattern); zeroes
-  /// the fold-bias weight unless keeps_folds.
+  /// Creates the problem's position and angle blocks (once; it fixes the sparsity pattern), and an
+  /// angle block with target zero at every seam site the scenario leaves free, fold sites and
+  /// seam_vertex_sites (seams stay smooth in every scenario; crease_pattern.h); zeroes the
+  /// fold-bias weight unless keeps_folds.
   void install(DogProblem& problem) const;
   /// Sets the targets for time t in [0, 1].
   void apply(DogProblem& problem, double t) const;
@@ -56,12 +58,22 @@ struct Scenario {
 Scenario corners_scenario(const DogMesh& mesh, int iterations = 250, int hold = 50);
 
 /// Every fold site (a crease point where a crease crosses the inside of a grid edge between two
-/// patches) folds from flat towards its crease's target (crease_fold_target), curved folding
-/// without dragging. The angle targets are signed, so each crease folds the way its target says;
-/// the start state is tilted towards those directions too (fold_seed.h). `percent`: the fold
-/// amount, the share of each target the sites end at (100: the whole angle).
+/// patches) folds from flat towards its crease's target (crease_fold_target, faded by fold_fade
+/// towards an end inside the sheet), curved folding without dragging. The angle targets are signed,
+/// so each crease folds the way its target says; the start state is tilted towards those directions
+/// too (fold_seed.h). `percent`: the fold amount, the share of each target the sites end at (100:
+/// the whole angle).
 Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250, int hold = 50,
                        double percent = 100);
+
+/// The share of a crease's length over which the fold scenario fades its fold to flat towards an
+/// end inside the sheet (where a seam continues it, crease_pattern.h): paper cannot keep a fold up
+/// to a point inside it.
+constexpr double kFadeShare = 0.25;
+/// The share of its crease's target the fold scenario asks at crease point `point` of `curve`: the
+/// flat distance to an end inside the sheet over kFadeShare of the crease's length, at most 1 (1
+/// for creases without such an end).
+double fold_fade(const DogMesh& mesh, size_t curve, int point);
 
 /// The signed fold angle (degrees; positive valley, negative mountain) the fold scenario asks of a
 /// crease curve: 0 for a crease assigned flat; else the drawing's angle for it, or |degrees|,

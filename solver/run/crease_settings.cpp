@@ -27,6 +27,12 @@ void apply_crease_settings(const std::vector<CreaseSetting>& settings, DogModel&
   for (const CreaseSetting& s : settings) {
     for (const int k : named_creases(model.fine, s.curve, s.id, s.path)) {
       Crease& crease = model.clean.creases[k];
+      if (crease.kind != CurveKind::kCrease)
+        throw InputError(
+            s.path + ": crease " + std::to_string(k) + " is a " + enum_name(crease.kind) +
+            (crease.kind == CurveKind::kSlit ? ", a cut that does not fold"
+                                             : ", the smooth continuation of an end "
+                                               "inside the sheet, which does not fold"));
       if (s.fold) {
         crease.fold = *s.fold;
         if (crease.fold != Fold::kMountain && crease.fold != Fold::kValley) crease.angle.reset();

@@ -18,7 +18,8 @@ std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& cu
 
 /// Sets each setting's assignment and angle on its creases, in the cleaned pattern and in the fine
 /// and coarse stitching curves. An assignment other than mountain or valley drops the angle; an
-/// angle alone keeps the assignment.
+/// angle alone keeps the assignment. Throws InputError naming the setting for a slit or a seam
+/// (crease_pattern.h), which do not fold.
 void apply_crease_settings(const std::vector<CreaseSetting>& settings, DogModel& model);
 
 }  // namespace sdog

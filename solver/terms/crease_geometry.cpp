@@ -28,6 +28,7 @@ std::vector<FoldSite> fold_sites(const DogMesh& mesh) {
   std::vector<FoldSite> sites;
   for (int c = 0; c < static_cast<int>(st.curves.size()); ++c) {
     const auto& curve = st.curves[c];
+    if (curve.kind == CurveKind::kSlit) continue;  // its sides are free: nothing folds there
     const int n = static_cast<int>(curve.points.size());
     // The crease point `steps` along the curve from index k, or -1 past an open curve's end.
     auto along = [&](int k, int steps) {

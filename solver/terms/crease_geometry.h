@@ -18,8 +18,8 @@ Eigen::Vector3d crease_point_position(const CreaseStitching::Point& point, const
 Eigen::Vector3d circle_tangent(const Eigen::Vector3d& b, const Eigen::Vector3d& p,
                                const Eigen::Vector3d& f);
 
-/// An interior crease point where the crease crosses the inside of a grid edge and exactly two
-/// patches meet: the places where folding is tested and biased.
+/// An interior crease point where the crease (or seam, not a slit) crosses the inside of a grid
+/// edge and exactly two patches meet: the places where folding is tested and biased.
 struct FoldSite {
   int curve, index;  ///< position along the curve
   int point;         ///< crease point

@@ -30,6 +30,52 @@ DihedralSite dihedral_site(const DogMesh& mesh, const FoldSite& site) {
   return d;
 }
 
+std::vector<DihedralSite> seam_vertex_sites(const DogMesh& mesh) {
+  const CreaseStitching& st = mesh.stitching;
+  std::vector<DihedralSite> out;
+  for (const auto& curve : st.curves) {
+    if (curve.kind != CurveKind::kSeam) continue;
+    for (size_t k = 1; k + 1 < curve.points.size(); ++k) {
+      const auto& cp = st.points[curve.points[k]];
+      if (cp.copies.size() != 2 || cp.copies[0].v1 != cp.copies[0].v2 ||
+          cp.copies[1].v1 != cp.copies[1].v2)
+        continue;
+      const int va = cp.copies[0].v1, vb = cp.copies[1].v1;
+      const Eigen::Vector2d T =
+          st.points[curve.points[k + 1]].flat - st.points[curve.points[k - 1]].flat;
+      // Across the seam: along x for a seam closer to vertical, else along y.
+      const Eigen::Vector2i step =
+          std::abs(T.x()) < std::abs(T.y()) ? Eigen::Vector2i(1, 0) : Eigen::Vector2i(0, 1);
+      auto neighbour = [&](int v, int side) {
+        const Eigen::Vector2i g = mesh.grid[v] + side * step;
+        return mesh.vertex_at(mesh.vertex_patch[v], g.x(), g.y());
+      };
+      int side_a = 0;
+      for (const int side : {-1, 1})
+        if (neighbour(va, side) >= 0 && neighbour(va, -side) < 0 && neighbour(vb, -side) >= 0 &&
+            neighbour(vb, side) < 0)
+          side_a = side;
+      if (side_a == 0) continue;
+      const EdgePoint& prev = st.points[curve.points[k - 1]].copies.front();
+      const EdgePoint& next = st.points[curve.points[k + 1]].copies.front();
+      DihedralSite d;
+      d.point = curve.points[k];
+      d.vertices = {neighbour(va, side_a),
+                    va,
+                    vb,
+                    neighbour(vb, -side_a),
+                    prev.v1,
+                    prev.v2,
+                    next.v1,
+                    next.v2};
+      d.t = {0, prev.t, next.t};
+      d.alpha = M_PI / 2;
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
 int DihedralAngleTerm::add(const DihedralSite& site, double theta) {
   std::vector<int> unique;
   Block k;

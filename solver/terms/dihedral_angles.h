@@ -40,6 +40,15 @@ struct DihedralSite {
 /// The site's geometry in the mesh's flat rest state.
 DihedralSite dihedral_site(const DogMesh& mesh, const FoldSite& site);
 
+/// The sites across seams (crease_pattern.h) at their crease points on grid vertices, where a seam
+/// that runs along a grid line crosses no grid edge and so has no fold site: each patch's copy of
+/// the vertex with its grid neighbour on the patch's own side, across the seam (copy A's edge from
+/// its neighbour to the vertex, t = 0; copy B's from the vertex to its neighbour, so that the two
+/// edges are parallel in the flat sheet), alpha 90 degrees. An angle target of zero there keeps
+/// the paper smooth across the seam. Points whose sides cannot be told apart (a patch with
+/// neighbours on both sides, near the seam's ends) have none.
+std::vector<DihedralSite> seam_vertex_sites(const DogMesh& mesh);
+
 class DihedralAngleTerm : public Term {
  public:
   const char* name() const override { return "angles"; }

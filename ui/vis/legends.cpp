@@ -159,6 +159,20 @@ double Legend::entry_width_pixels(int font) const {
                          : 1.2 * font + 0.55 * static_cast<double>(longest) * kLabelScale * font;
 }
 
+std::vector<LegendEntry> crease_legend_entries(const CreaseStitching& stitching) {
+  std::vector<LegendEntry> entries = {{"mountain", fold_colour(Fold::kMountain)},
+                                      {"valley", fold_colour(Fold::kValley)},
+                                      {"flat", fold_colour(Fold::kFlat)},
+                                      {"unassigned", fold_colour(Fold::kUnassigned)}};
+  bool seams = false, slits = false;
+  for (const auto& c : stitching.curves)
+    seams |= c.kind == CurveKind::kSeam, slits |= c.kind == CurveKind::kSlit;
+  if (seams) entries[2].label = "flat, seam";
+  if (slits) entries.push_back({"slit", kSlitColour});
+  entries.push_back({"crease point", kCreasePointColour});
+  return entries;
+}
+
 std::vector<LegendEntry> patch_legend_entries(int patch_count) {
   std::vector<LegendEntry> entries;
   if (patch_count <= kPatchColours) {

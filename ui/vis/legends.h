@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/mesh/dog_mesh.h"
 #include "ui/vis/palette.h"
 
 namespace sdog::vis {
@@ -65,6 +66,10 @@ class Legend {
 /// The patches legend's entries: one per patch ("patch 3") up to kPatchColors patches; beyond,
 /// one per colour naming the patches that share it ("patches 1, 13, 25, ...").
 std::vector<LegendEntry> patch_legend_entries(int patch_count);
+
+/// The crease lines legend's entries: the four assignments ("flat, seam" when the pattern has
+/// seams), "slit" when it has slits, and the crease point.
+std::vector<LegendEntry> crease_legend_entries(const CreaseStitching& stitching);
 
 /// Stacks the visible legends from the top of the column, in the order given; shrinks them
 /// evenly when they do not fit the viewport's height or a title does not fit the column's width.

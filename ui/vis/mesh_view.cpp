@@ -283,7 +283,8 @@ void MeshView::set_crease_folds(const std::vector<Fold>& folds) {
   for (size_t k = 0; k < mesh_.stitching.curves.size(); ++k) {
     const Fold fold = k < folds.size() ? folds[k] : Fold::kUnassigned;
     code->InsertNextValue(static_cast<int>(fold));
-    const Rgb c = fold_colour(fold);
+    const Rgb c =
+        mesh_.stitching.curves[k].kind == CurveKind::kSlit ? kSlitColour : fold_colour(fold);
     rgb->InsertNextTuple3(std::lround(255 * c[0]), std::lround(255 * c[1]),
                           std::lround(255 * c[2]));
   }

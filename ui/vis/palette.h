@@ -40,6 +40,8 @@ inline Rgb fold_colour(Fold fold) {
   }
   return {0.40, 0.40, 0.40};
 }
+/// Slits (crease_pattern.h) in the crease lines: green, as cut lines are drawn.
+inline constexpr Rgb kSlitColour{0.10, 0.60, 0.20};
 inline constexpr Rgb kSurfaceColour{0.94, 0.94, 0.94};
 inline constexpr Rgb kPaperColour{0.97, 0.96, 0.92};      // the paper style's front side
 inline constexpr Rgb kPaperBackColour{0.78, 0.82, 0.88};  // and its back side

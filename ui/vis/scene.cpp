@@ -214,11 +214,7 @@ void Scene::add_legends() {
                                                        {"handle to target", kResidualLineColour},
                                                        {"angle constraint", kAngleSiteColour}}));
   o.legends.emplace(Layer::kCreaseCurves,
-                    Legend::categories("creases", {{"mountain", fold_colour(Fold::kMountain)},
-                                                   {"valley", fold_colour(Fold::kValley)},
-                                                   {"flat", fold_colour(Fold::kFlat)},
-                                                   {"unassigned", fold_colour(Fold::kUnassigned)},
-                                                   {"crease point", kCreasePointColour}}));
+                    Legend::categories("creases", crease_legend_entries(model_.fine.stitching)));
 }
 
 Scene::~Scene() {

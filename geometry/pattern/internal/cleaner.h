@@ -2,7 +2,8 @@
 // Internal to pattern cleaning (pattern_cleaning.cpp and cleaning_*.cpp): the Cleaner that runs
 // the steps of pattern_cleaning.h on one pattern, and the polyline helpers its steps share. Each
 // step lives in the file named after it: cleaning_clipping.cpp (step 2), cleaning_junctions.cpp
-// (steps 3 and 5), cleaning_snapping.cpp (step 4), cleaning_overlaps.cpp (step 0);
+// (steps 3 and 5), cleaning_snapping.cpp and cleaning_seams.cpp (step 4), cleaning_overlaps.cpp
+// (step 0);
 // pattern_cleaning.cpp has the pipeline, step 1 and the final check.
 #include <cmath>
 #include <map>
@@ -130,6 +131,9 @@ class Cleaner {
   SnapCandidate nearest_crease_point(int k, int e, const Vec2& p) const;
   bool trim_near_end(int e, Vec2& a, Vec2& b, double& along) const;
   bool is_boundary_end(const Vec2& q, int except) const;
+  // cleaning_seams.cpp (step 4, ends inside the sheet)
+  void add_seam(int k, int e);
+  SnapCandidate first_hit(const Vec2& p, const Vec2& direction, int k) const;
 
   // Step 5 (cleaning_junctions.cpp).
   void align_junctions();
@@ -149,6 +153,7 @@ class Cleaner {
   double size_ = 0;               ///< L
   double merge_tol_ = 0, snap_tol_ = 0;
   double snap_fraction_ = 0;  ///< snap_tol_ / L, for messages
+  bool seams_ = false;        ///< free ends farther than snap_tol from everything get a seam
   std::vector<Vec2> junctions_, pins_;
   std::vector<std::string> changes_, warnings_;
 };

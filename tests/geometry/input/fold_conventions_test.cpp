@@ -84,10 +84,40 @@ TEST(FoldConventions, BadAttributesAndCutLinesAreClearErrors) {
       message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"red\" data-angle=\"-20\"/>")
           .find("0 to 180"),
       std::string::npos);
-  EXPECT_NE(message("<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"100\" stroke=\"#00ff00\"/>")
-                .find("this cut line is not closed"),
+}
+
+// A sheet outlined by a cut line with a tab, a slit from its edge and one inside it, as
+// datasets/slits_and_tab.svg draws them (y down).
+TEST(FoldConventions, OpenCutLinesAreSlitsAndAClosedOneWithATabIsTheSheet) {
+  const CreasePattern p = crease_pattern_from_svg(
+      parse_svg("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-5 -5 110 125\">"
+                "<g id=\"CutLine\" fill=\"none\" stroke=\"#000000\">"
+                "<path d=\"M 0,0 H 100 V 100 H 60 V 112 H 40 V 100 H 0 Z\"/>"
+                "<line id=\"edge-slit\" x1=\"75\" y1=\"100\" x2=\"75\" y2=\"62\"/>"
+                "<line id=\"inner-slit\" x1=\"22\" y1=\"25\" x2=\"48\" y2=\"25\"/></g>"
+                "<line x1=\"0\" y1=\"45\" x2=\"100\" y2=\"45\" stroke=\"#0000ff\"/></svg>",
+                "t.svg"));
+  EXPECT_EQ(p.sheet.outer.size(), 8u) << "the square and its tab";
+  EXPECT_DOUBLE_EQ(p.sheet.bbox.height(), 112);
+  ASSERT_EQ(p.creases.size(), 3u);
+  EXPECT_EQ(p.creases[0].kind, CurveKind::kCrease);
+  EXPECT_EQ(p.creases[0].fold, Fold::kValley);
+  for (size_t k : {1u, 2u}) {
+    EXPECT_EQ(p.creases[k].kind, CurveKind::kSlit) << k;
+    EXPECT_EQ(p.creases[k].fold, Fold::kFlat) << k;
+  }
+  EXPECT_EQ(p.creases[1].id, "edge-slit");
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_NE(p.warnings[0].find("2 open boundary or cut line(s) end inside the sheet and are read "
+                               "as slits"),
             std::string::npos)
-      << "a slit";
+      << p.warnings[0];
+  // A cut line alone in a viewBox sheet is a slit too; a black line alone is a boundary left open.
+  const CreasePattern lone = pattern_of(
+      "<line x1=\"20\" y1=\"0\" x2=\"20\" y2=\"60\" "
+      "stroke=\"#00ff00\"/>");
+  ASSERT_EQ(lone.creases.size(), 1u);
+  EXPECT_EQ(lone.creases[0].kind, CurveKind::kSlit);
 }
 
 // A drawing as Illustrator exports one: every stroke black, the meaning in the group ids.

@@ -399,7 +399,22 @@ TEST(FoldReaderErrors, AssignmentsThatCannotBeUsed) {
   EXPECT_HAS(error_of(f), "unknown assignment \"M\\nV\"") << "the message stays on one line";
   f = square();
   f["edges_assignment"][9] = "c";
-  EXPECT_HAS(error_of(f), "t.fold: edge 9: a cut (C): cuts are not supported");
+  f["edges_foldAngle"][9] = 10;
+  EXPECT_HAS(error_of(f), "t.fold: $.edges_foldAngle[9]: fold angle 10 on a cut (C)");
+}
+
+TEST(FoldReader, CutsAreSlitsAndJoinsAreLeftToCleaning) {
+  json f = square();
+  f["edges_assignment"][9] = "C";
+  f["edges_foldAngle"][9] = nullptr;
+  const int a = add_vertex(f, 30, 50), b = add_vertex(f, 50, 50);
+  add_edge(f, a, b, "J", nullptr);
+  const CreasePattern p = read(f);
+  ASSERT_EQ(p.creases.size(), 2u) << "the join edge is no curve";
+  EXPECT_EQ(p.creases[0].kind, CurveKind::kCrease);
+  EXPECT_EQ(p.creases[1].kind, CurveKind::kSlit);
+  EXPECT_EQ(p.creases[1].fold, Fold::kFlat);
+  EXPECT_FALSE(p.creases[1].angle);
 }
 
 TEST(FoldReaderErrors, FoldAnglesOutOfRangeOrAgainstTheAssignment) {

@@ -16,12 +16,13 @@
 namespace sdog {
 namespace {
 
-// FOLD 1.1's rules for the fields the writer uses: every vertex two finite coordinates, every edge
+// FOLD 1.2's rules for the fields the writer uses: every vertex two finite coordinates, every edge
 // two different vertices that exist, one assignment letter of B M V F U C J and one fold angle
-// (a number from -180 to 180, or null) per edge, zero on B and F edges and of the sign of M (-) and
-// V (+) edges; no edge twice; a frame class the spec knows.
+// (a number from -180 to 180, or null) per edge, zero on B, F, C and J edges and of the sign of M
+// (-) and V (+) edges; no edge twice; a frame class the spec knows; the frame attributes "cuts" and
+// "joins" exactly when there are C and J edges (else "noCuts", "noJoins").
 void expect_valid_fold(const nlohmann::json& j, const std::string& what) {
-  EXPECT_EQ(j.at("file_spec").get<double>(), 1.1) << what;
+  EXPECT_EQ(j.at("file_spec").get<double>(), 1.2) << what;
   EXPECT_TRUE(j.at("file_creator").is_string()) << what;
   for (const auto& c : j.at("frame_classes"))
     EXPECT_TRUE(c == "creasePattern" || c == "foldedForm" || c == "graph") << what;
@@ -35,6 +36,12 @@ void expect_valid_fold(const nlohmann::json& j, const std::string& what) {
     ASSERT_EQ(v.size(), 2u) << what;
     for (const auto& x : v) EXPECT_TRUE(x.is_number() && std::isfinite(x.get<double>())) << what;
   }
+  std::set<std::string> attributes, letters;
+  for (const auto& a : j.at("frame_attributes")) attributes.insert(a.get<std::string>());
+  for (const auto& a : assignment) letters.insert(a.get<std::string>());
+  EXPECT_TRUE(attributes.count("2D")) << what;
+  EXPECT_TRUE(attributes.count(letters.count("C") ? "cuts" : "noCuts")) << what;
+  EXPECT_TRUE(attributes.count(letters.count("J") ? "joins" : "noJoins")) << what;
   std::set<std::pair<int, int>> seen;
   for (size_t e = 0; e < edges.size(); ++e) {
     ASSERT_EQ(edges[e].size(), 2u) << what;
@@ -48,23 +55,23 @@ void expect_valid_fold(const nlohmann::json& j, const std::string& what) {
     if (angle[e].is_null()) continue;
     const double deg = angle[e];
     EXPECT_TRUE(deg >= -180 && deg <= 180) << what << ": edge " << e;
-    if (a == "B" || a == "F") EXPECT_EQ(deg, 0) << what << ": edge " << e;
+    if (a == "B" || a == "F" || a == "C" || a == "J") EXPECT_EQ(deg, 0) << what << ": edge " << e;
     if (a == "M") EXPECT_LE(deg, 0) << what << ": edge " << e;
     if (a == "V") EXPECT_GE(deg, 0) << what << ": edge " << e;
   }
 }
 
-// The creases' segments, each with its assignment and angle, in both directions.
-std::set<std::tuple<double, double, double, double, Fold, double>> crease_segments(
-    const CleanPattern& p) {
-  std::set<std::tuple<double, double, double, double, Fold, double>> out;
+// The creases' segments, each with its assignment, angle and kind, in both directions.
+using Segment = std::tuple<double, double, double, double, Fold, double, CurveKind>;
+std::set<Segment> crease_segments(const CleanPattern& p) {
+  std::set<Segment> out;
   for (const auto& c : p.creases) {
     const size_t n = c.points.size();
     for (size_t i = 0; i + 1 < n + (c.closed ? 1 : 0); ++i) {
       const Eigen::Vector2d &a = c.points[i], &b = c.points[(i + 1) % n];
       const double angle = c.angle.value_or(-1);
-      out.insert({a.x(), a.y(), b.x(), b.y(), c.fold, angle});
-      out.insert({b.x(), b.y(), a.x(), a.y(), c.fold, angle});
+      out.insert({a.x(), a.y(), b.x(), b.y(), c.fold, angle, c.kind});
+      out.insert({b.x(), b.y(), a.x(), a.y(), c.fold, angle, c.kind});
     }
   }
   return out;

@@ -40,9 +40,52 @@ TEST(PatternCleaning, EndsShortOfTheBoundarySnapOntoIt) {
   EXPECT_EQ(c.creases[0].points.back(), V2(100, 70));
 }
 
-TEST(PatternCleaning, CreaseEndingInsideTheSheetIsRejectedWithItsPosition) {
+TEST(PatternCleaning, ACreaseEndingInsideTheSheetIsContinuedByASeamToTheBoundary) {
+  // Ends at (50, 60), 40 units from the boundary: a seam continues its last segment's direction
+  // (3, 2) to the right edge at (100, 93.33).
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{0, 40}, {20, 40}, {50, 60}}}));
+  ASSERT_EQ(c.creases.size(), 2u);
+  EXPECT_EQ(c.creases[0].kind, CurveKind::kCrease);
+  const Crease& seam = c.creases[1];
+  EXPECT_EQ(seam.kind, CurveKind::kSeam);
+  EXPECT_EQ(seam.fold, Fold::kFlat);
+  ASSERT_EQ(seam.points.size(), 2u);
+  EXPECT_EQ(seam.points.front(), V2(50, 60));
+  EXPECT_EQ(seam.points.back().x(), 100.0);
+  EXPECT_NEAR(seam.points.back().y(), 60 + 50 * 2.0 / 3, 1e-9);
+  EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), seam.points.back()),
+            c.sheet.outer.end());
+  ASSERT_EQ(c.junctions.size(), 1u);
+  EXPECT_EQ(c.junctions[0], V2(50, 60));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  for (const char* part : {"crease 0", "ends inside the sheet at (50, 60)", "fold fades to flat",
+                           "seam", "the sheet boundary at (100, 93.33"})
+    EXPECT_NE(c.warnings[0].find(part), std::string::npos) << c.warnings[0];
+  EXPECT_EQ(count_pattern_patches(c), 2);
+}
+
+TEST(PatternCleaning, ASeamEndsOnTheFirstCreaseItMeetsAndAnInteriorCreaseGetsTwo) {
+  // Crease 1 lies inside the sheet, both ends far from everything: one seam runs left to the
+  // boundary, the other right until it meets crease 0 (a T junction there).
+  const CleanPattern c =
+      clean_pattern(rectangle_pattern(100, 100, {{{80, 0}, {80, 100}}, {{20, 50}, {40, 50}}}));
+  ASSERT_EQ(c.creases.size(), 4u);
+  std::vector<Polyline2> seams;
+  for (const Crease& k : c.creases)
+    if (k.kind == CurveKind::kSeam) seams.push_back(k.points);
+  ASSERT_EQ(seams.size(), 2u);
+  EXPECT_EQ(seams[0], (Polyline2{V2(20, 50), V2(0, 50)}));
+  EXPECT_EQ(seams[1], (Polyline2{V2(40, 50), V2(80, 50)}));
+  EXPECT_TRUE(has_vertex(c.creases[0], V2(80, 50))) << "the seam's end is a vertex of crease 0";
+  EXPECT_EQ(count_pattern_patches(c), 3);
+}
+
+TEST(PatternCleaning, WithoutSeamsACreaseEndingInsideTheSheetIsRejectedWithItsPosition) {
+  CleaningOptions no_seams;
+  no_seams.seams = false;
   try {
-    clean_pattern(rectangle_pattern(100, 100, {{{0, 40}, {50, 60}}}));
+    clean_pattern(rectangle_pattern(100, 100, {{{0, 40}, {50, 60}}}), no_seams);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();

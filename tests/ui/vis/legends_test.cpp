@@ -127,5 +127,19 @@ TEST(PanelTitles, DoNotOverlapInANarrowSideBySideView) {
   }
 }
 
+// The crease legend names slits and seams only for a pattern that has them.
+TEST(CreaseLegend, NamesSlitsAndSeamsWhereThePatternHasThem) {
+  auto labels = [](const std::string& file) {
+    const DogModel m = build_dog_model(read_crease_pattern(test::dataset(file)), {21, 21});
+    std::set<std::string> out;
+    for (const LegendEntry& e : crease_legend_entries(m.fine.stitching)) out.insert(e.label);
+    return out;
+  };
+  const std::set<std::string> slits = labels("slits_and_tab.svg");
+  EXPECT_TRUE(slits.count("slit") && slits.count("flat, seam"));
+  const std::set<std::string> plain = labels("curved_pleats.svg");
+  EXPECT_TRUE(plain.count("flat") && !plain.count("slit") && !plain.count("flat, seam"));
+}
+
 }  // namespace
 }  // namespace sdog::vis
