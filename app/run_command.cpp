@@ -356,7 +356,7 @@ void run(const RunArgs& a) {
   report_success(a, setup, summary, totals, seconds_since(start));
   if (out)
     std::cout << "wrote " << a.out << "/run.csv, " << (patches.empty() ? "" : "patches.csv, ")
-              << "run.json, creases.csv"
+              << "run.json, creases.csv, pattern.fold"
               << (frames ? ", frames.pvd and " + std::to_string(frames->frame_count()) +
                                " frame_NNNN.vtu, surface.pvd and " +
                                std::to_string(surfaces->frame_count()) + " surface_NNNN.vtp"
@@ -432,7 +432,8 @@ void register_run_command(CLI::App& app, Runner& runner) {
   cmd->add_option(
       "--out", a->out,
       "directory for run.csv, run.json, creases.csv (the fold angle reached at each crease point), "
-      "frames.pvd and frame_NNNN.vtu, surface.pvd and surface_NNNN.vtp (the trimmed surface of "
+      "pattern.fold (the pattern as read, FOLD), frames.pvd and frame_NNNN.vtu, surface.pvd and "
+      "surface_NNNN.vtp (the trimmed surface of "
       "each frame), and in the patch modes patches.csv (the per-patch timeline)");
   cmd->add_option("--frames-every", a->frames_every, "write a frame every K iterations (0: none)")
       ->check(CLI::Range(0, 1000000))
