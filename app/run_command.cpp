@@ -440,9 +440,10 @@ void register_run_command(CLI::App& app, Runner& runner) {
       ->capture_default_str();
   a->export_opt = cmd->add_option(
       "--export", a->exports,
-      "FORMATS: obj, ply or obj,ply: also write the trimmed surface of the final state "
-      "(surface.obj, surface.ply) and "
-      "of every frame (surface_NNNN.obj, ...) into --out, with normals, in sheet units");
+      "FORMATS: a list of obj, ply, fold: also write the trimmed surface of the final state "
+      "(surface.obj, surface.ply, surface.fold) and "
+      "of every frame (surface_NNNN.obj, ...) into --out, in sheet units; fold is a FOLD folded "
+      "form with the fold angles reached");
   a->export_colour_opt =
       cmd->add_option("--export-colour", a->export_colour,
                       "the vertex colours of the PLY files: the colours of this overlay (" +

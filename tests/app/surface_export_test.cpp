@@ -189,7 +189,8 @@ TEST(SurfaceExport, BadValuesAreUsageErrorsBeforeAnyOutput) {
     std::string args, message;
   };
   const std::vector<Case> cases = {
-      {"--export stl --out " + dir + "/a", "--export: unknown format 'stl' (known: obj, ply)"},
+      {"--export stl --out " + dir + "/a",
+       "--export: unknown format 'stl' (known: obj, ply, fold)"},
       {"--export obj,obj --out " + dir + "/a", "--export: format 'obj' is listed twice"},
       {"--export obj,,ply --out " + dir + "/a", "--export: unknown format ''"},
       {"--export obj", "--export writes into the --out directory"},

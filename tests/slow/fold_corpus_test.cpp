@@ -1,7 +1,8 @@
 // The fold corpus: every project dataset written to carry what curved-crease designs drawn
 // elsewhere have (concentric pleats around a hole, crossing pleats, S-curves, parabolas, a dozen
-// creases, a pleat whose two creases meet inside the sheet, angles above 90 degrees, assigned and
-// unassigned creases together) folds as drawn at two resolutions, two angles and two paces: the
+// creases, a pleat whose two creases meet inside the sheet, a crease that ends inside the sheet,
+// slits and a cut outline with a tab, angles above 90 degrees, assigned and unassigned creases
+// together) folds as drawn at two resolutions, two angles and two paces: the
 // run converges within the final tolerance, at least 95% of the fold sites bent by more than
 // 5 degrees bend the way their targets say (away from the v pleat's fold tip, where folds fade:
 // geometry/pattern/fold_tips.h), and the median angle error is small.
@@ -19,9 +20,11 @@ namespace sdog {
 namespace {
 
 const char* const kCorpus[] = {
-    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg", "crossing_arc_pleats.svg",
-    "crossing_wave_pleats.svg",      "parabola_pleats.svg",   "s_curve_pleats.svg",
+    "circular_pleats_with_hole.svg", "corner_arc_pleats.svg",
+    "crossing_arc_pleats.svg",       "crossing_wave_pleats.svg",
+    "parabola_pleats.svg",           "s_curve_pleats.svg",
     "twelve_wave_pleats.fold",       "v_pleat.fold",
+    "crease_ending_inside.svg",      "slits_and_tab.svg",
 };
 
 // Held iterations at most after the targets stop moving.

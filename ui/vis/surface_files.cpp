@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "base/errors.h"
+#include "geometry/surface/folded_form.h"
 #include "ui/vis/surface_colours.h"
 #include "ui/vis/vtk_meshes.h"
 
@@ -96,10 +97,17 @@ void write_surface_file(SurfaceFormat format, const TrimmedSurface& surface, con
                         Layer colour, const MeshArrays& mesh_arrays, const std::string& path) {
   TrimmedSurface sheet = surface;
   sheet.V = to_sheet_units(mesh, surface.V);
-  if (format == SurfaceFormat::kObj)
+  if (format == SurfaceFormat::kObj) {
     write_obj(sheet, path);
-  else
+  } else if (format == SurfaceFormat::kPly) {
     write_ply(sheet, surface_colours(colour, surface, mesh_arrays), path);
+  } else {
+    std::ofstream out(path);
+    out << folded_form_fold(sheet, kWeldGridEdges / mesh.scale, path);
+    out.close();
+    if (!out)
+      throw OutputError(path + ": cannot write the FOLD file (" + std::strerror(errno) + ")");
+  }
 }
 
 }  // namespace sdog::vis

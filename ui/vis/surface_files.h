@@ -5,7 +5,9 @@
 //   vtkOBJWriter (full double precision);
 // - PLY (binary little endian): per vertex float x, y, z, float nx, ny, nz and uchar red, green,
 //   blue, per face a uchar count and int indices. Written here: VTK 9.1's vtkPLYWriter writes no
-//   normals and does not report a file it could not open.
+//   normals and does not report a file it could not open;
+// - FOLD folded form (JSON): the surface with its creases' fold angles as reached, for Origami
+//   Simulator and the FOLD tools (geometry/surface/folded_form.h).
 // Sheet units are the pattern's (dog_mesh.h): x, y = mesh / scale + sheet_origin, z = mesh / scale.
 // Normals are the surface's (a uniform scale and a shift keep them).
 #include <Eigen/Core>
@@ -20,16 +22,17 @@
 
 namespace sdog::vis {
 
-enum class SurfaceFormat { kObj, kPly };
+enum class SurfaceFormat { kObj, kPly, kFold };
 }  // namespace sdog::vis
 
 namespace sdog {
-/// "obj", "ply": the file extension, without the dot, and the name on the command line.
+/// "obj", "ply", "fold": the file extension, without the dot, and the name on the command line.
 template <>
 struct EnumNames<vis::SurfaceFormat> {
   static constexpr const char* noun = "format";
   static constexpr EnumName<vis::SurfaceFormat> rows[] = {{vis::SurfaceFormat::kObj, "obj"},
-                                                          {vis::SurfaceFormat::kPly, "ply"}};
+                                                          {vis::SurfaceFormat::kPly, "ply"},
+                                                          {vis::SurfaceFormat::kFold, "fold"}};
 };
 }  // namespace sdog
 
