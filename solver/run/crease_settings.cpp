@@ -23,16 +23,21 @@ std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& cu
   return found;
 }
 
+void check_foldable(const DogMesh& mesh, int k, const std::string& path) {
+  const CurveKind kind = mesh.stitching.curves[k].kind;
+  if (kind == CurveKind::kCrease) return;
+  throw InputError(path + ": crease " + std::to_string(k) + " is a " + enum_name(kind) +
+                   (kind == CurveKind::kSlit
+                        ? ", a cut that does not fold"
+                        : ", the smooth continuation of an end inside the sheet, which does not "
+                          "fold"));
+}
+
 void apply_crease_settings(const std::vector<CreaseSetting>& settings, DogModel& model) {
   for (const CreaseSetting& s : settings) {
     for (const int k : named_creases(model.fine, s.curve, s.id, s.path)) {
       Crease& crease = model.clean.creases[k];
-      if (crease.kind != CurveKind::kCrease)
-        throw InputError(
-            s.path + ": crease " + std::to_string(k) + " is a " + enum_name(crease.kind) +
-            (crease.kind == CurveKind::kSlit ? ", a cut that does not fold"
-                                             : ", the smooth continuation of an end "
-                                               "inside the sheet, which does not fold"));
+      check_foldable(model.fine, k, s.path);
       if (s.fold) {
         crease.fold = *s.fold;
         if (crease.fold != Fold::kMountain && crease.fold != Fold::kValley) crease.angle.reset();

@@ -16,6 +16,10 @@ namespace sdog {
 std::vector<int> named_creases(const DogMesh& mesh, const std::optional<int>& curve,
                                const std::optional<std::string>& id, const std::string& path);
 
+/// Throws InputError naming `path` when curve k of `mesh` is a slit or a seam (crease_pattern.h),
+/// which do not fold.
+void check_foldable(const DogMesh& mesh, int k, const std::string& path);
+
 /// Sets each setting's assignment and angle on its creases, in the cleaned pattern and in the fine
 /// and coarse stitching curves. An assignment other than mountain or valley drops the angle; an
 /// angle alone keeps the assignment. Throws InputError naming the setting for a slit or a seam

@@ -191,6 +191,7 @@ void Session::set_creases(const std::vector<int>& curves, std::optional<Fold> fo
     if (k < 0 || k >= static_cast<int>(existing.size()))
       throw InputError("crease " + std::to_string(k) + " does not exist (the pattern has " +
                        std::to_string(existing.size()) + " creases after cleaning)");
+  for (int k : curves) check_foldable(model_.fine, k, "studio");
   if (angle && !(*angle >= 0 && *angle <= 180))
     throw InputError("a fold angle must be in [0, 180] degrees");
   if (!fold && !angle) return;

@@ -229,6 +229,29 @@ TEST(Session, CreaseEditsFoldTheSessionsModelAndAreUndone) {
   EXPECT_THROW(s.set_creases({}, Fold::kValley, std::nullopt), InputError);
 }
 
+// Slits and seams do not fold: an edit of their assignment is refused before it changes anything.
+TEST(Session, SlitsAndSeamsRefuseAnAssignment) {
+  const DogModel slits =
+      build_dog_model(read_crease_pattern(test::dataset("slits_and_tab.svg")), {21, 21});
+  Session s(slits, interactive(), ModeKind::kStandard);
+  const auto& curves = s.model().fine.stitching.curves;
+  ASSERT_EQ(curves[1].kind, CurveKind::kSlit);
+  ASSERT_EQ(curves[3].kind, CurveKind::kSeam);
+  for (const int k : {1, 3}) {
+    try {
+      s.set_creases({0, k}, Fold::kMountain, std::nullopt);
+      FAIL() << "crease " << k << " took an assignment";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("crease " + std::to_string(k) + " is a"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_FALSE(s.can_undo()) << "no edit was made";
+  EXPECT_EQ(s.model().fine.stitching.curves[0].fold, Fold::kValley);
+  EXPECT_TRUE(s.config().creases.empty());
+}
+
 // The fold amount (the studio's slider) folds the sheet to a share of every crease's angle and back
 // to flat; at 100% the session ends on the same side as `sdog run` with the same settings.
 TEST(Session, TheFoldAmountFoldsAndUnfoldsTheSheetOnTheRunsSide) {
