@@ -242,7 +242,10 @@ void Cleaner::drop_degenerate_creases() {
 void Cleaner::align_junctions() {
   for (int axis = 0; axis < 2; ++axis) align_boundary_ends(axis);
   const std::vector<Vec2> fixed = collect_junctions();
-  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed);
+  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, snap_tol_);
+  // Where a group's move was refused, coordinates a hair apart would each pin a grid line a hair
+  // from the other's: they align among themselves.
+  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, kCornerFraction * size_);
   pins_ = junctions_;
   pins_.insert(pins_.end(), fixed.begin(), fixed.end());
 }
@@ -298,8 +301,8 @@ void Cleaner::align_boundary_ends(int axis) {
   }
 }
 
-// Aligns the `axis` coordinates of junctions that lie within snap_tol of each other (in chains).
-void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed) {
+// Aligns the `axis` coordinates of junctions that lie within tol of each other (in chains).
+void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed, double tol) {
   std::vector<AxisValue> items;
   for (size_t j = 0; j < junctions_.size(); ++j)
     items.push_back({junctions_[j][axis], static_cast<int>(j)});
@@ -308,7 +311,7 @@ void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed) {
             [](const AxisValue& x, const AxisValue& y) { return x.value < y.value; });
   for (size_t s = 0; s < items.size();) {
     size_t e = s + 1;
-    while (e < items.size() && items[e].value - items[e - 1].value <= snap_tol_) ++e;
+    while (e < items.size() && items[e].value - items[e - 1].value <= tol) ++e;
     if (const std::optional<double> target = group_target(items, s, e)) {
       for (size_t i = s; i < e; ++i) {
         if (items[i].junction < 0 || items[i].value == *target) continue;

@@ -26,7 +26,10 @@
 //  5. Crease ends on slanted boundary edges whose x (or y) coordinates all lie within L/1000 move,
 //     with their boundary vertices, to their mean. Junction x and y coordinates closer than
 //     snap_tol are aligned (to the boundary end's value when one is in the group, else to the
-//     mean), so the grid does not get needlessly thin rows.
+//     mean), so the grid does not get needlessly thin rows. A group is left as it is when it holds
+//     two boundary ends, and a junction stays where its move would make its creases cross
+//     another; junction coordinates within L/1000 of each other are then aligned among
+//     themselves, so that no grid row or column is a hair wide.
 // After cleaning, creases meet each other and the boundary only at shared polyline vertices.
 #include <string>
 #include <vector>

@@ -139,7 +139,7 @@ class Cleaner {
   void align_junctions();
   void align_boundary_ends(int axis);
   std::vector<Vec2> collect_junctions();
-  void align_axis(int axis, const std::vector<Vec2>& fixed);
+  void align_axis(int axis, const std::vector<Vec2>& fixed, double tol);
   void align_junction(int j, int axis, double target);
   bool move_keeps_creases_apart(const Vec2& from, const Vec2& to) const;
 
