@@ -63,10 +63,11 @@ TEST(SurfaceFiles, FormatNamesAndExtensions) {
     vis::parse_surface_formats("obj,stl", "--export: ");
     ADD_FAILURE() << "stl accepted";
   } catch (const UsageError& e) {
-    EXPECT_EQ(std::string(e.what()), "--export: unknown format 'stl' (known: obj, ply)");
+    EXPECT_EQ(std::string(e.what()), "--export: unknown format 'stl' (known: obj, ply, fold)");
   }
   EXPECT_EQ(vis::format_of_path("out/a.OBJ"), SurfaceFormat::kObj);
   EXPECT_EQ(vis::format_of_path("a.b.ply"), SurfaceFormat::kPly);
+  EXPECT_EQ(vis::format_of_path("folded.fold"), SurfaceFormat::kFold);
   EXPECT_EQ(vis::format_of_path("out.ply/surface"), std::nullopt);
   EXPECT_EQ(vis::format_of_path("surface.stl"), std::nullopt);
   EXPECT_EQ(vis::with_surface_extension("dir/shape", SurfaceFormat::kPly), "dir/shape.ply");
