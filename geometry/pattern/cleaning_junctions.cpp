@@ -267,7 +267,8 @@ std::vector<Vec2> Cleaner::collect_junctions() {
 
 // Crease ends on the boundary whose `axis` coordinates differ by a hair (all within kCornerFraction
 // L of the smallest), as in drawings whose vertices were rounded independently, move to
-// their mean: each would otherwise pin its own grid line beside the others'.
+// their mean: each would otherwise pin its own grid line beside the others'. Ends a hair from the
+// bounding box (a boundary drawn with a small jog) move onto it, where the grid has its outer line.
 void Cleaner::align_boundary_ends(int axis) {
   const Box2& b = sheet_.bbox;
   std::set<std::pair<double, double>> seen;
@@ -279,26 +280,41 @@ void Cleaner::align_boundary_ends(int axis) {
           q.y() != b.ymax && seen.insert({q.x(), q.y()}).second)
         ends.push_back(q);
   }
+  const double tol = kCornerFraction * size_;
+  const double lo = axis == 0 ? b.xmin : b.ymin, hi = axis == 0 ? b.xmax : b.ymax;
+  std::vector<Vec2> inner;
+  for (const Vec2& q : ends) {
+    if (q[axis] - lo <= tol)
+      move_boundary_end(q, axis, lo);
+    else if (hi - q[axis] <= tol)
+      move_boundary_end(q, axis, hi);
+    else
+      inner.push_back(q);
+  }
+  ends = std::move(inner);
   std::sort(ends.begin(), ends.end(),
             [axis](const Vec2& p, const Vec2& q) { return p[axis] < q[axis]; });
-  const double tol = kCornerFraction * size_;
   for (size_t s = 0; s < ends.size();) {
     size_t e = s + 1;
     while (e < ends.size() && ends[e][axis] - ends[s][axis] <= tol) ++e;
     if (ends[e - 1][axis] != ends[s][axis]) {
       double target = 0;
       for (size_t i = s; i < e; ++i) target += ends[i][axis] / static_cast<double>(e - s);
-      for (size_t i = s; i < e; ++i) {
-        Vec2 moved = ends[i];
-        moved[axis] = target;
-        log("boundary point " + format_point(ends[i]) + " aligned in " + (axis == 0 ? "x" : "y") +
-            " to " + format_number(target));
-        replace_vertex(ends[i], moved);
-        for (auto& loop : loops_) std::replace(loop.begin(), loop.end(), ends[i], moved);
-      }
+      for (size_t i = s; i < e; ++i) move_boundary_end(ends[i], axis, target);
     }
     s = e;
   }
+}
+
+// Moves the crease end `end` on the boundary to `axis` coordinate `target`, in the creases and the
+// boundary loops.
+void Cleaner::move_boundary_end(const Vec2& end, int axis, double target) {
+  Vec2 moved = end;
+  moved[axis] = target;
+  log("boundary point " + format_point(end) + " aligned in " + (axis == 0 ? "x" : "y") + " to " +
+      format_number(target));
+  replace_vertex(end, moved);
+  for (auto& loop : loops_) std::replace(loop.begin(), loop.end(), end, moved);
 }
 
 // Aligns the `axis` coordinates of junctions that lie within tol of each other (in chains).

@@ -138,6 +138,7 @@ class Cleaner {
   // Step 5 (cleaning_junctions.cpp).
   void align_junctions();
   void align_boundary_ends(int axis);
+  void move_boundary_end(const Vec2& end, int axis, double target);
   std::vector<Vec2> collect_junctions();
   void align_axis(int axis, const std::vector<Vec2>& fixed, double tol);
   void align_junction(int j, int axis, double target);

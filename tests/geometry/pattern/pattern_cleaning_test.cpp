@@ -371,21 +371,13 @@ TEST(PatternCleaning, ChosenTolerancesDoNotAdapt) {
   }
 }
 
-// A 100-unit sheet with a V-shaped bottom edge ((0, 20), (50, 0), (100, 20)). Two creases end on
-// its slanted left half at x = 47.1 and 49 (boundary points off the bounding box: fixed grid
-// lines), and two pairs of creases meet at (50, 60) and at (50.0005, 80), each pair a mountain and
-// a valley (fold tips). The four x coordinates chain within snap_tol (L/50 = 2), a group with two
-// fixed values, which alignment leaves as it is.
-CreasePattern hair_pattern() {
+// A 100 x 100 sheet with the outline `outer` and the creases given as points and assignment.
+CreasePattern sheet_with_creases(const Polyline2& outer,
+                                 const std::vector<std::pair<Polyline2, Fold>>& creases) {
   CreasePattern p;
   p.source = "test";
-  p.sheet.outer = {{0, 20}, {50, 0}, {100, 20}, {100, 100}, {0, 100}};
+  p.sheet.outer = outer;
   p.sheet.bbox = {0, 0, 100, 100};
-  const std::vector<std::pair<Polyline2, Fold>> creases = {
-      {{{49, 0.4}, {0, 40}}, Fold::kMountain},     {{{47.1, 1.16}, {0, 30}}, Fold::kMountain},
-      {{{0, 60}, {50, 60}}, Fold::kValley},        {{{100, 65}, {50, 60}}, Fold::kMountain},
-      {{{0, 85}, {50.0005, 80}}, Fold::kMountain}, {{{100, 85}, {50.0005, 80}}, Fold::kValley},
-  };
   for (const auto& [points, fold] : creases) {
     Crease c;
     c.points = points;
@@ -396,16 +388,67 @@ CreasePattern hair_pattern() {
   return p;
 }
 
+// The width of the fine grid's narrowest column (mesh units).
+double narrowest_column(const DogModel& model) {
+  double narrowest = INFINITY;
+  for (size_t i = 1; i < model.fine.xs.size(); ++i)
+    narrowest = std::min(narrowest, model.fine.xs[i] - model.fine.xs[i - 1]);
+  return narrowest;
+}
+
+// A 100-unit sheet with a V-shaped bottom edge ((0, 20), (50, 0), (100, 20)). Two creases end on
+// its slanted left half at x = 47.1 and 49 (boundary points off the bounding box: fixed grid
+// lines), and two pairs of creases meet at (50, 60) and at (50.0005, 80), each pair a mountain and
+// a valley (fold tips). The four x coordinates chain within snap_tol (L/50 = 2), a group with two
+// fixed values, which alignment leaves as it is.
+CreasePattern hair_pattern() {
+  return sheet_with_creases({{0, 20}, {50, 0}, {100, 20}, {100, 100}, {0, 100}},
+                            {
+                                {{{49, 0.4}, {0, 40}}, Fold::kMountain},
+                                {{{47.1, 1.16}, {0, 30}}, Fold::kMountain},
+                                {{{0, 60}, {50, 60}}, Fold::kValley},
+                                {{{100, 65}, {50, 60}}, Fold::kMountain},
+                                {{{0, 85}, {50.0005, 80}}, Fold::kMountain},
+                                {{{100, 85}, {50.0005, 80}}, Fold::kValley},
+                            });
+}
+
 TEST(PatternCleaning, JunctionsAHairApartShareOneGridLineWhereTheirGroupStays) {
   const CleanPattern c = clean_pattern(hair_pattern());
   ASSERT_EQ(c.junctions.size(), 2u);
   EXPECT_EQ(c.junctions[0].x(), c.junctions[1].x());
   EXPECT_NEAR(c.junctions[0].x(), 50.00025, 1e-9) << "the pair's mean";
   const DogModel model = build_dog_model(hair_pattern(), {41, 41});
-  double narrowest = INFINITY;
-  for (size_t i = 1; i < model.fine.xs.size(); ++i)
-    narrowest = std::min(narrowest, model.fine.xs[i] - model.fine.xs[i - 1]);
+  const double narrowest = narrowest_column(model);
   // Without the alignment a column is 1e-4 wide and the fold scenario diverges at iteration 7.
+  EXPECT_GT(narrowest, 0.1) << "no grid column a hair wide (mesh units: a column is about 1)";
+}
+
+// A 100-unit sheet whose right edge has a jog a hair wide: x = 100 up to y = 10, x = 99.95 above
+// (a boundary drawn from pieces whose ends were rounded apart). A valley and a mountain cross the
+// sheet and end on the right edge above the jog, at boundary points off the bounding box.
+CreasePattern jogged_edge_pattern() {
+  return sheet_with_creases({{0, 0}, {100, 0}, {100, 10}, {99.95, 10}, {99.95, 100}, {0, 100}},
+                            {
+                                {{{0, 40}, {99.95, 50}}, Fold::kValley},
+                                {{{0, 70}, {99.95, 80}}, Fold::kMountain},
+                            });
+}
+
+TEST(PatternCleaning, CreaseEndsAHairFromTheBoundingBoxMoveOntoIt) {
+  const CleanPattern c = clean_pattern(jogged_edge_pattern());
+  ASSERT_EQ(c.creases.size(), 2u);
+  for (const Crease& crease : c.creases) {
+    const V2 end = crease.points.front().x() > crease.points.back().x() ? crease.points.front()
+                                                                        : crease.points.back();
+    EXPECT_EQ(end.x(), 100) << crease.origin << ": onto the outer grid line";
+    const auto& outer = c.sheet.outer;
+    EXPECT_NE(std::find(outer.begin(), outer.end(), end), outer.end())
+        << crease.origin << ": the boundary follows its end";
+  }
+  const DogModel model = build_dog_model(jogged_edge_pattern(), {41, 41});
+  const double narrowest = narrowest_column(model);
+  // Without the move the ends pin a grid line 0.02 mesh units from the sheet's outer one.
   EXPECT_GT(narrowest, 0.1) << "no grid column a hair wide (mesh units: a column is about 1)";
 }
 
