@@ -280,10 +280,9 @@ void register_compare_command(CLI::App& app, Runner& runner, const std::string& 
       ->capture_default_str();
   add_case_grid_options(*cmd, *a);
   add_schedule_options(*cmd, a->schedule);
-  a->scenario_opt =
-      cmd->add_option("--scenario", a->scenario,
-                      "scenario of every run (" + join(enum_names<ScenarioKind>(), ", ") + ")")
-          ->capture_default_str();
+  a->scenario_opt = cmd->add_option("--scenario", a->scenario,
+                                    "scenario of every run (" + known_names<ScenarioKind>() + ")")
+                        ->capture_default_str();
   cmd->add_option(
       "--config", a->config,
       "JSON file of weights, solver and mode options (as for sdog run; no switches) for every run; "

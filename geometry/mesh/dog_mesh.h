@@ -49,6 +49,12 @@ struct CreaseStitching {
     CurveKind kind = CurveKind::kCrease;
   };
   std::vector<Curve> curves;  ///< one per cleaned crease
+  /// Whether some curve is of kind `kind` (a slit, a seam).
+  bool has(CurveKind kind) const {
+    for (const Curve& c : curves)
+      if (c.kind == kind) return true;
+    return false;
+  }
 
   std::vector<std::vector<int>> patch_adjacency;  ///< patches sharing a crease, ascending
   std::vector<int> junctions;  ///< crease points with copies in more than two patches

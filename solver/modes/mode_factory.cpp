@@ -1,6 +1,5 @@
 #include "solver/modes/mode_factory.h"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "base/errors.h"
@@ -23,10 +22,7 @@ const DogModel& required(const DogModel* model, ModeKind mode) {
 
 void check_mode_usable(ModeKind mode, const DogModel& model) {
   if (mode_needs_coarse(mode)) CoarseLevel::check_usable(model, mode);
-  const auto& curves = model.fine.stitching.curves;
-  if (mode != ModeKind::kStandard && std::any_of(curves.begin(), curves.end(), [](const auto& c) {
-        return c.kind == CurveKind::kSlit;
-      }))
+  if (mode != ModeKind::kStandard && model.fine.stitching.has(CurveKind::kSlit))
     throw UsageError(std::string("mode ") + enum_name(mode) +
                      " takes every crease point as one point of the sheet and would close the "
                      "pattern's slits; run patterns with slits in mode standard");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "solver/problem/fold_seed.h"
@@ -110,27 +111,38 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations, int 
     const double target = crease_fold_target(mesh, c, degrees);
     s.curve_signs[c] = target > 0 ? 1.0 : target < 0 ? -1.0 : 0.0;
   }
+  const std::vector<FoldFade> fades = fold_fades(mesh);
   for (const auto& site : fold_sites(mesh))
-    s.angles.push_back({site.point, 0.0,
-                        percent / 100 * fold_fade(mesh, site.curve, site.point) *
-                            crease_fold_target(mesh, site.curve, degrees)});
+    s.angles.push_back(
+        {site.point, 0.0,
+         percent / 100 * fades[site.curve].at(mesh.stitching.points[site.point].flat) *
+             crease_fold_target(mesh, site.curve, degrees)});
   return s;
 }
 
-double fold_fade(const DogMesh& mesh, size_t curve, int point) {
-  const CreaseStitching& st = mesh.stitching;
-  const auto& c = st.curves[curve];
-  if (c.closed || c.kind != CurveKind::kCrease || c.points.size() < 2) return 1;
-  double length = 0;
-  for (size_t k = 1; k < c.points.size(); ++k)
-    length += (st.points[c.points[k]].flat - st.points[c.points[k - 1]].flat).norm();
+double FoldFade::at(const Eigen::Vector2d& p) const {
   double fade = 1;
-  for (const int end : {c.points.front(), c.points.back()})
-    for (const auto& seam : st.curves)
-      if (seam.kind == CurveKind::kSeam && !seam.points.empty() && seam.points.front() == end)
-        fade = std::min(
-            fade, (st.points[point].flat - st.points[end].flat).norm() / (kFadeShare * length));
-  return std::min(fade, 1.0);
+  for (const Eigen::Vector2d& end : inner_ends)
+    fade = std::min(fade, (p - end).norm() / (kFadeShare * length));
+  return fade;
+}
+
+std::vector<FoldFade> fold_fades(const DogMesh& mesh) {
+  const CreaseStitching& st = mesh.stitching;
+  std::set<int> seam_starts;
+  for (const auto& seam : st.curves)
+    if (seam.kind == CurveKind::kSeam && !seam.points.empty())
+      seam_starts.insert(seam.points.front());
+  std::vector<FoldFade> fades(st.curves.size());
+  for (size_t i = 0; i < st.curves.size(); ++i) {
+    const auto& c = st.curves[i];
+    if (c.closed || c.kind != CurveKind::kCrease || c.points.size() < 2) continue;
+    for (size_t k = 1; k < c.points.size(); ++k)
+      fades[i].length += (st.points[c.points[k]].flat - st.points[c.points[k - 1]].flat).norm();
+    for (const int end : {c.points.front(), c.points.back()})
+      if (seam_starts.count(end)) fades[i].inner_ends.push_back(st.points[end].flat);
+  }
+  return fades;
 }
 
 double crease_fold_target(const DogMesh& mesh, size_t curve, double degrees) {

@@ -58,7 +58,7 @@ struct Scenario {
 Scenario corners_scenario(const DogMesh& mesh, int iterations = 250, int hold = 50);
 
 /// Every fold site (a crease point where a crease crosses the inside of a grid edge between two
-/// patches) folds from flat towards its crease's target (crease_fold_target, faded by fold_fade
+/// patches) folds from flat towards its crease's target (crease_fold_target, faded by fold_fades
 /// towards an end inside the sheet), curved folding without dragging. The angle targets are signed,
 /// so each crease folds the way its target says; the start state is tilted towards those directions
 /// too (fold_seed.h). `percent`: the fold amount, the share of each target the sites end at (100:
@@ -70,10 +70,16 @@ Scenario fold_scenario(const DogMesh& mesh, double degrees, int iterations = 250
 /// end inside the sheet (where a seam continues it, crease_pattern.h): paper cannot keep a fold up
 /// to a point inside it.
 constexpr double kFadeShare = 0.25;
-/// The share of its crease's target the fold scenario asks at crease point `point` of `curve`: the
-/// flat distance to an end inside the sheet over kFadeShare of the crease's length, at most 1 (1
-/// for creases without such an end).
-double fold_fade(const DogMesh& mesh, size_t curve, int point);
+/// How the fold scenario fades a crease curve's target towards its ends inside the sheet.
+struct FoldFade {
+  std::vector<Eigen::Vector2d> inner_ends;  ///< flat positions of the ends where a seam starts
+  double length = 0;                        ///< the crease's flat length
+  /// The share of the crease's target asked at flat point p: the distance to the nearest inner
+  /// end over kFadeShare of the length, at most 1 (1 for creases without such an end).
+  double at(const Eigen::Vector2d& p) const;
+};
+/// One per stitching curve (slits, seams and closed curves have no inner ends).
+std::vector<FoldFade> fold_fades(const DogMesh& mesh);
 
 /// The signed fold angle (degrees; positive valley, negative mountain) the fold scenario asks of a
 /// crease curve: 0 for a crease assigned flat; else the drawing's angle for it, or |degrees|,

@@ -164,11 +164,8 @@ std::vector<LegendEntry> crease_legend_entries(const CreaseStitching& stitching)
                                       {"valley", fold_colour(Fold::kValley)},
                                       {"flat", fold_colour(Fold::kFlat)},
                                       {"unassigned", fold_colour(Fold::kUnassigned)}};
-  bool seams = false, slits = false;
-  for (const auto& c : stitching.curves)
-    seams |= c.kind == CurveKind::kSeam, slits |= c.kind == CurveKind::kSlit;
-  if (seams) entries[2].label = "flat, seam";
-  if (slits) entries.push_back({"slit", kSlitColour});
+  if (stitching.has(CurveKind::kSeam)) entries[2].label = "flat, seam";
+  if (stitching.has(CurveKind::kSlit)) entries.push_back({"slit", kSlitColour});
   entries.push_back({"crease point", kCreasePointColour});
   return entries;
 }
