@@ -170,19 +170,45 @@ std::optional<Resolution> lowest_meshing_resolution(const CreasePattern& pattern
     if (options.build_coarse && m % 2 == 0) ++m;
     return std::min(m, kMaxResolution);
   };
+  auto at = [&](double factor) {
+    return Resolution{grown(from.nx, factor), grown(from.ny, factor)};
+  };
+  auto meshes = [&](const Resolution& res) {
+    try {
+      build_dog_model(pattern, res, options);
+      return true;
+    } catch (const UsageError&) {
+      return false;
+    }
+  };
+  // Steps of kResolutionStep until one meshes, then halving the factor between it and the step
+  // before, while that gives resolutions in between.
+  double below = 1, above = 0;
   Resolution res = from;
   for (double factor = kResolutionStep; factor <= kResolutionReach * (1 + 1e-9);
        factor *= kResolutionStep) {
-    const Resolution next{grown(from.nx, factor), grown(from.ny, factor)};
+    const Resolution next = at(factor);
     if (next == res) break;
     res = next;
-    try {
-      build_dog_model(pattern, res, options);
-      return res;
-    } catch (const UsageError&) {
+    if (meshes(res)) {
+      above = factor;
+      break;
+    }
+    below = factor;
+  }
+  if (above == 0) return std::nullopt;
+  for (;;) {
+    const double mid = 0.5 * (below + above);
+    const Resolution candidate = at(mid);
+    if (candidate == res || (below > 1 && candidate == at(below)) || candidate == from) break;
+    if (meshes(candidate)) {
+      above = mid;
+      res = candidate;
+    } else {
+      below = mid;
     }
   }
-  return std::nullopt;
+  return res;
 }
 
 }  // namespace sdog

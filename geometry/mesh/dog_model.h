@@ -47,7 +47,8 @@ std::vector<std::string> model_warnings(const DogModel& model);
 
 /// The lowest resolution above `from` at which the pattern meshes, found by trying: each side
 /// grows by kResolutionStep per attempt (odd when a coarse mesh is built), up to kResolutionReach
-/// times `from` (and kMaxResolution); unset when none of them meshes.
+/// times `from` (and kMaxResolution), and the first step that meshes is narrowed down by halving
+/// towards the step before; unset when none of them meshes.
 constexpr double kResolutionStep = 1.25;
 constexpr double kResolutionReach = 4;
 std::optional<Resolution> lowest_meshing_resolution(const CreasePattern& pattern,

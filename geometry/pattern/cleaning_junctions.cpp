@@ -245,7 +245,7 @@ void Cleaner::align_junctions() {
   for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, snap_tol_);
   // Where a group's move was refused, coordinates a hair apart would each pin a grid line a hair
   // from the other's: they align among themselves.
-  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, kCornerFraction * size_);
+  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, kHairFraction * size_);
   pins_ = junctions_;
   pins_.insert(pins_.end(), fixed.begin(), fixed.end());
 }

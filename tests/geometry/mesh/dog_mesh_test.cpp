@@ -6,6 +6,7 @@
 #include <random>
 #include <set>
 
+#include "base/errors.h"
 #include "geometry/mesh/dog_model.h"
 #include "tests/geometry/pattern_builders.h"
 
@@ -224,6 +225,22 @@ TEST(DogMesh, PatchesAreNumberedByTheirFirstCellInRowMajorOrder) {
   }
   // Patch 0 owns the bottom-left cell.
   EXPECT_EQ(m.fine.grid[m.fine.F(0, 0)], Eigen::Vector2i(0, 0));
+}
+
+// Eleven slanted creases crossed by one more: eleven junctions with distinct x and y, which the
+// coarse grid holds from 13 lines on (a fine grid of 25), and no earlier.
+TEST(DogMesh, TheLowestMeshingResolutionIsNarrowedDownBetweenSteps) {
+  std::vector<Polyline2> creases;
+  for (int i = 1; i <= 11; ++i) creases.push_back({{10.0 * i - 3, 0}, {10.0 * i + 3, 120}});
+  creases.push_back({{0, 4}, {120, 116}});
+  const CreasePattern p = rectangle_pattern(120, 120, creases);
+  EXPECT_THROW(build_dog_model(p, {23, 23}), UsageError);
+  EXPECT_NO_THROW(build_dog_model(p, {25, 25}));
+  // The steps from 9x9 are 13, 15, 19, 23 and 29 lines; halving between 23 and 29 finds 25.
+  const std::optional<Resolution> lowest = lowest_meshing_resolution(p, {9, 9});
+  ASSERT_TRUE(lowest);
+  EXPECT_EQ(lowest->nx, 25);
+  EXPECT_EQ(lowest->ny, 25);
 }
 
 }  // namespace
