@@ -244,8 +244,10 @@ void Cleaner::align_junctions() {
   const std::vector<Vec2> fixed = collect_junctions();
   for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, snap_tol_);
   // Where a group's move was refused, coordinates a hair apart would each pin a grid line a hair
-  // from the other's: they align among themselves.
-  for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, kHairFraction * size_);
+  // from the other's: they align among themselves, in groups within kHairFraction L, then (where
+  // such a group is refused too) within kCornerFraction L.
+  for (const double fraction : {kHairFraction, kCornerFraction})
+    for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, fraction * size_);
   pins_ = junctions_;
   pins_.insert(pins_.end(), fixed.begin(), fixed.end());
 }

@@ -25,6 +25,7 @@ const char* const kCorpus[] = {
     "parabola_pleats.svg",           "s_curve_pleats.svg",
     "twelve_wave_pleats.fold",       "v_pleat.fold",
     "crease_ending_inside.svg",      "slits_and_tab.svg",
+    "six_creases_at_a_point.svg",    "crossing_at_ten_degrees.svg",
 };
 
 // Held iterations at most after the targets stop moving.
