@@ -456,5 +456,28 @@ TEST(PatternCleaning, CreaseEndsAHairFromTheBoundingBoxMoveOntoIt) {
   EXPECT_GT(narrowest, 0.1) << "no grid column a hair wide (mesh units: a column is about 1)";
 }
 
+// A square sheet with a hole whose left edge leans a little, (49.7, 30) to (49.9, 70), clockwise.
+// Two creases end on that edge at x = 49.725 and 49.875 (fixed grid lines off the bounding box,
+// 30 units apart), and two pairs of creases meet at (50.1, 80) and (50.1005, 90) (fold tips).
+// Within L/400 the four x coordinates chain into a group with two fixed values, which stays; the
+// tips alone are within L/1000 of each other.
+TEST(PatternCleaning, HairPairsInsideARefusedWiderGroupStillAlign) {
+  CreasePattern p = sheet_with_creases({{0, 0}, {100, 0}, {100, 100}, {0, 100}},
+                                       {
+                                           {{{49.725, 35}, {0, 35}}, Fold::kMountain},
+                                           {{{49.875, 65}, {0, 65}}, Fold::kValley},
+                                           {{{0, 80}, {50.1, 80}}, Fold::kValley},
+                                           {{{100, 82}, {50.1, 80}}, Fold::kMountain},
+                                           {{{0, 92}, {50.1005, 90}}, Fold::kMountain},
+                                           {{{100, 92}, {50.1005, 90}}, Fold::kValley},
+                                       });
+  p.sheet.holes = {{{49.7, 30}, {60, 30}, {60, 70}, {49.9, 70}}};
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.junctions.size(), 2u);
+  EXPECT_EQ(c.junctions[0].x(), c.junctions[1].x()) << "the tips share one grid line";
+  const DogModel model = build_dog_model(p, {41, 41});
+  EXPECT_GT(narrowest_column(model), 0.01) << "no grid column a hair wide";
+}
+
 }  // namespace
 }  // namespace sdog
