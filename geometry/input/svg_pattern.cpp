@@ -76,6 +76,28 @@ std::vector<OpenCurve> split_off_slits(std::vector<OpenCurve>& open, double tol)
   return slits;
 }
 
+// Refuses a point where more than two open boundary or cut pieces end (within tol): a network of
+// lines, which has no single reading as closed loops. Names the point where most of them meet.
+void check_no_branch_points(const std::vector<OpenCurve>& open, double tol) {
+  int most = 2;
+  const OpenCurve* where = nullptr;
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  for (const OpenCurve& piece : open)
+    for (const Eigen::Vector2d& p : {piece.points.front(), piece.points.back()}) {
+      int pieces = 0;
+      for (const OpenCurve& other : open)
+        pieces +=
+            (other.points.front() - p).norm() <= tol || (other.points.back() - p).norm() <= tol;
+      if (pieces > most) most = pieces, where = &piece, at = p;
+    }
+  if (where)
+    throw InputError(where->origin + ": " + std::to_string(most) +
+                     " sheet boundary (black) or cut lines meet at " + format_point(at) +
+                     ": the boundary must be closed loops, each point on two of their lines, and "
+                     "lines branching off them (a network of cuts) are not read; draw the sheet as "
+                     "one closed outline and cuts inside it as lines with a free end (slits)");
+}
+
 // Chains open boundary curves end to end into closed loops: each continues with the piece whose
 // nearer end is nearest its end, within tol. Ends within snap_tol of each other are one point (the
 // piece's first point is dropped: a step that small would fold the boundary back over itself where
@@ -171,6 +193,7 @@ SortedCurves sort_curves(const SvgDrawing& drawing, double tol, double join_tol)
   if (out.loops.empty() && open_boundary.empty())
     for (const OpenCurve& s : out.slits)
       if (!s.cut) throw not_closed_error(s);
+  check_no_branch_points(open_boundary, join_tol);
   if (!open_boundary.empty()) {
     const std::string origin = open_boundary.front().origin;
     for (auto& loop : chain_into_loops(std::move(open_boundary), join_tol, tol)) {

@@ -259,5 +259,29 @@ TEST(BoundaryPieces, AGapWiderThanTheToleranceIsAnError) {
   }
 }
 
+TEST(BoundaryPieces, LinesThatBranchAreRefusedAtThePointWhereMostMeet) {
+  // A square drawn as four black lines and four more from its centre to its corners: three pieces
+  // end at each corner, four at the centre.
+  const std::string svg =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">"
+      "<line x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"100\" y1=\"0\" x2=\"100\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"100\" y1=\"100\" x2=\"0\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"0\" y1=\"100\" x2=\"0\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"50\" x2=\"0\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"50\" x2=\"100\" y2=\"0\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"50\" x2=\"100\" y2=\"100\" stroke=\"#000\"/>"
+      "<line x1=\"50\" y1=\"50\" x2=\"0\" y2=\"100\" stroke=\"#000\"/>"
+      "</svg>";
+  try {
+    crease_pattern_from_svg(parse_svg(svg, "t.svg"));
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("4 sheet boundary (black) or cut lines meet at (50, -50)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace sdog
