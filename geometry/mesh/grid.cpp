@@ -82,9 +82,13 @@ Resolution coarse_resolution(const Resolution& fine) {
 }
 
 AxisLayout layout_axis(double lo, double hi, int n, std::vector<double> pins) {
+  // Coordinates equal up to rounding (within kSameCoordinate of the span) share one line.
+  const double same = kSameCoordinate * (hi - lo);
+  std::sort(pins.begin(), pins.end());
   std::set<double> inner;
   for (double p : pins)
-    if (p > lo && p < hi) inner.insert(p);
+    if (p > lo + same && p < hi - same && (inner.empty() || p - *inner.rbegin() > same))
+      inner.insert(p);
   const int k = static_cast<int>(inner.size());
   if (k > n - 2)
     throw UsageError(std::to_string(n) + " grid lines cannot hold " + std::to_string(k) +

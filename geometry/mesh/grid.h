@@ -52,6 +52,8 @@ struct AxisLayout {
   std::vector<std::pair<int, double>> anchors;
 };
 
+/// Pins closer than this share of the span are one coordinate (rounding apart).
+constexpr double kSameCoordinate = 1e-9;
 /// Places `n` lines over [lo, hi] with every pin (strictly inside) on its own line, as near to
 /// its uniform position as the order of the pins allows. Throws UsageError when more distinct
 /// pins than the n - 2 inner lines.

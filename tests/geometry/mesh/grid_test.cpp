@@ -59,6 +59,15 @@ TEST(AxisLayout, PinTakesItsNearestLine) {
   EXPECT_EQ(a.anchors[2], (std::pair<int, double>{7, 6.6}));
 }
 
+TEST(AxisLayout, PinsEqualUpToRoundingShareALine) {
+  // Two junctions at one coordinate computed two ways (1e-12 apart) would make a row of width
+  // 1e-12, where the solver's first step is not finite.
+  const AxisLayout a = layout_axis(0, 10, 11, {3.4, 3.4 + 1e-12, 6.6});
+  ASSERT_EQ(a.anchors.size(), 4u);
+  EXPECT_EQ(a.anchors[1], (std::pair<int, double>{3, 3.4}));
+  EXPECT_EQ(a.anchors[2], (std::pair<int, double>{7, 6.6}));
+}
+
 TEST(AxisLayout, CrowdedPinsKeepOrderOnDistinctLines) {
   // Three pins that all round to line 5 spread to lines 4..6 or 5..7 but keep their order.
   const AxisLayout a = layout_axis(0, 10, 11, {5.1, 4.9, 5.0});
