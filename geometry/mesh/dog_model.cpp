@@ -54,14 +54,12 @@ void copy_folds(const CleanPattern& clean, DogMesh& mesh) {
   for (const FoldTip& tip : fold_tips(clean)) mesh.fold_tips.push_back(mesh.to_mesh(tip.point));
 }
 
-}  // namespace
-
-DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
-                         const MeshOptions& options) {
-  check_resolution(res, options.build_coarse);
+// build_dog_model from the pattern's cleaned form, which does not depend on the resolution.
+DogModel build_from_clean(const CreasePattern& pattern, CleanPattern clean, const Resolution& res,
+                          const MeshOptions& options) {
   DogModel m;
   m.pattern = pattern;
-  m.clean = clean_pattern(pattern, options.cleaning);
+  m.clean = std::move(clean);
   m.expected_patches = count_pattern_patches(m.clean);
   if (const int k = first_non_separating_crease(m.clean); k >= 0)
     throw InputError(
@@ -114,6 +112,14 @@ DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
   m.coarse_topology = quad_topology(m.coarse);
   m.map = build_fine_coarse_map(m.fine, m.coarse);
   return m;
+}
+
+}  // namespace
+
+DogModel build_dog_model(const CreasePattern& pattern, const Resolution& res,
+                         const MeshOptions& options) {
+  check_resolution(res, options.build_coarse);
+  return build_from_clean(pattern, clean_pattern(pattern, options.cleaning), res, options);
 }
 
 std::vector<std::string> model_warnings(const DogModel& model) {
@@ -173,9 +179,10 @@ std::optional<Resolution> lowest_meshing_resolution(const CreasePattern& pattern
   auto at = [&](double factor) {
     return Resolution{grown(from.nx, factor), grown(from.ny, factor)};
   };
+  const CleanPattern clean = clean_pattern(pattern, options.cleaning);  // once for every attempt
   auto meshes = [&](const Resolution& res) {
     try {
-      build_dog_model(pattern, res, options);
+      build_from_clean(pattern, clean, res, options);
       return true;
     } catch (const UsageError&) {
       return false;

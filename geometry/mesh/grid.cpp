@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <set>
 
 #include "base/errors.h"
 #include "base/text_format.h"
@@ -85,11 +84,10 @@ AxisLayout layout_axis(double lo, double hi, int n, std::vector<double> pins) {
   // Coordinates equal up to rounding (within kSameCoordinate of the span) share one line.
   const double same = kSameCoordinate * (hi - lo);
   std::sort(pins.begin(), pins.end());
-  std::set<double> inner;
+  std::vector<double> pin;  // distinct, ascending
   for (double p : pins)
-    if (p > lo + same && p < hi - same && (inner.empty() || p - *inner.rbegin() > same))
-      inner.insert(p);
-  const int k = static_cast<int>(inner.size());
+    if (p > lo + same && p < hi - same && (pin.empty() || p - pin.back() > same)) pin.push_back(p);
+  const int k = static_cast<int>(pin.size());
   if (k > n - 2)
     throw UsageError(std::to_string(n) + " grid lines cannot hold " + std::to_string(k) +
                      " junction coordinates between " + format_number(lo) + " and " +
@@ -99,7 +97,6 @@ AxisLayout layout_axis(double lo, double hi, int n, std::vector<double> pins) {
   // the least-squares nondecreasing fit (pool adjacent violators) of the pins' uniform positions
   // minus j + 1, rounded and clamped so every pin keeps a line strictly inside.
   const double h = (hi - lo) / (n - 1);
-  std::vector<double> pin(inner.begin(), inner.end());
   struct Block {
     double sum;
     int count;
