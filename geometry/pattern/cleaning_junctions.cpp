@@ -331,10 +331,16 @@ void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed, double tol) {
     size_t e = s + 1;
     while (e < items.size() && items[e].value - items[e - 1].value <= tol) ++e;
     if (const std::optional<double> target = group_target(items, s, e)) {
+      std::vector<AxisValue> refused;
       for (size_t i = s; i < e; ++i) {
         if (items[i].junction < 0 || items[i].value == *target) continue;
-        align_junction(items[i].junction, axis, *target);
+        if (!align_junction(items[i].junction, axis, *target)) refused.push_back(items[i]);
       }
+      // Junctions that cannot reach the group's fixed point align among themselves, or each
+      // would pin its own grid line a hair from the others'.
+      if (const auto own = group_target(refused, 0, refused.size()))
+        for (const AxisValue& r : refused)
+          if (r.value != *own) align_junction(r.junction, axis, *own);
     }
     s = e;
   }
@@ -342,17 +348,18 @@ void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed, double tol) {
 
 // Moves junction j's `axis` coordinate to `target` (in every crease), unless another junction
 // is already there or the creases through it would then cross others (in dense drawings the move
-// can reach past a neighbouring crease).
-void Cleaner::align_junction(int j, int axis, double target) {
+// can reach past a neighbouring crease); returns whether it moved.
+bool Cleaner::align_junction(int j, int axis, double target) {
   Vec2& jpt = junctions_[j];
   Vec2 moved = jpt;
   moved[axis] = target;
-  if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end()) return;
-  if (!move_keeps_creases_apart(jpt, moved)) return;
+  if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end()) return false;
+  if (!move_keeps_creases_apart(jpt, moved)) return false;
   log(std::string("junction ") + format_point(jpt) + " aligned in " + (axis == 0 ? "x" : "y") +
       " to " + format_number(target));
   replace_vertex(jpt, moved);
   jpt = moved;
+  return true;
 }
 
 }  // namespace sdog::cleaning

@@ -146,7 +146,7 @@ class Cleaner {
   void move_boundary_end(const Vec2& end, int axis, double target);
   std::vector<Vec2> collect_junctions();
   void align_axis(int axis, const std::vector<Vec2>& fixed, double tol);
-  void align_junction(int j, int axis, double target);
+  bool align_junction(int j, int axis, double target);
   bool move_keeps_creases_apart(const Vec2& from, const Vec2& to) const;
 
   // Step 6 (pattern_cleaning.cpp).
