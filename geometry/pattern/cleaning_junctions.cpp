@@ -55,12 +55,6 @@ void open_loop_between_passes(Polyline2& pts, std::vector<JunctionPass>& passes)
   }
 }
 
-// Step 5 helper: a coordinate of a junction (`junction` >= 0) or of a fixed boundary end (-1).
-struct AxisValue {
-  double value;
-  int junction;
-};
-
 // The value that the group items[s, e) of nearby coordinates aligns to: the fixed one when the
 // group has one, else the junctions' mean; none when the group holds nothing to move, a single
 // value, or two different fixed values.
@@ -241,7 +235,7 @@ void Cleaner::drop_degenerate_creases() {
 // Step 5: junctions and pins; align nearby junction coordinates.
 void Cleaner::align_junctions() {
   for (int axis = 0; axis < 2; ++axis) align_boundary_ends(axis);
-  const std::vector<Vec2> fixed = collect_junctions();
+  std::vector<Vec2> fixed = collect_junctions();
   for (int axis = 0; axis < 2; ++axis) align_axis(axis, fixed, snap_tol_);
   // Where a group's move was refused, coordinates a hair apart would each pin a grid line a hair
   // from the other's: they align among themselves, in groups within kHairFraction L, then (where
@@ -320,41 +314,73 @@ void Cleaner::move_boundary_end(const Vec2& end, int axis, double target) {
 }
 
 // Aligns the `axis` coordinates of junctions that lie within tol of each other (in chains).
-void Cleaner::align_axis(int axis, const std::vector<Vec2>& fixed, double tol) {
+void Cleaner::align_axis(int axis, std::vector<Vec2>& fixed, double tol) {
   std::vector<AxisValue> items;
   for (size_t j = 0; j < junctions_.size(); ++j)
     items.push_back({junctions_[j][axis], static_cast<int>(j)});
-  for (const auto& f : fixed) items.push_back({f[axis], -1});
+  for (size_t k = 0; k < fixed.size(); ++k)
+    items.push_back({fixed[k][axis], -1 - static_cast<int>(k)});
   std::sort(items.begin(), items.end(),
             [](const AxisValue& x, const AxisValue& y) { return x.value < y.value; });
   for (size_t s = 0; s < items.size();) {
     size_t e = s + 1;
     while (e < items.size() && items[e].value - items[e - 1].value <= tol) ++e;
-    if (const std::optional<double> target = group_target(items, s, e)) {
-      std::vector<AxisValue> refused;
-      for (size_t i = s; i < e; ++i) {
-        if (items[i].junction < 0 || items[i].value == *target) continue;
-        if (!align_junction(items[i].junction, axis, *target)) refused.push_back(items[i]);
-      }
-      // Junctions that cannot reach the group's fixed point align among themselves, or each
-      // would pin its own grid line a hair from the others'.
-      if (const auto own = group_target(refused, 0, refused.size()))
-        for (const AxisValue& r : refused)
-          if (r.value != *own) align_junction(r.junction, axis, *own);
-    }
+    align_group({items.begin() + s, items.begin() + e}, axis, fixed);
     s = e;
   }
+}
+
+// Aligns one group of nearby `axis` coordinates (see group_target). Where some junctions cannot
+// reach the group's fixed line but all reach their own mean, a hair (kCornerFraction L) from
+// it, the fixed end moves there instead, boundary vertex and all. Junctions that still cannot
+// reach the target align among themselves, or each would pin a grid line a hair from the others'.
+void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::vector<Vec2>& fixed) {
+  std::optional<double> target = group_target(group, 0, group.size());
+  if (!target) return;
+  std::vector<AxisValue> junctions;
+  std::vector<Vec2*> ends;
+  for (const AxisValue& g : group)
+    if (g.junction >= 0)
+      junctions.push_back(g);
+    else
+      ends.push_back(&fixed[-1 - g.junction]);
+  const double mean = group_target(junctions, 0, junctions.size()).value_or(junctions[0].value);
+  auto all_reach = [&](double t) {
+    return std::all_of(junctions.begin(), junctions.end(), [&](const AxisValue& g) {
+      return g.value == t || can_align_junction(g.junction, axis, t);
+    });
+  };
+  auto ends_reach = [&](double t) {
+    return std::all_of(ends.begin(), ends.end(), [&](const Vec2* q) {
+      Vec2 moved = *q;
+      moved[axis] = t;
+      return std::abs(t - (*q)[axis]) <= kCornerFraction * size_ &&
+             move_keeps_creases_apart(*q, moved);
+    });
+  };
+  if (!ends.empty() && !all_reach(*target) && all_reach(mean) && ends_reach(mean)) {
+    for (Vec2* q : ends) {
+      move_boundary_end(*q, axis, mean);
+      (*q)[axis] = mean;
+    }
+    target = mean;
+  }
+  std::vector<AxisValue> refused;
+  for (const AxisValue& g : junctions)
+    if (g.value != *target && !align_junction(g.junction, axis, *target)) refused.push_back(g);
+  if (const auto own = group_target(refused, 0, refused.size()))
+    for (const AxisValue& r : refused)
+      if (r.value != *own) align_junction(r.junction, axis, *own);
 }
 
 // Moves junction j's `axis` coordinate to `target` (in every crease), unless another junction
 // is already there or the creases through it would then cross others (in dense drawings the move
 // can reach past a neighbouring crease); returns whether it moved.
 bool Cleaner::align_junction(int j, int axis, double target) {
+  if (!can_align_junction(j, axis, target)) return false;
   Vec2& jpt = junctions_[j];
   Vec2 moved = jpt;
   moved[axis] = target;
-  if (std::find(junctions_.begin(), junctions_.end(), moved) != junctions_.end()) return false;
-  if (!move_keeps_creases_apart(jpt, moved)) return false;
   log(std::string("junction ") + format_point(jpt) + " aligned in " + (axis == 0 ? "x" : "y") +
       " to " + format_number(target));
   replace_vertex(jpt, moved);
@@ -366,8 +392,17 @@ bool Cleaner::align_junction(int j, int axis, double target) {
 
 namespace sdog::cleaning {
 
-// Would the crease segments at vertex `from`, moved to `to`, stay clear of every other crease and
-// boundary segment (touching only at shared vertices)?
+// Can junction j move to `axis` coordinate `target` (see align_junction)?
+bool Cleaner::can_align_junction(int j, int axis, double target) const {
+  Vec2 moved = junctions_[j];
+  moved[axis] = target;
+  return std::find(junctions_.begin(), junctions_.end(), moved) == junctions_.end() &&
+         move_keeps_creases_apart(junctions_[j], moved);
+}
+
+// Would the crease segments at vertex `from`, moved to `to` (with the boundary when `from` is a
+// boundary vertex), stay clear of every other crease and boundary segment (touching only at
+// shared vertices)?
 bool Cleaner::move_keeps_creases_apart(const Vec2& from, const Vec2& to) const {
   auto moved = [&](const Vec2& p) { return p == from ? to : p; };
   std::vector<std::pair<Vec2, Vec2>> changed, others;
@@ -380,7 +415,7 @@ bool Cleaner::move_keeps_creases_apart(const Vec2& from, const Vec2& to) const {
   }
   for (const auto& loop : loops_)
     for (size_t i = 0; i < loop.size(); ++i)
-      others.push_back({loop[i], loop[(i + 1) % loop.size()]});
+      others.push_back({moved(loop[i]), moved(loop[(i + 1) % loop.size()])});
   for (const auto& [a, b] : changed)
     for (const auto& [c, d] : others) {
       const bool shared = a == c || a == d || b == c || b == d;

@@ -71,6 +71,13 @@ struct JunctionPass {
   Vec2 junction;
 };
 
+/// One coordinate in junction alignment: of junction `junction` (>= 0) or of the fixed boundary
+/// end -1 - `junction` (< 0).
+struct AxisValue {
+  double value;
+  int junction;
+};
+
 /// The nearest point found for a free crease end on a polyline (a boundary loop or a crease).
 struct SnapCandidate {
   double distance = INFINITY;
@@ -145,7 +152,9 @@ class Cleaner {
   void align_boundary_ends(int axis);
   void move_boundary_end(const Vec2& end, int axis, double target);
   std::vector<Vec2> collect_junctions();
-  void align_axis(int axis, const std::vector<Vec2>& fixed, double tol);
+  void align_axis(int axis, std::vector<Vec2>& fixed, double tol);
+  void align_group(const std::vector<AxisValue>& group, int axis, std::vector<Vec2>& fixed);
+  bool can_align_junction(int j, int axis, double target) const;
   bool align_junction(int j, int axis, double target);
   bool move_keeps_creases_apart(const Vec2& from, const Vec2& to) const;
 

@@ -480,25 +480,49 @@ TEST(PatternCleaning, HairPairsInsideARefusedWiderGroupStillAlign) {
 }
 
 // A 100-unit sheet with a V-shaped bottom edge. A mountain runs up x = 49 from the slanted edge
-// (a fixed grid line), and two fold tips point at it from the right, at (49.06, 62) and
-// (49.08, 82). Moving a tip onto x = 49 would put it on the mountain, so both stay off it.
-TEST(PatternCleaning, JunctionsThatCannotReachTheirGroupsFixedLineAlignAmongThemselves) {
-  const CreasePattern p = sheet_with_creases({{0, 20}, {50, 0}, {100, 20}, {100, 100}, {0, 100}},
-                                             {
-                                                 {{{49, 0.4}, {49, 100}}, Fold::kMountain},
-                                                 {{{100, 57}, {49.06, 62}}, Fold::kMountain},
-                                                 {{{100, 67}, {49.06, 62}}, Fold::kValley},
-                                                 {{{100, 77}, {49.08, 82}}, Fold::kMountain},
-                                                 {{{100, 87}, {49.08, 82}}, Fold::kValley},
-                                             });
-  const CleanPattern c = clean_pattern(p);
-  ASSERT_EQ(c.junctions.size(), 2u);
-  EXPECT_EQ(c.junctions[0].x(), c.junctions[1].x()) << "the tips share one grid line";
-  EXPECT_NEAR(c.junctions[0].x(), 49.07, 1e-9) << "the tips' mean, off the mountain";
-  // Without their own alignment the tips pin lines 0.004 mesh units apart; with it the narrowest
-  // column lies between the mountain and the tips, as drawn.
-  EXPECT_GT(narrowest_column(build_dog_model(p, {41, 41})), 0.01) << "no grid column a hair wide";
+// (a fixed grid line), and two fold tips point at it from the right, at (tip, 62) and
+// (tip + 0.02, 82). Moving a tip onto x = 49 would put it on the mountain.
+CreasePattern tips_beside_a_mountain(double tip) {
+  return sheet_with_creases({{0, 20}, {50, 0}, {100, 20}, {100, 100}, {0, 100}},
+                            {
+                                {{{49, 0.4}, {49, 100}}, Fold::kMountain},
+                                {{{100, 57}, {tip, 62}}, Fold::kMountain},
+                                {{{100, 67}, {tip, 62}}, Fold::kValley},
+                                {{{100, 77}, {tip + 0.02, 82}}, Fold::kMountain},
+                                {{{100, 87}, {tip + 0.02, 82}}, Fold::kValley},
+                            });
 }
 
+// The x of the mountain's end on the slanted edge after cleaning.
+double mountain_end_x(const CleanPattern& c) {
+  for (const Crease& crease : c.creases)
+    for (const V2& q : {crease.points.front(), crease.points.back()})
+      if (q.y() < 1) return q.x();
+  return NAN;
+}
+
+TEST(PatternCleaning, AFixedEndAHairFromJunctionsThatCannotReachItMovesToThem) {
+  const CreasePattern p = tips_beside_a_mountain(49.06);
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.junctions.size(), 2u);
+  EXPECT_NEAR(c.junctions[0].x(), 49.07, 1e-9) << "the tips' mean";
+  EXPECT_EQ(c.junctions[1].x(), c.junctions[0].x());
+  EXPECT_EQ(mountain_end_x(c), c.junctions[0].x()) << "the end on the slanted edge follows";
+  // Without the move the tips pin lines 0.004 mesh units apart and 0.01 from the mountain's.
+  EXPECT_GT(narrowest_column(build_dog_model(p, {41, 41})), 0.1) << "no grid column a hair wide";
+}
+
+TEST(PatternCleaning, JunctionsThatCannotReachTheirGroupsFixedLineAlignAmongThemselves) {
+  // The tips' mean, 49.17, is more than L/1000 from the mountain's end: the end stays.
+  const CreasePattern p = tips_beside_a_mountain(49.16);
+  const CleanPattern c = clean_pattern(p);
+  ASSERT_EQ(c.junctions.size(), 2u);
+  EXPECT_NEAR(c.junctions[0].x(), 49.17, 1e-9) << "the tips' mean, off the mountain";
+  EXPECT_EQ(c.junctions[1].x(), c.junctions[0].x()) << "the tips share one grid line";
+  EXPECT_EQ(mountain_end_x(c), 49);
+  // Without their own alignment the tips pin lines 0.004 mesh units apart; with it the narrowest
+  // column lies between the mountain and the tips, as drawn.
+  EXPECT_GT(narrowest_column(build_dog_model(p, {41, 41})), 0.02) << "no grid column a hair wide";
+}
 }  // namespace
 }  // namespace sdog
