@@ -333,7 +333,8 @@ void Cleaner::align_axis(int axis, std::vector<Vec2>& fixed, double tol) {
 // Aligns one group of nearby `axis` coordinates (see group_target). Where some junctions cannot
 // reach the group's fixed line but all reach their own mean, a hair (kCornerFraction L) from
 // it, the fixed end moves there instead, boundary vertex and all. Junctions that still cannot
-// reach the target align among themselves, or each would pin a grid line a hair from the others'.
+// reach the target and lie a hair apart align among themselves, or each would pin a grid line a
+// hair from the others'.
 void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::vector<Vec2>& fixed) {
   std::optional<double> target = group_target(group, 0, group.size());
   if (!target) return;
@@ -368,9 +369,16 @@ void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::ve
   std::vector<AxisValue> refused;
   for (const AxisValue& g : junctions)
     if (g.value != *target && !align_junction(g.junction, axis, *target)) refused.push_back(g);
-  if (const auto own = group_target(refused, 0, refused.size()))
-    for (const AxisValue& r : refused)
-      if (r.value != *own) align_junction(r.junction, axis, *own);
+  // A hair apart: in chains within kCornerFraction L (a wide group's refused junctions stay).
+  for (size_t s = 0; s < refused.size();) {
+    size_t e = s + 1;
+    while (e < refused.size() && refused[e].value - refused[e - 1].value <= kCornerFraction * size_)
+      ++e;
+    if (const auto own = group_target(refused, s, e))
+      for (size_t i = s; i < e; ++i)
+        if (refused[i].value != *own) align_junction(refused[i].junction, axis, *own);
+    s = e;
+  }
 }
 
 // Moves junction j's `axis` coordinate to `target` (in every crease), unless another junction

@@ -481,15 +481,15 @@ TEST(PatternCleaning, HairPairsInsideARefusedWiderGroupStillAlign) {
 
 // A 100-unit sheet with a V-shaped bottom edge. A mountain runs up x = 49 from the slanted edge
 // (a fixed grid line), and two fold tips point at it from the right, at (tip, 62) and
-// (tip + 0.02, 82). Moving a tip onto x = 49 would put it on the mountain.
-CreasePattern tips_beside_a_mountain(double tip) {
+// (tip + gap, 82). Moving a tip onto x = 49 would put it on the mountain.
+CreasePattern tips_beside_a_mountain(double tip, double gap = 0.02) {
   return sheet_with_creases({{0, 20}, {50, 0}, {100, 20}, {100, 100}, {0, 100}},
                             {
                                 {{{49, 0.4}, {49, 100}}, Fold::kMountain},
                                 {{{100, 57}, {tip, 62}}, Fold::kMountain},
                                 {{{100, 67}, {tip, 62}}, Fold::kValley},
-                                {{{100, 77}, {tip + 0.02, 82}}, Fold::kMountain},
-                                {{{100, 87}, {tip + 0.02, 82}}, Fold::kValley},
+                                {{{100, 77}, {tip + gap, 82}}, Fold::kMountain},
+                                {{{100, 87}, {tip + gap, 82}}, Fold::kValley},
                             });
 }
 
@@ -523,6 +523,17 @@ TEST(PatternCleaning, JunctionsThatCannotReachTheirGroupsFixedLineAlignAmongThem
   // Without their own alignment the tips pin lines 0.004 mesh units apart; with it the narrowest
   // column lies between the mountain and the tips, as drawn.
   EXPECT_GT(narrowest_column(build_dog_model(p, {41, 41})), 0.02) << "no grid column a hair wide";
+}
+
+TEST(PatternCleaning, JunctionsThatCannotReachTheirGroupsFixedLineAndAreNotAHairApartStay) {
+  // The tips, 1.44 apart, are in one group with the mountain (within L/50) but not a hair apart:
+  // each keeps its drawn x (aligned to their mean they would move 0.72 each).
+  const CleanPattern c = clean_pattern(tips_beside_a_mountain(49.06, 1.44));
+  ASSERT_EQ(c.junctions.size(), 2u);
+  std::vector<double> xs = {c.junctions[0].x(), c.junctions[1].x()};
+  std::sort(xs.begin(), xs.end());
+  EXPECT_EQ(xs[0], 49.06);
+  EXPECT_EQ(xs[1], 50.5);
 }
 }  // namespace
 }  // namespace sdog
