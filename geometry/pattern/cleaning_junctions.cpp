@@ -55,6 +55,14 @@ void open_loop_between_passes(Polyline2& pts, std::vector<JunctionPass>& passes)
   }
 }
 
+// The end of the chain of items (sorted by value) that starts at s: each within tol of the one
+// before.
+size_t chain_end(const std::vector<AxisValue>& items, size_t s, double tol) {
+  size_t e = s + 1;
+  while (e < items.size() && items[e].value - items[e - 1].value <= tol) ++e;
+  return e;
+}
+
 // The value that the group items[s, e) of nearby coordinates aligns to: the fixed one when the
 // group has one, else the junctions' mean; none when the group holds nothing to move, a single
 // value, or two different fixed values.
@@ -322,11 +330,9 @@ void Cleaner::align_axis(int axis, std::vector<Vec2>& fixed, double tol) {
     items.push_back({fixed[k][axis], -1 - static_cast<int>(k)});
   std::sort(items.begin(), items.end(),
             [](const AxisValue& x, const AxisValue& y) { return x.value < y.value; });
-  for (size_t s = 0; s < items.size();) {
-    size_t e = s + 1;
-    while (e < items.size() && items[e].value - items[e - 1].value <= tol) ++e;
+  for (size_t s = 0, e; s < items.size(); s = e) {
+    e = chain_end(items, s, tol);
     align_group({items.begin() + s, items.begin() + e}, axis, fixed);
-    s = e;
   }
 }
 
@@ -370,14 +376,11 @@ void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::ve
   for (const AxisValue& g : junctions)
     if (g.value != *target && !align_junction(g.junction, axis, *target)) refused.push_back(g);
   // A hair apart: in chains within kCornerFraction L (a wide group's refused junctions stay).
-  for (size_t s = 0; s < refused.size();) {
-    size_t e = s + 1;
-    while (e < refused.size() && refused[e].value - refused[e - 1].value <= kCornerFraction * size_)
-      ++e;
+  for (size_t s = 0, e; s < refused.size(); s = e) {
+    e = chain_end(refused, s, kCornerFraction * size_);
     if (const auto own = group_target(refused, s, e))
       for (size_t i = s; i < e; ++i)
         if (refused[i].value != *own) align_junction(refused[i].junction, axis, *own);
-    s = e;
   }
 }
 
