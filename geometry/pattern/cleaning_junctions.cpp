@@ -269,10 +269,11 @@ std::vector<Vec2> Cleaner::collect_junctions() {
   return fixed;
 }
 
-// Crease ends on the boundary whose `axis` coordinates differ by a hair (all within kCornerFraction
+// Crease ends on the boundary whose `axis` coordinates differ by a hair (all within kHairFraction
 // L of the smallest), as in drawings whose vertices were rounded independently, move to
 // their mean: each would otherwise pin its own grid line beside the others'. Ends a hair from the
-// bounding box (a boundary drawn with a small jog) move onto it, where the grid has its outer line.
+// bounding box (within kCornerFraction L: a boundary drawn with a small jog) move onto it, where
+// the grid has its outer line.
 void Cleaner::align_boundary_ends(int axis) {
   const Box2& b = sheet_.bbox;
   std::set<std::pair<double, double>> seen;
@@ -300,7 +301,7 @@ void Cleaner::align_boundary_ends(int axis) {
             [axis](const Vec2& p, const Vec2& q) { return p[axis] < q[axis]; });
   for (size_t s = 0; s < ends.size();) {
     size_t e = s + 1;
-    while (e < ends.size() && ends[e][axis] - ends[s][axis] <= tol) ++e;
+    while (e < ends.size() && ends[e][axis] - ends[s][axis] <= kHairFraction * size_) ++e;
     if (ends[e - 1][axis] != ends[s][axis]) {
       double target = 0;
       for (size_t i = s; i < e; ++i) target += ends[i][axis] / static_cast<double>(e - s);

@@ -25,9 +25,9 @@ constexpr double kTouchFraction = 1e-6;
 /// A crease end this close (fraction of L) to a boundary vertex is meant to end on it.
 constexpr double kCornerFraction = 1e-3;
 /// Junction coordinates this close (fraction of L) align even where their group within snap_tol
-/// does not: each would pin its own grid line, and the column between two such lines is about a
-/// tenth of a cell wide at 81x81 (grid columns much narrower than their neighbours make the solver
-/// stretch them, then fail).
+/// does not, as do crease ends on the boundary: each would pin its own grid line, and the column
+/// between two such lines is about a tenth of a cell wide at 81x81 (grid columns much narrower than
+/// their neighbours make the solver stretch them, then fail).
 constexpr double kHairFraction = 2.5e-3;
 
 /// A point to insert into a polyline: `param` along segment `seg`.

@@ -271,20 +271,23 @@ TEST(PatternCleaning, PiecesShorterThanTheMergeToleranceJoinIntoOneCrease) {
 }
 
 TEST(PatternCleaning, BoundaryEndsAHairApartInXShareOneGridLine) {
-  // A hexagon whose two left vertices carry crease ends 0.04 units apart in x (L = 100): each
-  // would pin its own grid line a hair from the other's.
-  CreasePattern p = rectangle_pattern(100, 100, {{{15, 25}, {85, 25}}, {{15.04, 75}, {85, 75}}});
-  p.sheet.outer = {{0, 50},   {15, 25},  {30, 0},   {70, 0},
-                   {100, 50}, {70, 100}, {30, 100}, {15.04, 75}};
-  const CleanPattern c = clean_pattern(p);
-  ASSERT_EQ(c.creases.size(), 2u);
-  const V2 a = c.creases[0].points.front(), b = c.creases[1].points.front();
-  EXPECT_EQ(a.x(), b.x());
-  EXPECT_NEAR(a.x(), 15.02, 1e-12);
-  for (const V2& q : {a, b})
-    EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), q), c.sheet.outer.end())
-        << "the boundary vertex moved with the crease end";
-  EXPECT_EQ(c.creases[0].points.back(), V2(85, 25)) << "ends far apart stay where drawn";
+  // A hexagon whose two left vertices carry crease ends d units apart in x (L = 100): each would
+  // pin its own grid line a hair from the other's. Up to L/400 apart they align.
+  for (const double d : {0.04, 0.2}) {
+    SCOPED_TRACE(d);
+    CreasePattern p = rectangle_pattern(100, 100, {{{15, 25}, {85, 25}}, {{15 + d, 75}, {85, 75}}});
+    p.sheet.outer = {{0, 50},   {15, 25},  {30, 0},   {70, 0},
+                     {100, 50}, {70, 100}, {30, 100}, {15 + d, 75}};
+    const CleanPattern c = clean_pattern(p);
+    ASSERT_EQ(c.creases.size(), 2u);
+    const V2 a = c.creases[0].points.front(), b = c.creases[1].points.front();
+    EXPECT_EQ(a.x(), b.x());
+    EXPECT_NEAR(a.x(), 15 + d / 2, 1e-12);
+    for (const V2& q : {a, b})
+      EXPECT_NE(std::find(c.sheet.outer.begin(), c.sheet.outer.end(), q), c.sheet.outer.end())
+          << "the boundary vertex moved with the crease end";
+    EXPECT_EQ(c.creases[0].points.back(), V2(85, 25)) << "ends far apart stay where drawn";
+  }
 }
 
 TEST(PatternCleaning, EndsAHairFromABoundaryVertexMoveOntoIt) {
