@@ -14,6 +14,12 @@
 namespace sdog::cleaning {
 namespace {
 
+// p with its `axis` coordinate set to t.
+Vec2 with_coordinate(Vec2 p, int axis, double t) {
+  p[axis] = t;
+  return p;
+}
+
 // Cumulative arc length at each vertex of every crease (for closed ones also back at the start).
 std::vector<std::vector<double>> crease_arc_lengths(const std::vector<Crease>& creases) {
   std::vector<std::vector<double>> arc(creases.size());
@@ -314,8 +320,7 @@ void Cleaner::align_boundary_ends(int axis) {
 // Moves the crease end `end` on the boundary to `axis` coordinate `target`, in the creases and the
 // boundary loops.
 void Cleaner::move_boundary_end(const Vec2& end, int axis, double target) {
-  Vec2 moved = end;
-  moved[axis] = target;
+  const Vec2 moved = with_coordinate(end, axis, target);
   log("boundary point " + format_point(end) + " aligned in " + (axis == 0 ? "x" : "y") + " to " +
       format_number(target));
   replace_vertex(end, moved);
@@ -360,10 +365,8 @@ void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::ve
   };
   auto ends_reach = [&](double t) {
     return std::all_of(ends.begin(), ends.end(), [&](const Vec2* q) {
-      Vec2 moved = *q;
-      moved[axis] = t;
       return std::abs(t - (*q)[axis]) <= kCornerFraction * size_ &&
-             move_keeps_creases_apart(*q, moved);
+             move_keeps_creases_apart(*q, with_coordinate(*q, axis, t));
     });
   };
   if (!ends.empty() && !all_reach(*target) && all_reach(mean) && ends_reach(mean)) {
@@ -391,8 +394,7 @@ void Cleaner::align_group(const std::vector<AxisValue>& group, int axis, std::ve
 bool Cleaner::align_junction(int j, int axis, double target) {
   if (!can_align_junction(j, axis, target)) return false;
   Vec2& jpt = junctions_[j];
-  Vec2 moved = jpt;
-  moved[axis] = target;
+  const Vec2 moved = with_coordinate(jpt, axis, target);
   log(std::string("junction ") + format_point(jpt) + " aligned in " + (axis == 0 ? "x" : "y") +
       " to " + format_number(target));
   replace_vertex(jpt, moved);
@@ -406,8 +408,7 @@ namespace sdog::cleaning {
 
 // Can junction j move to `axis` coordinate `target` (see align_junction)?
 bool Cleaner::can_align_junction(int j, int axis, double target) const {
-  Vec2 moved = junctions_[j];
-  moved[axis] = target;
+  const Vec2 moved = with_coordinate(junctions_[j], axis, target);
   return std::find(junctions_.begin(), junctions_.end(), moved) == junctions_.end() &&
          move_keeps_creases_apart(junctions_[j], moved);
 }
