@@ -61,6 +61,7 @@ DogModel build_model(const PatternOptions& o, bool warn) {
   mesh_options.cleaning.snap_fraction = o.snap_fraction;
   mesh_options.cleaning.adapt = !o.tolerances_given;
   mesh_options.build_coarse = !o.fine_only;
+  mesh_options.coarse = o.coarse;
   if (const std::string msg = mesh_options.cleaning.validate(); !msg.empty()) throw UsageError(msg);
   if (o.res != "auto") check_resolution(parse_resolution(o.res), mesh_options.build_coarse);
   SvgReadOptions svg;

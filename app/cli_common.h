@@ -18,6 +18,7 @@ struct PatternOptions {
   double snap_fraction = 0.02;
   bool tolerances_given = false;  ///< --merge-tol or --snap-tol was given: cleaning does not adapt
   bool fine_only = false;
+  CoarseKind coarse = CoarseKind::kStandard;  ///< sdog mesh --coarse
 };
 
 /// Adds PATTERN.svg, --res, --flatness, --merge-tol, --snap-tol, --fine-only to a subcommand

@@ -6,6 +6,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "base/atomic_output.h"
+#include "base/errors.h"
 #include "base/text_format.h"
 #include "geometry/input/fold_writer.h"
 #include "ui/vis/model_files.h"
@@ -18,6 +19,7 @@ struct MeshArgs {
   std::string out;
   bool json = false;
   bool verbose = false;
+  std::string coarse = "standard";
 };
 
 nlohmann::json classes_json(const QuadTopology& t) {
@@ -72,11 +74,18 @@ nlohmann::json summary_json(const DogModel& m, double seconds,
       {"outputs", files}};
   if (m.has_coarse) {
     j["coarse"] = mesh_json(m.coarse, m.coarse_topology, m.coarse_res);
+    j["coarse"]["kind"] = enum_name(m.coarse_kind);
+    const CurveCoverage cover = curve_coverage(m.map);
     j["map"] = {{"link", m.map.link_count},
                 {"I", m.map.i_count},
                 {"X", m.map.x_count},
                 {"coarse_only", m.map.coarse_only_count},
-                {"coarse_cover_cells", m.coarse_cover_cells}};
+                {"coarse_cover_cells", m.coarse_cover_cells},
+                {"uncovered", m.map.uncovered_count},
+                {"crease_points",
+                 {{"kept", cover.kept},
+                  {"interpolated", cover.interpolated},
+                  {"uninterpolable", cover.uninterpolable}}}};
   }
   return j;
 }
@@ -116,12 +125,20 @@ void print_summary(std::ostream& os, const DogModel& m, double seconds,
     for (const auto& c : m.clean.changes) os << "  cleaning:   " << c << "\n";
   print_mesh(os, "fine          ", m.fine, m.fine_topology, m.fine_res);
   if (m.has_coarse) {
-    print_mesh(os, "coarse        ", m.coarse, m.coarse_topology, m.coarse_res);
+    const bool alt = m.coarse_kind == CoarseKind::kAlt;
+    print_mesh(os, alt ? "coarse alt    " : "coarse        ", m.coarse, m.coarse_topology,
+               m.coarse_res);
     os << "map           link " << m.map.link_count << ", I " << m.map.i_count << ", X "
        << m.map.x_count << ", coarse-only " << m.map.coarse_only_count;
     if (m.coarse_cover_cells > 0)
       os << " (" << m.coarse_cover_cells
          << " coarse cells added so coarse patches cover fine ones)";
+    if (alt) os << "; fine vertices the coarse mesh does not reach " << m.map.uncovered_count;
+    os << "\n";
+    const CurveCoverage cover = curve_coverage(m.map);
+    os << "crease points kept by the coarse mesh " << cover.kept << ", interpolated between kept "
+       << "ones " << cover.interpolated << ", not interpolable " << cover.uninterpolable;
+    if (cover.uninterpolable > 0) os << " (before a crease's first or after its last kept point)";
     os << "\n";
   }
   os << "time          " << format_number(seconds) << " s\n";
@@ -137,6 +154,12 @@ void register_mesh_command(CLI::App& app, Runner& run) {
       "Build the fine DOG, its coarse twin and the map between them; print the counts and "
       "optionally write VTK files");
   add_pattern_options(*cmd, args->pattern);
+  cmd->add_option("--coarse", args->coarse,
+                  "the coarse DOG: standard (meshed from the crease pattern on the coarse grid) "
+                  "or alt (the fine DOG without every second grid row and column: every coarse "
+                  "vertex a link, crease ends not kept)")
+      ->check(CLI::IsMember(enum_names<CoarseKind>()))
+      ->capture_default_str();
   cmd->add_option(
       "--out", args->out,
       "directory for fine.vtu, coarse.vtu, creases.vtp, pattern.vtp (created if needed)");
@@ -145,6 +168,9 @@ void register_mesh_command(CLI::App& app, Runner& run) {
   cmd->callback([args, &run]() {
     run = [args]() {
       const auto start = std::chrono::steady_clock::now();
+      args->pattern.coarse = parse_enum<CoarseKind>(args->coarse, "--coarse: ");
+      if (args->pattern.coarse == CoarseKind::kAlt && args->pattern.fine_only)
+        throw UsageError("--coarse alt builds a coarse DOG and --fine-only builds none; give one");
       const DogModel model = build_model(args->pattern, false);  // the summary lists the warnings
       const double seconds = seconds_since(start);
       std::vector<std::string> files;

@@ -5,6 +5,7 @@
 
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "geometry/mesh/alt_coarse.h"
 #include "geometry/pattern/fold_tips.h"
 #include "geometry/pattern/pattern_faces.h"
 
@@ -99,6 +100,13 @@ DogModel build_from_clean(const CreasePattern& pattern, CleanPattern clean, cons
 
   m.has_coarse = true;
   m.coarse_res = coarse_resolution(res);
+  if (options.coarse == CoarseKind::kAlt) {
+    m.coarse_kind = CoarseKind::kAlt;
+    m.coarse = build_alt_coarse_mesh(m.fine);
+    m.coarse_topology = quad_topology(m.coarse);
+    m.map = build_alt_fine_coarse_map(m.fine, m.coarse);
+    return m;
+  }
   AxisLayout cx = fx, cy = fy;
   cx.n = m.coarse_res.nx;
   cy.n = m.coarse_res.ny;

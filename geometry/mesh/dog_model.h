@@ -3,6 +3,8 @@
 // them: the whole geometry pipeline in one call.
 #include <optional>
 
+#include "base/enum_names.h"
+
 #include "geometry/mesh/dog_mesh.h"
 #include "geometry/mesh/fine_coarse_map.h"
 #include "geometry/mesh/grid.h"
@@ -12,9 +14,22 @@
 
 namespace sdog {
 
+/// How the coarse DOG is made: meshed from the crease pattern on the coarse grid (standard), or
+/// the fine DOG without every second grid row and column (alt, alt_coarse.h).
+enum class CoarseKind { kStandard, kAlt };
+template <>
+struct EnumNames<CoarseKind> {
+  static constexpr const char* noun = "coarse DOG";
+  static constexpr EnumName<CoarseKind> rows[] = {
+      {CoarseKind::kStandard, "standard"},
+      {CoarseKind::kAlt, "alt"},
+  };
+};
+
 struct MeshOptions {
   CleaningOptions cleaning;
   bool build_coarse = true;  ///< also build the coarse DOG and the map (needs odd resolutions)
+  CoarseKind coarse = CoarseKind::kStandard;
 };
 
 struct DogModel {
@@ -26,6 +41,7 @@ struct DogModel {
   QuadTopology fine_topology;
   std::vector<Polyline2> fine_boundary;  ///< snapped sheet boundary, mesh units
   bool has_coarse = false;
+  CoarseKind coarse_kind = CoarseKind::kStandard;
   Resolution coarse_res;
   DogMesh coarse;
   QuadTopology coarse_topology;

@@ -129,17 +129,6 @@ void map_vertices(const DogMesh& fine, const DogMesh& coarse, FineCoarseMap& map
   }
 }
 
-// The number of vertices of each type.
-void count_types(FineCoarseMap& map) {
-  for (auto t : map.fine_type) {
-    if (t == VertexType::kLink) ++map.link_count;
-    if (t == VertexType::kI) ++map.i_count;
-    if (t == VertexType::kX) ++map.x_count;
-  }
-  map.coarse_only_count = static_cast<int>(
-      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::kCoarseOnly));
-}
-
 // The fine index of each coarse point of a curve, in order: the first fine point after the
 // previous match within tol of it. Fewer than the coarse points when one has no match.
 std::vector<int> matching_points(const CreaseStitching::Curve& fc, const CreaseStitching& fs,
@@ -162,43 +151,21 @@ std::vector<FineCoarseMap::CurvePoint> map_curve(const CreaseStitching& fs,
                                                  const CreaseStitching& cs, size_t k, double tol) {
   const auto& fc = fs.curves[k];
   const auto& cc = cs.curves[k];
-  std::vector<FineCoarseMap::CurvePoint> out(fc.points.size());
   std::vector<int> coarse_at = matching_points(fc, fs, cc, cs, tol);
   if (coarse_at.size() != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
     coarse_at = matching_points(fc, fs, cc, cs, 2 * kVertexCreaseDistance);
   if (coarse_at.size() != cc.points.size() || coarse_at.empty() || coarse_at.front() != 0)
     throw std::logic_error("coarse crease " + std::to_string(k) +
                            " is not a subset of the fine one");
-  for (size_t c = 0; c < coarse_at.size(); ++c) {
-    out[coarse_at[c]].coarse = static_cast<int>(c);
-    out[coarse_at[c]].segment = static_cast<int>(c);
-  }
-  const auto s = arc_lengths(fs, fc);
-  const int nfp = static_cast<int>(fc.points.size());
-  if (fc.closed) coarse_at.push_back(nfp);  // the loop returns to its first point
-  for (size_t m = 0; m + 1 < coarse_at.size(); ++m) {
-    const int a = coarse_at[m], b = coarse_at[m + 1];
-    for (int f = a + 1; f < b; ++f) {
-      out[f].segment = static_cast<int>(m);
-      out[f].fraction = (s[f] - s[a]) / (s[b] - s[a]);
-    }
-  }
-  return out;
+  return interpolated_curve(fs, fc, coarse_at);
 }
 
 }  // namespace
 
 FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) {
-  const int nf = fine.vertex_count(), nc = coarse.vertex_count();
-  FineCoarseMap map;
-  map.fine_type.assign(nf, VertexType::kX);
-  map.coarse_type.assign(nc, VertexType::kCoarseOnly);
-  map.fine_to_coarse.assign(nf, -1);
-  map.coarse_to_fine.assign(nc, -1);
-  map.fine_to_coarse_edge.assign(nf, {-1, -1});
-  map.fine_to_coarse_quad.assign(nf, -1);
+  FineCoarseMap map = unmapped(fine.vertex_count(), coarse.vertex_count(), VertexType::kCoarseOnly);
   map_vertices(fine, coarse, map);
-  count_types(map);
+  count_vertex_types(map);
 
   // Crease curves: coarse crease points are fine crease points at the same flat position.
   const auto& fs = fine.stitching;
@@ -209,6 +176,65 @@ FineCoarseMap build_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) 
       1e-9 * std::max(fine.xs.back() - fine.xs.front(), fine.ys.back() - fine.ys.front());
   for (size_t k = 0; k < fs.curves.size(); ++k) map.curves.push_back(map_curve(fs, cs, k, tol));
   return map;
+}
+
+std::vector<FineCoarseMap::CurvePoint> interpolated_curve(const CreaseStitching& fine,
+                                                          const CreaseStitching::Curve& curve,
+                                                          const std::vector<int>& coarse_at) {
+  const int n = static_cast<int>(curve.points.size());
+  std::vector<FineCoarseMap::CurvePoint> out(n);
+  for (size_t c = 0; c < coarse_at.size(); ++c) {
+    out[coarse_at[c]].coarse = static_cast<int>(c);
+    out[coarse_at[c]].segment = static_cast<int>(c);
+  }
+  const auto s = arc_lengths(fine, curve);  // closed: s[n] is the whole loop
+  auto arc = [&](int f) { return f < n ? s[f] : s[n] + s[f - n]; };
+  std::vector<int> at = coarse_at;
+  if (curve.closed && !at.empty()) at.push_back(at.front() + n);  // back to the first kept point
+  for (size_t m = 0; m + 1 < at.size(); ++m) {
+    const int a = at[m], b = at[m + 1];
+    for (int f = a + 1; f < b; ++f) {
+      out[f % n].segment = static_cast<int>(m);
+      out[f % n].fraction = (arc(f) - arc(a)) / (arc(b) - arc(a));
+    }
+  }
+  return out;
+}
+
+FineCoarseMap unmapped(int fine_vertices, int coarse_vertices, VertexType coarse_type) {
+  FineCoarseMap map;
+  map.fine_type.assign(fine_vertices, VertexType::kX);
+  map.coarse_type.assign(coarse_vertices, coarse_type);
+  map.fine_to_coarse.assign(fine_vertices, -1);
+  map.coarse_to_fine.assign(coarse_vertices, -1);
+  map.fine_to_coarse_edge.assign(fine_vertices, {-1, -1});
+  map.fine_to_coarse_quad.assign(fine_vertices, -1);
+  return map;
+}
+
+void count_vertex_types(FineCoarseMap& map) {
+  map.link_count = map.i_count = map.x_count = 0;
+  for (auto t : map.fine_type) {
+    if (t == VertexType::kLink) ++map.link_count;
+    if (t == VertexType::kI) ++map.i_count;
+    if (t == VertexType::kX) ++map.x_count;
+  }
+  map.coarse_only_count = static_cast<int>(
+      std::count(map.coarse_type.begin(), map.coarse_type.end(), VertexType::kCoarseOnly));
+}
+
+CurveCoverage curve_coverage(const FineCoarseMap& map) {
+  CurveCoverage c;
+  for (const auto& curve : map.curves)
+    for (const auto& p : curve) {
+      if (p.coarse >= 0)
+        ++c.kept;
+      else if (p.segment >= 0)
+        ++c.interpolated;
+      else
+        ++c.uninterpolable;
+    }
+  return c;
 }
 
 }  // namespace sdog

@@ -41,6 +41,8 @@ struct FineCoarseMap {
   /// or passes a grid vertex as different points, the fine point within 2 kVertexCreaseDistance
   /// of the coarse one stands for it); otherwise the point lies between coarse points `segment` and
   /// `segment + 1` (cyclically for closed curves) at arc-length fraction `fraction` in (0, 1).
+  /// Segment -1: no coarse point lies on one side of it along an open crease (the alternative
+  /// coarse DOG, alt_coarse.h, keeps no crease end), so nothing interpolates it.
   struct CurvePoint {
     int coarse = -1;
     int segment = -1;
@@ -49,7 +51,30 @@ struct FineCoarseMap {
   std::vector<std::vector<CurvePoint>> curves;
 
   int link_count = 0, i_count = 0, x_count = 0, coarse_only_count = 0;
+  /// Fine vertices without their coarse vertex, edge or quad (the alternative coarse DOG only).
+  int uncovered_count = 0;
 };
+
+/// A map of the given sizes with nothing mapped: every fine vertex X without a coarse quad, every
+/// coarse vertex of `coarse_type` without a fine twin.
+FineCoarseMap unmapped(int fine_vertices, int coarse_vertices, VertexType coarse_type);
+
+/// Sets the link, I, X and coarse-only counts from the vertex types.
+void count_vertex_types(FineCoarseMap& map);
+
+/// How the coarse curves cover the fine crease points, counted along every crease (a junction once
+/// per crease through it): kept as coarse points, interpolated between two, or neither.
+struct CurveCoverage {
+  int kept = 0, interpolated = 0, uninterpolable = 0;
+};
+CurveCoverage curve_coverage(const FineCoarseMap& map);
+
+/// The map of fine crease curve `curve` given the indices along it of the points that the coarse
+/// curve keeps, in order: those get their coarse index, the points between two kept ones their
+/// arc-length fraction (cyclically for a closed curve), the others of an open curve segment -1.
+std::vector<FineCoarseMap::CurvePoint> interpolated_curve(const CreaseStitching& fine,
+                                                          const CreaseStitching::Curve& curve,
+                                                          const std::vector<int>& coarse_at);
 
 /// Coarse patch ids that match the fine ones: result[c] is the fine patch that coarse patch c
 /// covers (most shared cells). Throws UsageError when this is not one to one.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "geometry/input/pattern_file.h"
@@ -124,6 +125,53 @@ TEST(MeshCommand, OutWritesTheVtkFilesAndThePatternAsFold) {
   EXPECT_EQ(nlohmann::json::parse(back.out)["fine"], nlohmann::json::parse(first.out)["fine"]);
 }
 
+// one_curve's crease meets the sheet boundary at both ends; the alternative coarse DOG keeps
+// neither end (the thesis's observation), so some of its fine crease points cannot be interpolated.
+TEST(MeshCommand, CoarseAltBuildsTheFineDogWithoutEverySecondRowAndColumn) {
+  const std::string dir = test::temp_dir("mesh_alt");
+  const std::string pattern = test::dataset("one_curve.svg");
+  const auto r =
+      test::run_sdog("mesh " + pattern + " --res 41x27 --coarse alt --json --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["coarse"]["kind"], "alt");
+  EXPECT_EQ(j["coarse"]["resolution"], "21x14");
+  EXPECT_EQ(j["map"]["coarse_only"], 0);
+  EXPECT_EQ(j["map"]["link"], j["coarse"]["vertices"]) << "every coarse vertex is a link";
+  const DogModel standard = build_dog_model(read_crease_pattern(pattern), {41, 27});
+  EXPECT_EQ(j["fine"], nlohmann::json::parse(
+                           test::run_sdog("mesh " + pattern + " --res 41x27 --json").out)["fine"])
+      << "the fine DOG does not depend on the coarse one";
+  const auto& points = j["map"]["crease_points"];
+  size_t fine_points = 0;
+  for (const auto& curve : standard.fine.stitching.curves) fine_points += curve.points.size();
+  EXPECT_EQ(points["kept"].get<size_t>() + points["interpolated"].get<size_t>() +
+                points["uninterpolable"].get<size_t>(),
+            fine_points);
+  EXPECT_GT(points["kept"].get<int>(), 0);
+  EXPECT_GT(points["uninterpolable"].get<int>(), 0);
+  EXPECT_EQ(j["coarse"]["crease_points"], points["kept"]);
+  // creases.vtp marks each crease point: kept, interpolated or not interpolable.
+  std::ifstream vtp(dir + "/creases.vtp");
+  const std::string text((std::istreambuf_iterator<char>(vtp)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Name=\"coarse_point\""), std::string::npos);
+
+  const auto summary = test::run_sdog("mesh " + pattern + " --res 41x27 --coarse alt");
+  ASSERT_EQ(summary.code, 0) << summary.err;
+  for (const char* words : {"coarse alt", "coarse-only 0",
+                            "fine vertices the coarse mesh does "
+                            "not reach",
+                            "not interpolable"})
+    EXPECT_NE(summary.out.find(words), std::string::npos) << words << " missing in\n"
+                                                          << summary.out;
+  const auto wrong = test::run_sdog("mesh " + pattern + " --res 41x27 --coarse thesis");
+  EXPECT_EQ(wrong.code, 2);
+  EXPECT_NE(wrong.err.find("--coarse"), std::string::npos) << wrong.err;
+  const auto both = test::run_sdog("mesh " + pattern + " --res 41x27 --coarse alt --fine-only");
+  EXPECT_EQ(both.code, 2);
+  EXPECT_NE(both.err.find("--fine-only"), std::string::npos) << both.err;
+}
+
 TEST(MeshCommand, FineOnlyAcceptsEvenResolutions) {
   const auto r =
       test::run_sdog("mesh " + test::dataset("one_curve.svg") + " --res 30x20 --fine-only --json");
@@ -140,7 +188,7 @@ TEST(MeshCommand, HelpExplainsEveryOption) {
   const auto r = test::run_sdog("mesh --help");
   EXPECT_EQ(r.code, 0);
   for (const char* opt : {"PATTERN", "--res", "--out", "--json", "--fine-only", "--flatness",
-                          "--merge-tol", "--snap-tol"})
+                          "--merge-tol", "--snap-tol", "--coarse"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 

@@ -1,6 +1,8 @@
 #include "ui/vis/model_files.h"
 #include <limits>
 
+#include <vtkPointData.h>
+
 #include "geometry/surface/mesh_arrays.h"
 #include "ui/vis/vtk_meshes.h"
 
@@ -14,6 +16,19 @@ Polyline3 lifted(const DogMesh& mesh, const Polyline2& sheet_points, bool closed
     out.emplace_back(m.x(), m.y(), 0.0);
   }
   if (closed && !out.empty()) out.push_back(out.front());
+  return out;
+}
+
+// Per point of the crease polylines (closed ones repeat their first point): 1 where the coarse
+// curve has it, 0 where it is interpolated between two coarse points, -1 where it cannot be.
+std::vector<double> coarse_points(const DogModel& model) {
+  std::vector<double> out;
+  const CreaseStitching& st = model.fine.stitching;
+  for (size_t k = 0; k < st.curves.size(); ++k) {
+    const auto& curve = model.map.curves[k];
+    for (const auto& p : curve) out.push_back(p.coarse >= 0 ? 1 : p.segment >= 0 ? 0 : -1);
+    if (st.curves[k].closed && !curve.empty()) out.push_back(out[out.size() - curve.size()]);
+  }
   return out;
 }
 
@@ -43,7 +58,10 @@ void write_model_files(const DogModel& model, OutputSet& out) {
     angle.values.push_back(c.angle ? fold_sign(c.fold) * *c.angle
                                    : std::numeric_limits<double>::quiet_NaN());
   }
-  write_vtp(polylines(creases, {index, closed, assignment, angle}), out.temporary("creases.vtp"));
+  auto crease_lines = polylines(creases, {index, closed, assignment, angle});
+  if (model.has_coarse)
+    set_double_array(crease_lines->GetPointData(), "coarse_point", coarse_points(model));
+  write_vtp(crease_lines, out.temporary("creases.vtp"));
 
   std::vector<Polyline3> curves;
   NamedArray kind{"kind", {}, true}, which{"index", {}, true}, fold{"assignment", {}, true};

@@ -9,16 +9,13 @@
 #include "base/errors.h"
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
+#include "tests/geometry/mesh/mesh_assets.h"
 #include "tests/test_support.h"
 
 namespace sdog {
 namespace {
 
-struct Asset {
-  std::string path;
-  Resolution res;
-  friend void PrintTo(const Asset& a, std::ostream* os) { *os << a.path << " " << a.res.str(); }
-};
+using Asset = test::MeshAsset;
 
 std::vector<Asset> assets() {
   std::vector<Asset> out;
@@ -198,14 +195,7 @@ TEST_P(MapInvariants, CoarseCreasePointsAreFineOnesWithMonotoneFractions) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllAssets, MapInvariants, ::testing::ValuesIn(assets()),
-                         [](const auto& info) {
-                           std::string name =
-                               std::filesystem::path(info.param.path).stem().string() + "_" +
-                               info.param.res.str();
-                           for (auto& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+                         [](const auto& info) { return test::asset_name(info.param); });
 
 TEST(ReferencePatterns, EveryPatternBuildsOrFailsWithAClearMessage) {
   SDOG_REQUIRE_SHARED();
