@@ -108,8 +108,8 @@ void add_quad_pieces(const DogMesh& fine, DogMesh& coarse) {
         };
         const auto it = pieces.find(fine_quad.at({p, i, j}));
         if (it == pieces.end()) {
-          out.push_back({q, {to_coarse({0, 0}), to_coarse({1, 0}), to_coarse({1, 1}),
-                             to_coarse({0, 1})}});
+          out.push_back(
+              {q, {to_coarse({0, 0}), to_coarse({1, 0}), to_coarse({1, 1}), to_coarse({0, 1})}});
           continue;
         }
         cut = true;

@@ -1,6 +1,8 @@
 #include "solver/multilevel/curve_interpolation.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace sdog {
 
@@ -60,6 +62,9 @@ std::vector<std::vector<CurveStencil>> coarse_curve_stencils(const DogModel& mod
         st.points[0] = curve.points[cp.coarse];
         st.weights[0] = 1;
       } else {
+        if (cp.segment < 0)  // the alternative coarse DOG (alt_coarse.h) keeps no crease end
+          throw std::logic_error("fine crease point of crease " + std::to_string(c) +
+                                 " has no coarse points to interpolate between");
         const double u =
             param(cp.segment) + cp.fraction * (param(cp.segment + 1) - param(cp.segment));
         int first = cp.segment - (m - 1) / 2;  // nodes around the segment

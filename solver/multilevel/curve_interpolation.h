@@ -18,7 +18,8 @@ struct CurveStencil {
   int count = 0;
 };
 
-/// stencils[c][k]: fine crease point k of curve c (the order of model.map.curves).
+/// stencils[c][k]: fine crease point k of curve c (the order of model.map.curves). Throws
+/// std::logic_error for a point that the map cannot interpolate (segment -1).
 std::vector<std::vector<CurveStencil>> coarse_curve_stencils(const DogModel& model);
 
 /// Position of crease point `point` of `mesh` at positions X: the mean of its copies.

@@ -9,8 +9,8 @@
 
 #include "geometry/input/pattern_file.h"
 #include "geometry/mesh/dog_model.h"
-#include "tests/geometry/pattern_builders.h"
 #include "tests/geometry/mesh/mesh_assets.h"
+#include "tests/geometry/pattern_builders.h"
 #include "tests/test_support.h"
 
 namespace sdog {
@@ -36,7 +36,8 @@ const DogModel& model(const Asset& a) {
   static std::map<std::string, DogModel> cache;
   const std::string key = a.path + a.res.str();
   auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, alt_model(read_crease_pattern(a.path), a.res)).first;
+  if (it == cache.end())
+    it = cache.emplace(key, alt_model(read_crease_pattern(a.path), a.res)).first;
   return it->second;
 }
 
@@ -66,19 +67,20 @@ TEST_P(AltCoarse, EachCoarseQuadIsFourFineQuadsOfItsPatch) {
       const int a = m.coarse.F(q, k), b = m.coarse.F(q, (k + 1) % 4);
       EXPECT_EQ(m.coarse.vertex_patch[a], p);
       // The fine midpoint of each side is an I vertex of the patch mapped to that side.
-      const Eigen::Vector2i mid = m.fine.grid[m.map.coarse_to_fine[a]] / 2 +
-                                  m.fine.grid[m.map.coarse_to_fine[b]] / 2;
+      const Eigen::Vector2i mid =
+          m.fine.grid[m.map.coarse_to_fine[a]] / 2 + m.fine.grid[m.map.coarse_to_fine[b]] / 2;
       const int f = m.fine.vertex_at(p, mid.x(), mid.y());
       ASSERT_GE(f, 0) << "coarse quad " << q;
       const auto edge = m.map.fine_to_coarse_edge[f];
       EXPECT_TRUE((edge[0] == a && edge[1] == b) || (edge[0] == b && edge[1] == a));
     }
-    const Eigen::Vector2i centre = m.fine.grid[m.map.coarse_to_fine[m.coarse.F(q, 0)]] +
-                                   Eigen::Vector2i(1, 1);
+    const Eigen::Vector2i centre =
+        m.fine.grid[m.map.coarse_to_fine[m.coarse.F(q, 0)]] + Eigen::Vector2i(1, 1);
     const int x = m.fine.vertex_at(p, centre.x(), centre.y());
     ASSERT_GE(x, 0);
     EXPECT_EQ(m.map.fine_to_coarse_quad[x], q);
-    const Eigen::Vector3d a = m.coarse.V.row(m.coarse.F(q, 0)), b = m.coarse.V.row(m.coarse.F(q, 1)),
+    const Eigen::Vector3d a = m.coarse.V.row(m.coarse.F(q, 0)),
+                          b = m.coarse.V.row(m.coarse.F(q, 1)),
                           c = m.coarse.V.row(m.coarse.F(q, 2));
     EXPECT_GT((b - a).cross(c - a).z(), 0.0) << "counter-clockwise";
   }
@@ -134,9 +136,9 @@ TEST_P(AltCoarse, KeptCreasePointsLieOnCoarseEdgesAndAreStitchedAsInTheFineMesh)
       const int i = l == e.v1 ? e.v2 : e.v1;
       const bool on_vertex = e.v1 == e.v2 && m.map.fine_to_coarse[e.v1] >= 0;
       const auto edge = m.map.fine_to_coarse_edge[i];
-      const bool on_edge = m.map.fine_type[l] == VertexType::kLink &&
-                           m.map.fine_to_coarse[l] >= 0 && edge[0] >= 0 &&
-                           (edge[0] == m.map.fine_to_coarse[l] || edge[1] == m.map.fine_to_coarse[l]);
+      const bool on_edge =
+          m.map.fine_type[l] == VertexType::kLink && m.map.fine_to_coarse[l] >= 0 && edge[0] >= 0 &&
+          (edge[0] == m.map.fine_to_coarse[l] || edge[1] == m.map.fine_to_coarse[l]);
       all = all && (on_vertex || (e.v1 != e.v2 && on_edge));
     }
     kept += all;
@@ -190,7 +192,8 @@ INSTANTIATE_TEST_SUITE_P(AllAssets, AltCoarse, ::testing::ValuesIn(assets()),
 // coarse edge there, the other does not reach across the crease, so no crease point is kept and
 // the coarse patches are not stitched (the thesis's disconnect, in its simplest form).
 TEST(AltCoarseByHand, AStraightCreaseAcrossTheRowsKeepsNoPoint) {
-  const DogModel m = alt_model(test::rectangle_pattern(100, 100, {{{52.5, 0}, {52.5, 100}}}), {21, 21});
+  const DogModel m =
+      alt_model(test::rectangle_pattern(100, 100, {{{52.5, 0}, {52.5, 100}}}), {21, 21});
   ASSERT_EQ(m.fine.stitching.curves.size(), 1u);
   EXPECT_GT(m.fine.stitching.curves[0].points.size(), 10u);
   EXPECT_TRUE(m.coarse.stitching.points.empty());

@@ -13,9 +13,7 @@ namespace sdog::test {
 struct MeshAsset {
   std::string path;
   Resolution res;
-  friend void PrintTo(const MeshAsset& a, std::ostream* os) {
-    *os << a.path << " " << a.res.str();
-  }
+  friend void PrintTo(const MeshAsset& a, std::ostream* os) { *os << a.path << " " << a.res.str(); }
 };
 
 /// A test name for an asset: the file's stem and the resolution, alphanumerics and underscores.

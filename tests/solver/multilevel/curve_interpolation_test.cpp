@@ -84,5 +84,18 @@ TEST(CurveInterpolation, IsExactAtCoarsePointsAndFollowsARigidMotion) {
     }
 }
 
+// The alternative coarse DOG keeps no end of one_curve's crease: its fine end points have no coarse
+// points on both sides, and the stencils say so instead of extrapolating from a made-up segment.
+TEST(CurveInterpolation, RefusesPointsThatTheAlternativeCoarseDogCannotInterpolate) {
+  MeshOptions options;
+  options.coarse = CoarseKind::kAlt;
+  const DogModel alt =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {41, 27}, options);
+  EXPECT_THROW(coarse_curve_stencils(alt), std::logic_error);
+  const DogModel standard =
+      build_dog_model(read_crease_pattern(test::dataset("one_curve.svg")), {41, 27});
+  EXPECT_NO_THROW(coarse_curve_stencils(standard));
+}
+
 }  // namespace
 }  // namespace sdog
