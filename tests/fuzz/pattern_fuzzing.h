@@ -17,8 +17,14 @@ int exercise_pattern(Read read) {
     const CreasePattern pattern = read();
     const CleanPattern clean = clean_pattern(pattern);
     count_pattern_patches(clean);
-    // Meshing at a small resolution exercises grid snapping and the exact patch layout.
-    if (pattern.creases.size() <= 8) build_dog_model(pattern, {9, 9});
+    // Meshing at a small resolution exercises grid snapping and the exact patch layout, then the
+    // alternative coarse DOG and its map.
+    if (pattern.creases.size() <= 8) {
+      build_dog_model(pattern, {9, 9});
+      MeshOptions alt;
+      alt.coarse = CoarseKind::kAlt;
+      build_dog_model(pattern, {9, 9}, alt);
+    }
   } catch (const InputError&) {
   } catch (const UsageError&) {
   }
