@@ -184,8 +184,8 @@ void merge_close_points(const PatchLayout& layout, const DogMesh& mesh, int coar
 }
 
 // The crease stitching: the copies of each crease point in the patches that own its grid edge,
-// the chained pairs, the patch adjacency and the junctions. Throws std::logic_error for a point
-// with fewer than two copies.
+// the chained pairs (none for a point on slits only), the patch adjacency and the junctions. Throws
+// std::logic_error for a point with fewer than two copies.
 CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh, int coarse_step) {
   std::vector<PatchLayout::CreasePoint> points;
   std::vector<PatchLayout::Curve> curves;
@@ -197,6 +197,11 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh, 
       index[k] = static_cast<int>(used.size());
       used.push_back(static_cast<int>(k));
     }
+  // Points that lie on slits only are not stitched: a slit's two sides are free.
+  std::vector<char> stitched(points.size(), 0);
+  for (const auto& c : curves)
+    if (!c.slit)
+      for (int p : c.points) stitched[p] = 1;
   CreaseStitching st;
   std::vector<std::set<int>> adjacency(layout.patch_count);
   for (size_t k = 0; k < used.size(); ++k) {
@@ -213,7 +218,7 @@ CreaseStitching build_stitching(const PatchLayout& layout, const DogMesh& mesh, 
     if (sp.copies.size() < 2)
       throw std::logic_error("crease point " + format_point(lp.position) + " has " +
                              std::to_string(sp.copies.size()) + " copies");
-    for (size_t c = 0; c + 1 < sp.copies.size(); ++c)
+    for (size_t c = 0; stitched[used[k]] && c + 1 < sp.copies.size(); ++c)
       st.pairs.push_back({static_cast<int>(k), static_cast<int>(c), static_cast<int>(c + 1)});
     for (int a : sp.patches)
       for (int b : sp.patches)

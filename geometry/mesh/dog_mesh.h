@@ -33,7 +33,7 @@ struct CreaseStitching {
 
   /// Stitching pair: copies `a` and `b` of point `point` must coincide. With m copies there are
   /// m - 1 chained pairs (0,1), (1,2), ...; a point that lies on slits only has none (the slit's
-  /// two sides are free; dog_model.h).
+  /// two sides are free).
   struct Pair {
     int point, a, b;
   };

@@ -29,18 +29,6 @@ PatchLayout checked_layout(const DogModel& m, const Resolution& res, const AxisL
   return layout;
 }
 
-// Crease points that lie on slits only are not stitched: the slit's two sides are free.
-void free_slits(CreaseStitching& st) {
-  std::vector<char> stitched(st.points.size(), 0);
-  for (const auto& curve : st.curves)
-    if (curve.kind != CurveKind::kSlit)
-      for (int p : curve.points) stitched[p] = 1;
-  st.pairs.erase(
-      std::remove_if(st.pairs.begin(), st.pairs.end(),
-                     [&](const CreaseStitching::Pair& pair) { return !stitched[pair.point]; }),
-      st.pairs.end());
-}
-
 // The stitching curves are the cleaned creases in the same order.
 void copy_folds(const CleanPattern& clean, DogMesh& mesh) {
   for (size_t k = 0; k < mesh.stitching.curves.size(); ++k) {
@@ -50,7 +38,6 @@ void copy_folds(const CleanPattern& clean, DogMesh& mesh) {
     curve.id = clean.creases[k].id;
     curve.kind = clean.creases[k].kind;
   }
-  free_slits(mesh.stitching);
   mesh.fold_tips.clear();
   for (const FoldTip& tip : fold_tips(clean)) mesh.fold_tips.push_back(mesh.to_mesh(tip.point));
 }

@@ -486,6 +486,7 @@ void add_crease_points(PatchLayout& layout, const Arrangement& arr, const Grid& 
   for (size_t k = 0; k < creases.size(); ++k) {
     PatchLayout::Curve curve;
     curve.closed = pattern.creases[k].closed;
+    curve.slit = pattern.creases[k].kind == CurveKind::kSlit;
     for (const auto& p : creases[k]) {
       auto [it, added] = point_index.emplace(p, static_cast<int>(unique_points.size()));
       if (added) unique_points.push_back(p);

@@ -47,6 +47,7 @@ struct PatchLayout {
   struct Curve {
     std::vector<int> points;  ///< indices into `points`, in order along the crease
     bool closed = false;      ///< the last point connects to the first (not repeated)
+    bool slit = false;        ///< a slit: its two sides are free (CurveKind::kSlit)
   };
   std::vector<Curve> curves;  ///< one per cleaned crease, same order
 
