@@ -1,6 +1,7 @@
 #include "geometry/input/svg_pattern.h"
 
 #include <algorithm>
+#include <set>
 #include <sstream>
 
 #include "base/errors.h"
@@ -46,19 +47,26 @@ InputError not_closed_error(const OpenCurve& c) {
                     "; close the path (Z) or draw the boundary as one closed shape");
 }
 
+// For each end of the open pieces (end 2k: piece k's first point, 2k + 1: its last), the other
+// pieces' ends within tol of it.
+std::vector<std::vector<size_t>> meeting_ends(const std::vector<OpenCurve>& open, double tol) {
+  auto end = [&](size_t i) -> const Eigen::Vector2d& {
+    return i % 2 == 0 ? open[i / 2].points.front() : open[i / 2].points.back();
+  };
+  std::vector<std::vector<size_t>> meets(2 * open.size());
+  for (size_t i = 0; i < meets.size(); ++i)
+    for (size_t j = i + 1; j < meets.size(); ++j)
+      if (i / 2 != j / 2 && (end(i) - end(j)).norm() <= tol)
+        meets[i].push_back(j), meets[j].push_back(i);
+  return meets;
+}
+
 // Takes the slits out of the open boundary and cut curves: pieces with an end that no other
 // piece's end meets (within tol), repeatedly, so that what remains can close into loops. A slit
 // from the boundary inward, an interior slit and a cut drawn in pieces to the slit's tip all go.
 std::vector<OpenCurve> split_off_slits(std::vector<OpenCurve>& open, double tol) {
   const size_t n = open.size();
-  auto end = [&](size_t i) -> const Eigen::Vector2d& {
-    return i % 2 == 0 ? open[i / 2].points.front() : open[i / 2].points.back();
-  };
-  std::vector<std::vector<size_t>> meets(2 * n);  // other pieces' ends within tol of each end
-  for (size_t i = 0; i < 2 * n; ++i)
-    for (size_t j = i + 1; j < 2 * n; ++j)
-      if (i / 2 != j / 2 && (end(i) - end(j)).norm() <= tol)
-        meets[i].push_back(j), meets[j].push_back(i);
+  const std::vector<std::vector<size_t>> meets = meeting_ends(open, tol);
   std::vector<char> slit(n, 0);
   for (bool changed = true; changed;) {
     changed = false;
@@ -79,17 +87,19 @@ std::vector<OpenCurve> split_off_slits(std::vector<OpenCurve>& open, double tol)
 // Refuses a point where more than two open boundary or cut pieces end (within tol): a network of
 // lines, which has no single reading as closed loops. Names the point where most of them meet.
 void check_no_branch_points(const std::vector<OpenCurve>& open, double tol) {
+  const std::vector<std::vector<size_t>> meets = meeting_ends(open, tol);
   int most = 2;
   const OpenCurve* where = nullptr;
   Eigen::Vector2d at = Eigen::Vector2d::Zero();
-  for (const OpenCurve& piece : open)
-    for (const Eigen::Vector2d& p : {piece.points.front(), piece.points.back()}) {
-      int pieces = 0;
-      for (const OpenCurve& other : open)
-        pieces +=
-            (other.points.front() - p).norm() <= tol || (other.points.back() - p).norm() <= tol;
-      if (pieces > most) most = pieces, where = &piece, at = p;
+  for (size_t i = 0; i < meets.size(); ++i) {
+    std::set<size_t> pieces{i / 2};
+    for (size_t j : meets[i]) pieces.insert(j / 2);
+    if (static_cast<int>(pieces.size()) > most) {
+      most = static_cast<int>(pieces.size());
+      where = &open[i / 2];
+      at = i % 2 == 0 ? where->points.front() : where->points.back();
     }
+  }
   if (where)
     throw InputError(where->origin + ": " + std::to_string(most) +
                      " sheet boundary (black) or cut lines meet at " + format_point(at) +
