@@ -9,18 +9,6 @@
 namespace sdog {
 namespace {
 
-using Key = std::array<int, 3>;  // patch, grid i, grid j
-
-// The fine quads by patch and lower-left grid position.
-std::set<Key> fine_quads(const DogMesh& fine) {
-  std::set<Key> quads;
-  for (int q = 0; q < fine.quad_count(); ++q) {
-    const int v = fine.F(q, 0);
-    quads.insert({fine.vertex_patch[v], fine.grid[v].x(), fine.grid[v].y()});
-  }
-  return quads;
-}
-
 // The quad edges of a mesh, (smaller, larger) vertex.
 std::set<std::pair<int, int>> quad_edges(const DogMesh& mesh) {
   std::set<std::pair<int, int>> edges;
@@ -33,7 +21,7 @@ std::set<std::pair<int, int>> quad_edges(const DogMesh& mesh) {
 }
 
 // Does patch p have the four fine quads of the coarse cell with lower-left fine vertex (i, j)?
-bool has_coarse_cell(const std::set<Key>& quads, int p, int i, int j) {
+bool has_coarse_cell(const std::map<QuadCorner, int>& quads, int p, int i, int j) {
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b)
       if (!quads.count({p, i + a, j + b})) return false;
@@ -42,8 +30,8 @@ bool has_coarse_cell(const std::set<Key>& quads, int p, int i, int j) {
 
 // The coarse vertices and quads: per patch, the fine link vertices that are corners of a coarse
 // cell the patch has all of, in fine order (so row by row, as vertex_at expects).
-void add_vertices_and_quads(const DogMesh& fine, DogMesh& coarse) {
-  const std::set<Key> quads = fine_quads(fine);
+void add_vertices_and_quads(const DogMesh& fine, const std::map<QuadCorner, int>& quads,
+                            DogMesh& coarse) {
   std::vector<int> kept;
   std::vector<Eigen::Vector4i> F;
   coarse.patch_begin.assign(1, 0);
@@ -83,12 +71,8 @@ void add_vertices_and_quads(const DogMesh& fine, DogMesh& coarse) {
 
 // The part of each coarse quad's cell in its patch, from the pieces of its four fine cells (a fine
 // cell without pieces lies wholly in the patch): listed where some fine cell is cut.
-void add_quad_pieces(const DogMesh& fine, DogMesh& coarse) {
-  std::map<Key, int> fine_quad;
-  for (int q = 0; q < fine.quad_count(); ++q) {
-    const int v = fine.F(q, 0);
-    fine_quad[{fine.vertex_patch[v], fine.grid[v].x(), fine.grid[v].y()}] = q;
-  }
+void add_quad_pieces(const DogMesh& fine, const std::map<QuadCorner, int>& fine_quad,
+                     DogMesh& coarse) {
   std::map<int, std::vector<const DogMesh::QuadPiece*>> pieces;
   for (const auto& piece : fine.quad_pieces) pieces[piece.quad].push_back(&piece);
   for (int q = 0; q < coarse.quad_count(); ++q) {
@@ -195,8 +179,9 @@ DogMesh build_alt_coarse_mesh(const DogMesh& fine) {
   for (int i = 0; i < fine.nx(); i += 2) coarse.xs.push_back(fine.xs[i]);
   for (int j = 0; j < fine.ny(); j += 2) coarse.ys.push_back(fine.ys[j]);
   coarse.fold_tips = fine.fold_tips;
-  add_vertices_and_quads(fine, coarse);
-  add_quad_pieces(fine, coarse);
+  const std::map<QuadCorner, int> fine_quads = quads_by_corner(fine);
+  add_vertices_and_quads(fine, fine_quads, coarse);
+  add_quad_pieces(fine, fine_quads, coarse);
   add_stitching(fine, coarse);
   return coarse;
 }
@@ -204,11 +189,7 @@ DogMesh build_alt_coarse_mesh(const DogMesh& fine) {
 FineCoarseMap build_alt_fine_coarse_map(const DogMesh& fine, const DogMesh& coarse) {
   const int nf = fine.vertex_count();
   FineCoarseMap map = unmapped(nf, coarse.vertex_count(), VertexType::kLink);
-  std::map<Key, int> coarse_quad;  // by patch and lower-left coarse grid position
-  for (int q = 0; q < coarse.quad_count(); ++q) {
-    const int v = coarse.F(q, 0);
-    coarse_quad[{coarse.vertex_patch[v], coarse.grid[v].x(), coarse.grid[v].y()}] = q;
-  }
+  const std::map<QuadCorner, int> coarse_quad = quads_by_corner(coarse);
   const std::set<std::pair<int, int>> edges = quad_edges(coarse);
   for (int f = 0; f < nf; ++f) {
     const int p = fine.vertex_patch[f], i = fine.grid[f].x(), j = fine.grid[f].y();

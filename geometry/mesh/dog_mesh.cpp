@@ -21,6 +21,15 @@ int DogMesh::vertex_at(int patch, int i, int j) const {
   return (it != end && *it == key) ? static_cast<int>(it - grid.begin()) : -1;
 }
 
+std::map<QuadCorner, int> quads_by_corner(const DogMesh& mesh) {
+  std::map<QuadCorner, int> quads;
+  for (int q = 0; q < mesh.quad_count(); ++q) {
+    const int v = mesh.F(q, 0);
+    quads[{mesh.vertex_patch[v], mesh.grid[v].x(), mesh.grid[v].y()}] = q;
+  }
+  return quads;
+}
+
 namespace {
 
 bool owns_cell(const PatchLayout& layout, int patch, int i, int j) {

@@ -8,6 +8,7 @@
 // fine twin have identical coordinates.
 #include <Eigen/Core>
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -100,6 +101,10 @@ struct DogMesh {
     return e.t * X.row(e.v1).transpose() + (1 - e.t) * X.row(e.v2).transpose();
   }
 };
+
+/// The quads of a mesh by patch and the grid position of their lower-left vertex F(q, 0).
+using QuadCorner = std::array<int, 3>;  // patch, grid i, grid j
+std::map<QuadCorner, int> quads_by_corner(const DogMesh& mesh);
 
 /// Crease points closer than this (mesh units) to a grid vertex are taken onto it in pairs (below).
 constexpr double kVertexCreaseDistance = 0.02;

@@ -98,12 +98,7 @@ std::logic_error uncovered(const DogMesh& fine, int f) {
 // Types of the fine vertices by the parity of their grid position, with their coarse vertex,
 // edge or quad; coarse vertices with a fine twin become links.
 void map_vertices(const DogMesh& fine, const DogMesh& coarse, FineCoarseMap& map) {
-  // Coarse quads by (patch, lower-left grid position).
-  std::map<std::array<int, 3>, int> coarse_quad;
-  for (int q = 0; q < coarse.quad_count(); ++q) {
-    const int v = coarse.F(q, 0);
-    coarse_quad[{coarse.vertex_patch[v], coarse.grid[v].x(), coarse.grid[v].y()}] = q;
-  }
+  const std::map<QuadCorner, int> coarse_quad = quads_by_corner(coarse);
   for (int f = 0; f < fine.vertex_count(); ++f) {
     const int p = fine.vertex_patch[f];
     const int i = fine.grid[f].x(), j = fine.grid[f].y();

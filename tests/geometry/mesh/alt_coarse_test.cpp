@@ -33,12 +33,7 @@ std::vector<Asset> assets() {
 }
 
 const DogModel& model(const Asset& a) {
-  static std::map<std::string, DogModel> cache;
-  const std::string key = a.path + a.res.str();
-  auto it = cache.find(key);
-  if (it == cache.end())
-    it = cache.emplace(key, alt_model(read_crease_pattern(a.path), a.res)).first;
-  return it->second;
+  return test::cached_model(a, CoarseKind::kAlt);
 }
 
 class AltCoarse : public ::testing::TestWithParam<Asset> {};

@@ -27,14 +27,8 @@ std::vector<Asset> assets() {
   return out;
 }
 
-// Models are built once per asset and shared by the tests.
 const DogModel& model(const Asset& a) {
-  static std::map<std::string, DogModel> cache;
-  const std::string key = a.path + a.res.str();
-  auto it = cache.find(key);
-  if (it == cache.end())
-    it = cache.emplace(key, build_dog_model(read_crease_pattern(a.path), a.res)).first;
-  return it->second;
+  return test::cached_model(a);
 }
 
 class MapInvariants : public ::testing::TestWithParam<Asset> {

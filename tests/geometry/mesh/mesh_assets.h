@@ -1,12 +1,15 @@
 #pragma once
 // A pattern file at one resolution: the parameter of the tests that check meshes on every dataset
-// and reference pattern.
+// and reference pattern, and its model built once.
 #include <cctype>
 #include <filesystem>
 #include <ostream>
 #include <string>
 
-#include "geometry/mesh/grid.h"
+#include <map>
+
+#include "geometry/input/pattern_file.h"
+#include "geometry/mesh/dog_model.h"
 
 namespace sdog::test {
 
@@ -22,6 +25,19 @@ inline std::string asset_name(const MeshAsset& a) {
   for (auto& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return name;
+}
+
+/// The model of an asset, built once per asset and coarse kind and shared by the tests.
+inline const DogModel& cached_model(const MeshAsset& a, CoarseKind coarse = CoarseKind::kStandard) {
+  static std::map<std::string, DogModel> cache;
+  const std::string key = a.path + a.res.str() + enum_name(coarse);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    MeshOptions options;
+    options.coarse = coarse;
+    it = cache.emplace(key, build_dog_model(read_crease_pattern(a.path), a.res, options)).first;
+  }
+  return it->second;
 }
 
 }  // namespace sdog::test
